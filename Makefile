@@ -1,0 +1,48 @@
+# The two commands of the README, and what CI runs. Each installs what it needs first
+# (scripts/setup.sh is idempotent), configures once and rebuilds only what changed.
+#
+#   make run     build, then render the built-in default scene to out/default.png
+#   make test    build with warnings as errors and run every test
+#   make sanitize  Debug build (synchronous GL error callback) under ASan + UBSan, all tests
+#   make ci      both of the above: what .ci/run does
+
+BUILD_DIR ?= build
+SANITIZE_DIR ?= build-sanitize
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all setup build run test sanitize ci clean
+
+all: build
+
+setup:
+	@./scripts/setup.sh
+
+$(BUILD_DIR)/build.ninja: | setup
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMANYLIGHTS_WERROR=ON $(CMAKE_FLAGS)
+
+build: setup $(BUILD_DIR)/build.ninja
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+run: build
+	@mkdir -p out
+	$(BUILD_DIR)/manylights render -o out/default.png --stats out/default-stats.json
+	@echo "wrote out/default.png and out/default-stats.json"
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+$(SANITIZE_DIR)/build.ninja: | setup
+	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DMANYLIGHTS_WERROR=ON -DMANYLIGHTS_SANITIZE=ON $(CMAKE_FLAGS)
+
+sanitize: setup $(SANITIZE_DIR)/build.ninja
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+		UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+		ctest --output-on-failure -j $(JOBS)
+
+ci: test sanitize
+
+clean:
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR)

@@ -1,0 +1,10 @@
+// The manylights command line (SPEC.md §3). main() only forwards here, so tests can drive
+// the exact code path users run.
+#pragma once
+
+namespace manylights {
+
+// Exit status: 0 success, 2 bad command line, 1 anything else (one line on stderr).
+int runCli(int argc, const char* const* argv);
+
+}  // namespace manylights

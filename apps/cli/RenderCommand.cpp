@@ -1,0 +1,133 @@
+#include "apps/cli/RenderCommand.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "platform/HeadlessContext.h"
+#include "render/Renderer.h"
+#include "scene/DefaultScene.h"
+#include "scene/Error.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+
+namespace {
+
+// Frames rendered before measuring when timings are asked for: the first frame pays for
+// shader compilation and first-use allocations in the driver.
+constexpr int kWarmupFrames = 1;
+
+struct Statistics {
+    double median;
+    double min;
+    double max;
+};
+
+Statistics summarize(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {median, values.front(), values.back()};
+}
+
+nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
+                              const std::vector<FrameSample>& frames, const std::string& device)
+{
+    nlohmann::json stats;
+    stats["technique"] = options.technique;
+    stats["view"] = std::string(viewModeName(options.view));
+    stats["scene"] = scene.source;
+    stats["device"] = device;
+    stats["width"] = options.width;
+    stats["height"] = options.height;
+    stats["lights"] = lightCount;
+    stats["frames"] = frames.size();
+    stats["warmup_frames"] = kWarmupFrames;
+    std::vector<double> frameMs;
+    for (const FrameSample& frame : frames)
+        frameMs.push_back(frame.gpuMs);
+    const Statistics frameStats = summarize(frameMs);
+    stats["frame_ms"] = {{"median", frameStats.median}, {"min", frameStats.min}, {"max", frameStats.max}};
+    nlohmann::json passes = nlohmann::json::array();
+    // Every frame runs the same passes in the same order.
+    for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
+        std::vector<double> passMs;
+        for (const FrameSample& frame : frames)
+            passMs.push_back(frame.passes[p].gpuMs);
+        const PassSample& last = frames.back().passes[p];
+        const Statistics passStats = summarize(passMs);
+        nlohmann::json pass = {{"name", last.name},
+                               {"gpu_ms", passStats.median},
+                               {"gpu_ms_min", passStats.min},
+                               {"gpu_ms_max", passStats.max}};
+        pass["fragment_invocations"] =
+            last.fragmentInvocations ? nlohmann::json(*last.fragmentInvocations) : nlohmann::json(nullptr);
+        passes.push_back(pass);
+    }
+    stats["passes"] = passes;
+    return stats;
+}
+
+void writeTextAtomically(const std::string& path, const std::string& text)
+{
+    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        if (!out.flush()) {
+            std::remove(temporary.c_str());
+            throw Error(path + ": cannot write statistics");
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw Error(path + ": cannot write statistics");
+    }
+}
+
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+void runRender(const RenderOptions& options)
+{
+    const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    if (options.lights && scene.lightSets.empty())
+        throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
+    const std::vector<Light> lights = expandLights(scene, options.lights);
+
+    HeadlessContext context({.debug = defaultDebugContext()});
+    Renderer renderer(scene, lights, options.width, options.height);
+    std::unique_ptr<Technique> technique = makeTechnique(options.technique);
+    ML_ASSERT(technique != nullptr);  // the command line only accepts known names
+
+    const bool measuring = !options.statsPath.empty();
+    for (int i = 0; measuring && i < kWarmupFrames; ++i)
+        renderer.renderFrame(*technique, options.view);
+    std::vector<FrameSample> frames;
+    for (int i = 0; i < options.frames; ++i)
+        frames.push_back(renderer.renderFrame(*technique, options.view));
+
+    Image image = renderer.readColour();
+    if (endsWith(options.output, ".pfm")) {
+        writePfm(image, options.output);
+    } else {
+        if (options.view != ViewMode::Final)
+            image = displayableView(image, options.view, renderer.readCoverage());
+        writePng(image, options.output);
+    }
+    if (measuring)
+        writeTextAtomically(options.statsPath,
+                            statisticsJson(options, scene, lights.size(), frames, context.description()).dump(2) + "\n");
+}
+
+}  // namespace manylights

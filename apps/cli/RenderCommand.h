@@ -1,0 +1,26 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/Views.h"
+
+namespace manylights {
+
+struct RenderOptions {
+    std::string scenePath;  // empty: the built-in default scene
+    std::string output;
+    int width = 1280;
+    int height = 720;
+    std::string technique = "deferred";
+    ViewMode view = ViewMode::Final;
+    double time = 0.0;
+    std::optional<int> lights;
+    int frames = 1;
+    std::string statsPath;
+};
+
+// Renders and writes the image (and the statistics); throws manylights::Error on failure.
+void runRender(const RenderOptions& options);
+
+}  // namespace manylights

@@ -1,0 +1,3 @@
+#include "apps/cli/Cli.h"
+
+int main(int argc, char** argv) { return manylights::runCli(argc, argv); }

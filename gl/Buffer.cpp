@@ -1,0 +1,34 @@
+#include "gl/Buffer.h"
+
+#include "scene/Error.h"
+
+namespace manylights::gl {
+
+namespace {
+GLuint createBuffer()
+{
+    GLuint name = 0;
+    glCreateBuffers(1, &name);
+    return name;
+}
+}  // namespace
+
+Buffer::Buffer(std::string_view label, std::size_t bytes, const void* data, GLbitfield flags)
+    : GlObject(createBuffer()), size_(bytes)
+{
+    setLabel(GL_BUFFER, id(), label);
+    // Zero-sized storage is an error in GL; an empty buffer still gets one byte so that it
+    // can be bound (a scene without local lights binds an empty light list).
+    glNamedBufferStorage(id(), static_cast<GLsizeiptr>(bytes > 0 ? bytes : 1), bytes > 0 ? data : nullptr, flags);
+}
+
+void Buffer::update(std::size_t offset, std::size_t bytes, const void* data)
+{
+    ML_ASSERT(offset + bytes <= size_);
+    if (bytes > 0)
+        glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+
+}  // namespace manylights::gl

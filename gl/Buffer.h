@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+#include "gl/GlObject.h"
+
+namespace manylights::gl {
+
+namespace detail {
+inline void deleteBuffer(GLuint name) { glDeleteBuffers(1, &name); }
+}  // namespace detail
+
+// An immutable-storage buffer (glNamedBufferStorage), updated with glNamedBufferSubData when
+// created with dynamic storage.
+class Buffer : public GlObject<detail::deleteBuffer> {
+public:
+    Buffer() = default;
+    Buffer(std::string_view label, std::size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+
+    template <typename T>
+    static Buffer fromSpan(std::string_view label, std::span<const T> data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT)
+    {
+        return Buffer(label, data.size_bytes(), data.data(), flags);
+    }
+
+    void update(std::size_t offset, std::size_t bytes, const void* data);
+    void bindBase(GLenum target, GLuint index) const;
+    std::size_t size() const { return size_; }
+
+private:
+    std::size_t size_ = 0;
+};
+
+}  // namespace manylights::gl

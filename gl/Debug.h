@@ -1,0 +1,28 @@
+// Debug labels, debug groups and the KHR_debug error callback.
+#pragma once
+
+#include <string_view>
+
+#include "gl/GlObject.h"
+
+namespace manylights::gl {
+
+// Installs a synchronous debug-output callback that turns every GL error into an
+// immediate abort naming the message (the call stack then points at the offending call).
+// Needs a context created with the debug flag to be reliable.
+void installErrorCallback();
+
+// Aborts naming `where` if glGetError reports an error: a cheap check for the end of a test
+// or a frame when no debug context is present.
+void checkNoError(const char* where);
+
+// Brackets a pass in debuggers and profilers (glPushDebugGroup / glPopDebugGroup).
+class DebugGroup {
+public:
+    explicit DebugGroup(std::string_view name);
+    ~DebugGroup();
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+};
+
+}  // namespace manylights::gl

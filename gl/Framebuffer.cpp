@@ -1,0 +1,45 @@
+#include "gl/Framebuffer.h"
+
+#include "scene/Error.h"
+
+namespace manylights::gl {
+
+namespace {
+GLuint createFramebuffer()
+{
+    GLuint name = 0;
+    glCreateFramebuffers(1, &name);
+    return name;
+}
+}  // namespace
+
+Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour,
+                         const Texture2D* depth)
+    : GlObject(createFramebuffer())
+{
+    setLabel(GL_FRAMEBUFFER, id(), label);
+    std::vector<GLenum> drawBuffers;
+    GLenum attachment = GL_COLOR_ATTACHMENT0;
+    for (const Texture2D* texture : colour) {
+        glNamedFramebufferTexture(id(), attachment, texture->id(), 0);
+        drawBuffers.push_back(attachment++);
+    }
+    glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+    if (depth) {
+        const bool hasStencil = depth->format() == GL_DEPTH24_STENCIL8 || depth->format() == GL_DEPTH32F_STENCIL8;
+        glNamedFramebufferTexture(id(), hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    }
+    ML_ASSERT(glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+}
+
+void Framebuffer::clearColour(int attachment, const float rgba[4]) const
+{
+    glClearNamedFramebufferfv(id(), GL_COLOR, attachment, rgba);
+}
+
+void Framebuffer::clearDepthStencil(float depth, int stencil) const
+{
+    glClearNamedFramebufferfi(id(), GL_DEPTH_STENCIL, 0, depth, stencil);
+}
+
+}  // namespace manylights::gl

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <initializer_list>
+#include <string_view>
+#include <vector>
+
+#include "gl/GlObject.h"
+#include "gl/Texture.h"
+
+namespace manylights::gl {
+
+namespace detail {
+inline void deleteFramebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
+}  // namespace detail
+
+class Framebuffer : public GlObject<detail::deleteFramebuffer> {
+public:
+    Framebuffer() = default;
+    // Colour attachments in order (GL_COLOR_ATTACHMENT0 + i, all enabled as draw buffers) and
+    // an optional depth or depth-stencil texture. Asserts completeness.
+    Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth);
+
+    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
+    void clearColour(int attachment, const float rgba[4]) const;
+    void clearDepthStencil(float depth, int stencil) const;
+};
+
+}  // namespace manylights::gl

@@ -1,0 +1,98 @@
+#include "gl/Program.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/Error.h"
+
+namespace manylights::gl {
+
+namespace {
+
+const char* stageName(GLenum type)
+{
+    switch (type) {
+    case GL_VERTEX_SHADER: return "vertex";
+    case GL_FRAGMENT_SHADER: return "fragment";
+    case GL_COMPUTE_SHADER: return "compute";
+    default: return "shader";
+    }
+}
+
+std::string infoLog(GLuint object, bool isProgram)
+{
+    GLint length = 0;
+    if (isProgram)
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 0), '\0');
+    if (isProgram)
+        glGetProgramInfoLog(object, length, nullptr, log.data());
+    else
+        glGetShaderInfoLog(object, length, nullptr, log.data());
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n'))
+        log.pop_back();
+    return log;
+}
+
+// Deletes the shader objects once the program is linked (or failed).
+struct ShaderList {
+    std::vector<GLuint> shaders;
+    ~ShaderList()
+    {
+        for (GLuint shader : shaders)
+            glDeleteShader(shader);
+    }
+};
+
+}  // namespace
+
+Program::Program(std::string_view label, const std::vector<ShaderStage>& stages, const Defines& defines,
+                 const ShaderFileReader& reader)
+    : GlObject(glCreateProgram())
+{
+    setLabel(GL_PROGRAM, id(), label);
+    ShaderList compiled;
+    for (const ShaderStage& stage : stages) {
+        const ResolvedShader source = resolveShader(stage.file, defines, reader);
+        const GLuint shader = glCreateShader(stage.type);
+        compiled.shaders.push_back(shader);
+        const char* text = source.text.c_str();
+        glShaderSource(shader, 1, &text, nullptr);
+        glCompileShader(shader);
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (ok != GL_TRUE)
+            throw Error(std::string(stageName(stage.type)) + " shader " + stage.file + " failed to compile: " +
+                        mapCompileLog(infoLog(shader, false), source.files));
+        glAttachShader(id(), shader);
+    }
+    glLinkProgram(id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE)
+        throw Error("program " + std::string(label) + " failed to link: " + infoLog(id(), true));
+}
+
+void Program::set(GLint location, const glm::vec2& value) const
+{
+    glProgramUniform2fv(id(), location, 1, glm::value_ptr(value));
+}
+void Program::set(GLint location, const glm::vec3& value) const
+{
+    glProgramUniform3fv(id(), location, 1, glm::value_ptr(value));
+}
+void Program::set(GLint location, const glm::vec4& value) const
+{
+    glProgramUniform4fv(id(), location, 1, glm::value_ptr(value));
+}
+void Program::set(GLint location, const glm::mat3& value) const
+{
+    glProgramUniformMatrix3fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+}
+void Program::set(GLint location, const glm::mat4& value) const
+{
+    glProgramUniformMatrix4fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+}
+
+}  // namespace manylights::gl

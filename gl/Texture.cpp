@@ -1,0 +1,25 @@
+#include "gl/Texture.h"
+
+namespace manylights::gl {
+
+namespace {
+GLuint createTexture2D()
+{
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &name);
+    return name;
+}
+}  // namespace
+
+Texture2D::Texture2D(std::string_view label, GLenum internalFormat, int width, int height)
+    : GlObject(createTexture2D()), width_(width), height_(height), format_(internalFormat)
+{
+    setLabel(GL_TEXTURE, id(), label);
+    glTextureStorage2D(id(), 1, internalFormat, width, height);
+    glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace manylights::gl

@@ -1,0 +1,35 @@
+#include "render/DeferredTechnique.h"
+
+#include "render/GpuScene.h"
+#include "render/PassProfiler.h"
+
+namespace manylights {
+
+void drawCoveredPixels(const gl::Program& program)
+{
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    program.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+}
+
+DeferredTechnique::DeferredTechnique()
+    : lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}})
+{
+}
+
+void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+{
+    targets.gbuffer.fill(scene, profiler);
+    auto pass = profiler.pass("lighting");
+    targets.litFramebuffer.bind();
+    glDisable(GL_BLEND);
+    scene.bind();
+    targets.gbuffer.bindForReading();
+    drawCoveredPixels(lighting_);
+}
+
+}  // namespace manylights

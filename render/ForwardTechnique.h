@@ -1,0 +1,18 @@
+#pragma once
+
+#include "gl/Program.h"
+#include "render/Technique.h"
+
+namespace manylights {
+
+class ForwardTechnique : public Technique {
+public:
+    ForwardTechnique();
+    std::string_view name() const override { return "forward"; }
+    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+
+private:
+    gl::Program program_;
+};
+
+}  // namespace manylights

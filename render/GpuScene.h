@@ -1,0 +1,88 @@
+// The scene on the GPU: one vertex and one index buffer for every mesh, the objects with
+// their transforms and materials, the local lights in one storage buffer, and the per-frame
+// uniform buffer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "gl/VertexArray.h"
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// std430 layout of shaders/lib/lights.glsl: GpuLight.
+struct GpuLight {
+    glm::vec4 positionRadius;
+    glm::vec4 intensityExponent;
+    glm::vec4 attenuation;
+    glm::vec4 spotAxisCosCutoff;
+};
+static_assert(sizeof(GpuLight) == 64);
+
+// Packs a light for the GPU with its culling radius (lightRadius).
+GpuLight packLight(const Light& light, float attenuationThreshold);
+
+// std140 layout of shaders/lib/frame.glsl: Frame.
+struct FrameUniforms {
+    glm::mat4 viewProjection;
+    glm::mat4 view;
+    glm::vec4 eye;
+    glm::vec4 viewAxis;
+    glm::vec4 ambient;
+    glm::vec4 directionalToLight;
+    glm::vec4 directionalIntensity;
+    glm::vec4 background;
+    glm::uvec4 counts;
+};
+
+// The camera matrices for an image of the given aspect ratio (width / height).
+FrameUniforms makeFrameUniforms(const Scene& scene, float aspect, std::uint32_t lightCount);
+
+class GpuScene {
+public:
+    // `lights` are the scene's lights as rendered (explicit and generated, see expandLights).
+    GpuScene(const Scene& scene, const std::vector<Light>& lights);
+
+    // Binds the vertex array, the frame uniforms and the light buffer.
+    void bind() const;
+    // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
+    // shaders/lib/material.glsl.
+    void drawObjects(const gl::Program& program) const;
+    void setAspect(float aspect);
+
+    std::size_t lightCount() const { return lightCount_; }
+    const std::vector<GpuLight>& packedLights() const { return packedLights_; }
+    const FrameUniforms& frameUniforms() const { return frame_; }
+
+private:
+    struct MeshRange {
+        GLint baseVertex;
+        std::size_t firstIndex;
+        GLsizei indexCount;
+    };
+    struct DrawItem {
+        glm::mat4 model;
+        glm::mat3 normalMatrix;
+        std::size_t mesh;
+        std::size_t material;
+    };
+
+    const Scene& scene_;
+    std::vector<MeshRange> meshRanges_;
+    std::vector<DrawItem> draws_;
+    std::vector<GpuLight> packedLights_;
+    std::size_t lightCount_ = 0;
+    FrameUniforms frame_{};
+    gl::Buffer vertices_;
+    gl::Buffer indices_;
+    gl::VertexArray vertexArray_;
+    gl::Buffer lightBuffer_;
+    gl::Buffer frameBuffer_;
+};
+
+}  // namespace manylights

@@ -1,0 +1,33 @@
+#include "render/Technique.h"
+
+#include "render/DeferredTechnique.h"
+#include "render/ForwardTechnique.h"
+
+namespace manylights {
+
+FrameTargets::FrameTargets(int width_, int height_)
+    : width(width_),
+      height(height_),
+      depthStencil("depth stencil", kDepthStencilTarget.format, width_, height_),
+      lit("lit colour", GL_RGBA32F, width_, height_),
+      litFramebuffer("lit", {&lit}, &depthStencil),
+      gbuffer(width_, height_, depthStencil)
+{
+}
+
+const std::vector<std::string>& techniqueNames()
+{
+    static const std::vector<std::string> names = {"forward", "deferred"};
+    return names;
+}
+
+std::unique_ptr<Technique> makeTechnique(std::string_view name)
+{
+    if (name == "forward")
+        return std::make_unique<ForwardTechnique>();
+    if (name == "deferred")
+        return std::make_unique<DeferredTechnique>();
+    return nullptr;
+}
+
+}  // namespace manylights

@@ -1,0 +1,45 @@
+// A lighting technique: how the lit image of a frame is made. Techniques differ only in
+// which (pixel, light) pairs they visit; all of them shade with shaders/lib/lighting.glsl.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+#include "render/GBuffer.h"
+
+namespace manylights {
+
+class GpuScene;
+class PassProfiler;
+
+// The size-dependent resources of a frame; rebuilt on resize, the techniques are not.
+struct FrameTargets {
+    FrameTargets(int width, int height);
+
+    int width;
+    int height;
+    gl::Texture2D depthStencil;
+    gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of SPEC.md §2
+    gl::Framebuffer litFramebuffer;  // lit + depthStencil
+    GBuffer gbuffer;
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    virtual std::string_view name() const = 0;
+    // Renders the frame into targets.lit (already cleared to the background colour) and
+    // leaves the scene's depth in targets.depthStencil.
+    virtual void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) = 0;
+};
+
+// The techniques SPEC.md §3 names, in the order of the docs.
+const std::vector<std::string>& techniqueNames();
+// nullptr when the name is unknown.
+std::unique_ptr<Technique> makeTechnique(std::string_view name);
+
+}  // namespace manylights

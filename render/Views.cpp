@@ -1,0 +1,84 @@
+#include "render/Views.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace manylights {
+
+namespace {
+const std::array<std::pair<ViewMode, std::string_view>, 7> kViews = {{
+    {ViewMode::Final, "final"},
+    {ViewMode::Position, "position"},
+    {ViewMode::Normal, "normal"},
+    {ViewMode::Diffuse, "diffuse"},
+    {ViewMode::Specular, "specular"},
+    {ViewMode::Emissive, "emissive"},
+    {ViewMode::Depth, "depth"},
+}};
+}  // namespace
+
+std::optional<ViewMode> parseViewMode(std::string_view name)
+{
+    for (const auto& [mode, viewName] : kViews)
+        if (viewName == name)
+            return mode;
+    return std::nullopt;
+}
+
+std::string_view viewModeName(ViewMode mode)
+{
+    for (const auto& [candidate, viewName] : kViews)
+        if (candidate == mode)
+            return viewName;
+    return "?";
+}
+
+const std::vector<std::string>& viewModeNames()
+{
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> result;
+        for (const auto& entry : kViews)
+            result.emplace_back(entry.second);
+        return result;
+    }();
+    return names;
+}
+
+Image displayableView(const Image& raw, ViewMode mode, const std::vector<bool>& covered)
+{
+    Image shown = raw;
+    const std::size_t pixels = static_cast<std::size_t>(raw.width) * raw.height;
+    if (mode == ViewMode::Normal) {
+        for (std::size_t i = 0; i < pixels; ++i)
+            if (covered[i])
+                for (int c = 0; c < 3; ++c)
+                    shown.rgb[i * 3 + c] = 0.5f * raw.rgb[i * 3 + c] + 0.5f;
+    } else if (mode == ViewMode::Position || mode == ViewMode::Depth) {
+        // Per channel range over the covered pixels, so the scene fills the grey scale.
+        std::array<float, 3> low;
+        std::array<float, 3> high;
+        low.fill(std::numeric_limits<float>::max());
+        high.fill(std::numeric_limits<float>::lowest());
+        for (std::size_t i = 0; i < pixels; ++i)
+            if (covered[i])
+                for (int c = 0; c < 3; ++c) {
+                    low[c] = std::min(low[c], raw.rgb[i * 3 + c]);
+                    high[c] = std::max(high[c], raw.rgb[i * 3 + c]);
+                }
+        for (std::size_t i = 0; i < pixels; ++i) {
+            if (!covered[i])
+                continue;
+            for (int c = 0; c < 3; ++c) {
+                const float span = high[c] - low[c];
+                const float t = span > 0.0f ? (raw.rgb[i * 3 + c] - low[c]) / span : 0.0f;
+                // Depth: near is bright, and the farthest surface stays visible against the
+                // black background.
+                shown.rgb[i * 3 + c] = mode == ViewMode::Depth ? 1.0f - 0.9f * t : t;
+            }
+        }
+    }
+    return shown;
+}
+
+}  // namespace manylights

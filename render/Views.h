@@ -1,0 +1,27 @@
+// What `--view` shows (SPEC.md §3): the lit image or one G-buffer quantity.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/Image.h"
+
+namespace manylights {
+
+// The values are the shader's viewMode (shaders/gbuffer_view.frag).
+enum class ViewMode { Final = 0, Position = 1, Normal = 2, Diffuse = 3, Specular = 4, Emissive = 5, Depth = 6 };
+
+std::optional<ViewMode> parseViewMode(std::string_view name);
+std::string_view viewModeName(ViewMode mode);
+const std::vector<std::string>& viewModeNames();
+
+// Turns the raw view values into what a PNG can show (docs/cli.md states each rule):
+// final, diffuse, specular, emissive unchanged (the PNG writer clamps); normal as 0.5·N + 0.5;
+// position per axis from the image's own minimum to maximum; depth from 1 at the nearest
+// surface to 0.1 at the farthest. Background pixels (no surface) stay black.
+// `covered` marks pixels that hold a surface.
+Image displayableView(const Image& raw, ViewMode mode, const std::vector<bool>& covered);
+
+}  // namespace manylights

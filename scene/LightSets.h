@@ -1,0 +1,20 @@
+// Expands a scene's light sets into concrete lights, deterministically for a given seed.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// Every light the scene renders: its explicit lights followed by the generated ones.
+// `totalSetLights`, when given (the --lights option), replaces the sum of the sets' counts,
+// spread over the sets in proportion to their counts (largest remainder, so the sum is exact).
+// A set's first k lights are the same whatever its count, so a sweep grows one scene.
+std::vector<Light> expandLights(const Scene& scene, std::optional<int> totalSetLights = std::nullopt);
+
+// The per-set counts that expandLights uses.
+std::vector<int> distributeLightCount(const std::vector<LightSet>& sets, int total);
+
+}  // namespace manylights

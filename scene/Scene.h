@@ -1,0 +1,141 @@
+// Plain scene data: what a scene file (SPEC.md §1) or the built-in default scene describes.
+// No GL here: the render layer uploads this data, tests inspect it directly.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace manylights {
+
+struct Camera {
+    glm::vec3 eye{0.0f, 6.0f, 14.0f};
+    glm::vec3 lookAt{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDegrees = 45.0f;
+    float nearPlane = 0.1f;
+    float farPlane = 200.0f;
+};
+
+struct DirectionalLight {
+    glm::vec3 direction{-1.0f, -2.0f, -1.0f};  // the direction light travels in
+    glm::vec3 intensity{0.0f};
+    bool shadows = false;
+};
+
+enum class LightType : std::uint8_t { Point, Spot };
+
+// Which distance falloff a local light uses (SPEC.md §2).
+enum class Falloff : std::uint8_t {
+    Classic,  // 1 / (c + b·d + a·d²), cut where it drops below the attenuation threshold
+    Range,    // 1/max(d, r/100)² − 1/r², exactly zero at r
+};
+
+struct ClassicAttenuation {
+    float constant = 1.0f;
+    float linear = 0.0f;
+    float quadratic = 0.0f;
+};
+
+struct Light {
+    LightType type = LightType::Point;
+    std::string name;
+    glm::vec3 position{0.0f};
+    glm::vec3 intensity{1.0f};
+    Falloff falloff = Falloff::Range;
+    ClassicAttenuation attenuation;  // used when falloff == Classic
+    float range = 1.0f;              // used when falloff == Range
+    // Spot only.
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};
+    float cutoffDegrees = 45.0f;  // half-angle, 0 < cutoff ≤ 180
+    float exponent = 0.0f;
+};
+
+// A closed interval [lo, hi] from which a light set draws a value uniformly.
+struct Interval {
+    float lo = 0.0f;
+    float hi = 0.0f;
+};
+
+// Lights generated deterministically from a seed (SPEC.md §1 `light_sets`).
+struct LightSet {
+    int count = 0;
+    std::uint32_t seed = 0;
+    LightType type = LightType::Point;
+    glm::vec3 boxMin{0.0f};
+    glm::vec3 boxMax{0.0f};
+    Interval range{1.0f, 1.0f};
+    Interval intensity{1.0f, 1.0f};
+    Interval cutoffDegrees{20.0f, 45.0f};  // spot sets only
+    Interval exponent{0.0f, 8.0f};         // spot sets only
+};
+
+struct Material {
+    std::string name;
+    glm::vec3 diffuse{0.8f};
+    glm::vec3 specular{0.0f};
+    float shininess = 32.0f;
+    glm::vec3 emissive{0.0f};
+    // Texture paths, already resolved relative to the scene file; empty when absent.
+    std::string diffuseMap;
+    std::string specularMap;
+    std::string normalMap;
+};
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+
+struct Bounds {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+    bool empty() const { return min.x > max.x; }
+    void extend(const glm::vec3& p)
+    {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+};
+
+// Indexed triangle list in object space.
+struct Mesh {
+    std::string name;  // the primitive's description or the file it came from
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    Bounds bounds() const;
+};
+
+struct Object {
+    std::string name;
+    std::size_t mesh = 0;      // index into Scene::meshes
+    std::size_t material = 0;  // index into Scene::materials
+    glm::mat4 transform{1.0f};
+};
+
+// Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
+inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
+
+struct Scene {
+    std::string source;  // the scene file, or "<default scene>"
+    Camera camera;
+    glm::vec3 background{0.0f};
+    glm::vec3 ambient{0.0f};
+    std::optional<DirectionalLight> directional;
+    float attenuationThreshold = kDefaultAttenuationThreshold;
+    std::vector<Light> lights;       // explicit lights
+    std::vector<LightSet> lightSets;  // generated lights (see expandLights)
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    std::vector<Object> objects;
+
+    // World-space bounds of every object.
+    Bounds worldBounds() const;
+};
+
+}  // namespace manylights

@@ -1,0 +1,21 @@
+// Reads a scene file (SPEC.md §1) strictly: every unknown key, wrong type, wrong length,
+// non-finite or out-of-range value and missing file is an Error whose message names the file
+// and the line:column (syntax errors) or the JSON path (everything else).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// Loads and validates the scene file at `path`; meshes are loaded relative to it.
+Scene loadSceneFile(const std::filesystem::path& path);
+
+// Parses scene JSON text. `displayName` is used in messages; relative paths inside the
+// scene resolve against `baseDirectory`.
+Scene parseScene(const std::string& jsonText, const std::string& displayName,
+                 const std::filesystem::path& baseDirectory);
+
+}  // namespace manylights

@@ -1,0 +1,13 @@
+// Per-frame constants, one uniform buffer shared by every pass (render/GpuScene.cpp fills it
+// with the same std140 layout).
+layout(std140, binding = 0) uniform Frame {
+    mat4 viewProjection;
+    mat4 view;
+    vec4 eye;                   // xyz: camera position
+    vec4 viewAxis;              // xyz: unit direction the camera looks along
+    vec4 ambient;               // rgb
+    vec4 directionalToLight;    // xyz: unit vector towards the directional light (L)
+    vec4 directionalIntensity;  // rgb; zero when the scene has none
+    vec4 background;            // rgb
+    uvec4 counts;               // x: number of local lights
+} frame;

@@ -1,0 +1,58 @@
+// The one lighting function of SPEC.md §2. Every technique includes this file; they differ
+// only in which (pixel, light) pairs they visit.
+#include "lib/falloff.glsl"
+#include "lib/frame.glsl"
+#include "lib/lights.glsl"
+
+struct Surface {
+    vec3 position;  // world space
+    vec3 normal;    // world space, unit
+    vec3 diffuse;   // kd
+    vec3 specular;  // ks
+    float shininess;
+    vec3 emissive;  // ke
+};
+
+// brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
+vec3 blinnPhong(Surface s, vec3 L, vec3 V)
+{
+    float NdotL = dot(s.normal, L);
+    if (NdotL <= 0.0)
+        return vec3(0.0);
+    vec3 H = normalize(L + V);
+    return s.diffuse * NdotL + s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+}
+
+// The light-independent terms: ke + ambient ⊙ kd + the directional light.
+vec3 shadeGlobal(Surface s, vec3 V)
+{
+    vec3 color = s.emissive + frame.ambient.rgb * s.diffuse;
+    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V);
+    return color;
+}
+
+// intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
+vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
+{
+    vec3 v = s.position - light.positionRadius.xyz;
+    float d = length(v);
+    // At d = 0 the direction to the light is undefined; the point gets nothing from it.
+    if (d >= light.positionRadius.w || d == 0.0)
+        return vec3(0.0);
+    vec3 toSurface = v / d;
+    float A = light.attenuation.w == 0.0
+                  ? classicAttenuation(d, light.positionRadius.w, light.attenuation.x, light.attenuation.y,
+                                       light.attenuation.z)
+                  : rangeAttenuation(d, light.attenuation.x);
+    float S = spotFactor(dot(toSurface, light.spotAxisCosCutoff.xyz), light.spotAxisCosCutoff.w,
+                         light.intensityExponent.w);
+    float AS = A * S;
+    if (AS == 0.0)
+        return vec3(0.0);
+    return light.intensityExponent.rgb * blinnPhong(s, -toSurface, V) * AS;
+}
+
+vec3 viewVector(vec3 position)
+{
+    return normalize(frame.eye.xyz - position);
+}

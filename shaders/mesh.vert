@@ -1,0 +1,24 @@
+#version 450 core
+// Shared by the forward pass and the G-buffer pass, so both see bit-identical positions and
+// normals (a technique may only differ in which lights it visits).
+#include "lib/frame.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+
+layout(location = 0) uniform mat4 model;
+layout(location = 1) uniform mat3 normalMatrix;
+
+layout(location = 0) out vec3 worldPosition;
+layout(location = 1) out vec3 worldNormal;
+layout(location = 2) out vec2 uv;
+
+void main()
+{
+    vec4 world = model * vec4(inPosition, 1.0);
+    worldPosition = world.xyz;
+    worldNormal = normalMatrix * inNormal;
+    uv = inUv;
+    gl_Position = frame.viewProjection * world;
+}

@@ -1,0 +1,223 @@
+// Analytic scenes: the expected colour of each pixel follows from SPEC.md §2 by hand. The
+// tests render the final image and the position view as PFM (unclamped floats) and compare
+// every covered pixel with the formula evaluated at that pixel's world position, written
+// here independently of the renderer's shaders, in double precision.
+//
+// Tolerance: 2e-5 absolute + 1e-4 relative. The renderer works in 32-bit floats: positions
+// of about 10 units carry ~1e-6 absolute error, and pow(), normalize() and the sum of a few
+// terms add a few ulps (~1e-6 relative each). A wrong formula (a missing factor, a wrong
+// exponent, the radius cut in the wrong place) is off by orders of magnitude more.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "TestSupport.h"
+
+namespace manylights {
+namespace {
+
+using test::renderPfm;
+using test::scratchDirectory;
+using test::writeFile;
+
+constexpr double kAbsoluteTolerance = 2e-5;
+constexpr double kRelativeTolerance = 1e-4;
+
+// The expected colour at a world position; nullopt where either answer is right (a pixel
+// within float rounding of a cut-off edge).
+using Expected = std::function<std::optional<glm::dvec3>(const glm::dvec3& position)>;
+
+// Renders the scene's final image and position view, checks every covered pixel against
+// `expected`, and returns how many pixels were checked.
+int checkEveryPixel(const std::string& sceneJson, const Expected& expected, const std::string& size = "65x65")
+{
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", sceneJson);
+    const Image colour = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size});
+    const Image position =
+        renderPfm((dir / "scene.json").string(), dir / "position.pfm", {"--size", size, "--view", "position"});
+    const Image normal =
+        renderPfm((dir / "scene.json").string(), dir / "normal.pfm", {"--size", size, "--view", "normal"});
+    int checked = 0;
+    int failures = 0;
+    for (int y = 0; y < colour.height; ++y)
+        for (int x = 0; x < colour.width; ++x) {
+            const float* n = normal.pixel(x, y);
+            if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f)
+                continue;  // background: no surface
+            const float* p = position.pixel(x, y);
+            const std::optional<glm::dvec3> maybeWant = expected(glm::dvec3(p[0], p[1], p[2]));
+            if (!maybeWant)
+                continue;
+            const glm::dvec3 want = *maybeWant;
+            const float* got = colour.pixel(x, y);
+            ++checked;
+            for (int c = 0; c < 3; ++c) {
+                const double allowed = kAbsoluteTolerance + kRelativeTolerance * std::abs(want[c]);
+                if (std::abs(got[c] - want[c]) > allowed && ++failures <= 5)
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << " at (" << p[0] << ", "
+                                  << p[1] << ", " << p[2] << "): got " << got[c] << ", expected " << want[c];
+            }
+        }
+    EXPECT_EQ(failures, 0);
+    return checked;
+}
+
+// The camera straight above the origin looking down, so the centre of an odd-sized image
+// sees exactly the origin.
+const char* kTopCamera = R"("camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1],
+                                      "fov_y": 60, "near": 0.1, "far": 100})";
+
+TEST(Analytic, PointLightAboveDiffusePlane)
+{
+    // kd = 0.5, light 2 above the origin, A(d) = 1 / (1 + 0.25 d²).
+    // Under the light: d = 2, N·L = 1, A = 1/2, so the colour is 0.5 · 1 · 0.5 = 0.25.
+    // Elsewhere at distance r from the origin: d = sqrt(r² + 4), N·L = 2 / d.
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "lights": [{"type": "point", "pos": [0, 2, 0], "intensity": [1, 1, 1],
+                    "attenuation": {"constant": 1, "linear": 0, "quadratic": 0.25}}],
+        "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [40, 40]}, "material": "grey"}]})";
+    const auto expected = [](const glm::dvec3& p) {
+        const double d = std::sqrt(p.x * p.x + p.z * p.z + 4.0);
+        return glm::dvec3(0.5 * (2.0 / d) / (1.0 + 0.25 * d * d));
+    };
+    EXPECT_EQ(checkEveryPixel(scene, expected), 65 * 65);
+
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", scene);
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "65x65"});
+    const float* centre = image.pixel(32, 32);
+    EXPECT_NEAR(centre[0], 0.25, 1e-6);
+    EXPECT_NEAR(centre[1], 0.25, 1e-6);
+    EXPECT_NEAR(centre[2], 0.25, 1e-6);
+}
+
+TEST(Analytic, DirectionalLightOnTiltedPlane)
+{
+    // The plane turned 30° about X has the normal (0, cos 30°, sin 30°); light falling
+    // straight down gives N·L = cos 30° = 0.8660254 everywhere. With ambient 0.1:
+    // colour = kd · (0.1 + 0.8660254) = (0.7728203, 0.5796152, 0.3864102).
+    const std::string scene = R"({
+        "camera": {"eye": [0, 6, 8], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_y": 40},
+        "ambient": [0.1, 0.1, 0.1],
+        "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
+        "materials": {"m": {"diffuse": [0.8, 0.6, 0.4]}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}, "material": "m",
+                     "transform": {"rotate": [30, 0, 0]}}]})";
+    const auto expected = [](const glm::dvec3&) { return glm::dvec3(0.7728203, 0.5796152, 0.3864102); };
+    EXPECT_GT(checkEveryPixel(scene, expected), 500);
+}
+
+TEST(Analytic, SpotLightConeEdge)
+{
+    // Spot 4 above the plane pointing down, cutoff 30°, exponent 2, constant attenuation
+    // (a = b = 0: unbounded, A = 1). At distance r from the axis: d = sqrt(r² + 16),
+    // cos θ = 4 / d = N·L. Inside the cone (cos θ ≥ cos 30°, r ≤ 4 tan 30° = 2.3094) the
+    // colour is kd · N·L · cos²θ = (4/d)³; outside it is exactly 0.
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "lights": [{"type": "spot", "pos": [0, 4, 0], "direction": [0, -1, 0], "cutoff": 30, "exponent": 2,
+                    "intensity": [1, 1, 1], "attenuation": {"constant": 1, "linear": 0, "quadratic": 0}}],
+        "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": {"diffuse": [1, 1, 1]}}]})";
+    int inside = 0;
+    int outside = 0;
+    const double cosCutoff = std::cos(glm::radians(30.0));
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        const double d = std::sqrt(p.x * p.x + p.z * p.z + 16.0);
+        const double cosTheta = 4.0 / d;
+        if (std::abs(cosTheta - cosCutoff) < 1e-5)
+            return std::nullopt;
+        if (cosTheta < cosCutoff) {
+            ++outside;
+            return glm::dvec3(0.0);
+        }
+        ++inside;
+        return glm::dvec3(cosTheta * cosTheta * cosTheta);
+    };
+    checkEveryPixel(scene, expected);
+    EXPECT_GT(inside, 300);
+    EXPECT_GT(outside, 300);
+}
+
+TEST(Analytic, RangeFalloffWithSpecularHighlight)
+{
+    // Range falloff r = 6: A(d) = 1/max(d, 0.06)² − 1/36 for d < 6, else 0, and a specular
+    // term ks · max(N·H, 0)^16 with H = normalize(L + V), V towards the eye at (0, 10, 0).
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "lights": [{"type": "point", "pos": [1, 1.5, 0.5], "intensity": [0.8, 0.6, 0.4], "range": 6}],
+        "materials": {"m": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": 16}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [20, 20]}, "material": "m"}]})";
+    const glm::dvec3 light(1, 1.5, 0.5);
+    const glm::dvec3 intensity(0.8, 0.6, 0.4);
+    const glm::dvec3 eye(0, 10, 0);
+    const glm::dvec3 n(0, 1, 0);
+    int unlit = 0;
+    const auto expected = [&](const glm::dvec3& p) {
+        const double d = glm::length(p - light);
+        if (d >= 6.0) {
+            ++unlit;
+            return glm::dvec3(0.0);
+        }
+        const double attenuation = 1.0 / (std::max(d, 0.06) * std::max(d, 0.06)) - 1.0 / 36.0;
+        const glm::dvec3 l = (light - p) / d;
+        const glm::dvec3 v = glm::normalize(eye - p);
+        const glm::dvec3 h = glm::normalize(l + v);
+        const double brdf = 0.5 * glm::dot(n, l) + 0.5 * std::pow(std::max(glm::dot(n, h), 0.0), 16.0);
+        return intensity * brdf * attenuation;
+    };
+    checkEveryPixel(scene, expected);
+    EXPECT_GT(unlit, 100);  // the corners lie beyond the range and must be exactly black
+}
+
+TEST(Analytic, ClassicLightIsCutAtItsThresholdRadius)
+{
+    // c = 1, a = 1, Imax = 1, threshold 0.05: A(R) = 0.05 at R = sqrt(19) = 4.3589 (from
+    // 1 + R² = 20). The light is 1 above the plane, so on the plane the cut falls at
+    // r = sqrt(R² − 1) = sqrt(18) = 4.2426: inside, kd · N·L · A with N·L = 1/d; outside, 0.
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "attenuation_threshold": 0.05,
+        "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1],
+                    "attenuation": {"constant": 1, "linear": 0, "quadratic": 1}}],
+        "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": {"diffuse": [1, 1, 1]}}]})";
+    int inside = 0;
+    int outside = 0;
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        const double d = std::sqrt(p.x * p.x + p.z * p.z + 1.0);
+        if (std::abs(d - std::sqrt(19.0)) < 1e-4)
+            return std::nullopt;
+        if (d >= std::sqrt(19.0)) {
+            ++outside;
+            return glm::dvec3(0.0);
+        }
+        ++inside;
+        return glm::dvec3((1.0 / d) / (1.0 + d * d));
+    };
+    checkEveryPixel(scene, expected);
+    EXPECT_GT(inside, 300);
+    EXPECT_GT(outside, 300);
+}
+
+TEST(Analytic, EmissiveAndAmbientWithoutLights)
+{
+    // No lights: colour = ke + ambient ⊙ kd = (0.1, 0.2, 0.3) + (0.5, 0.25, 0.2) ⊙ (0.2, 0.4, 1).
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "ambient": [0.5, 0.25, 0.2], "background": [0.3, 0.6, 0.9],
+        "objects": [{"mesh": {"primitive": "box", "size": [2, 2, 2]},
+                     "material": {"diffuse": [0.2, 0.4, 1], "emissive": [0.1, 0.2, 0.3]}}]})";
+    const auto expected = [](const glm::dvec3&) { return glm::dvec3(0.2, 0.3, 0.5); };
+    EXPECT_GT(checkEveryPixel(scene, expected), 100);
+    // The background is the scene's background colour, exactly.
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", scene);
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "65x65"});
+    EXPECT_FLOAT_EQ(image.pixel(0, 0)[0], 0.3f);
+    EXPECT_FLOAT_EQ(image.pixel(0, 0)[1], 0.6f);
+    EXPECT_FLOAT_EQ(image.pixel(0, 0)[2], 0.9f);
+}
+
+}  // namespace
+}  // namespace manylights

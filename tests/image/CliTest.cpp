@@ -1,0 +1,153 @@
+// The executable as users and scripts meet it: exit status (0, 1 bad input, 2 bad command
+// line), exactly one line on stderr naming the file and position, and never a file written
+// under the requested name when it fails. Run as a child process, so a crash shows as one.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "TestSupport.h"
+
+namespace manylights {
+namespace {
+
+using test::runExecutable;
+using test::scratchDirectory;
+using test::writeFile;
+
+int lineCount(const std::string& text)
+{
+    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+struct FailureCase {
+    std::string name;
+    std::string sceneText;          // written to scene.json; empty: no scene argument
+    std::vector<std::string> args;  // after "render [scene.json] -o out.png"
+    int exitCode;
+    std::vector<std::string> messageParts;  // each must appear in the one stderr line
+};
+
+class CliFailure : public ::testing::TestWithParam<FailureCase> {};
+
+TEST_P(CliFailure, OneLineAndNothingWritten)
+{
+    const FailureCase& c = GetParam();
+    const auto dir = scratchDirectory();
+    std::vector<std::string> args = {"render"};
+    if (!c.sceneText.empty()) {
+        writeFile(dir / "scene.json", c.sceneText);
+        args.push_back((dir / "scene.json").string());
+    }
+    args.insert(args.end(), {"-o", (dir / "out.png").string()});
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const test::ProcessResult result = runExecutable(args);
+    EXPECT_EQ(result.exitCode, c.exitCode) << result.stderrText;
+    if (c.exitCode == 1)
+        EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    for (const std::string& part : c.messageParts)
+        EXPECT_NE(result.stderrText.find(part), std::string::npos) << "missing '" << part << "' in: " << result.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    // No temporary left behind either.
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find("out.png"), std::string::npos) << entry.path();
+}
+
+const char* kPlane = R"("objects": [{"mesh": {"primitive": "plane", "size": [2, 2]}}])";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliFailure,
+    ::testing::Values(
+        FailureCase{"syntax_error", "{\n  \"ambient\": [0, 0, 0],\n  \"background\": [0, 0 0]\n}", {}, 1,
+                    {"scene.json:3:", "syntax error"}},
+        FailureCase{"truncated_file", "{\"ambient\": [0, 0", {}, 1, {"scene.json:1:"}},
+        FailureCase{"unknown_key", std::string("{\"ambiant\": [0, 0, 0], ") + kPlane + "}", {}, 1,
+                    {"scene.json", "ambiant", "did you mean 'ambient'"}},
+        FailureCase{"wrong_type", std::string("{\"ambient\": \"dark\", ") + kPlane + "}", {}, 1,
+                    {"scene.json", "/ambient"}},
+        FailureCase{"negative_range",
+                    std::string("{\"lights\": [{\"type\": \"point\", \"pos\": [0, 1, 0], \"intensity\": [1, 1, 1], "
+                                "\"range\": -2}], ") + kPlane + "}",
+                    {}, 1, {"scene.json", "/lights/0/range"}},
+        FailureCase{"cutoff_out_of_range",
+                    std::string("{\"lights\": [{\"type\": \"spot\", \"pos\": [0, 1, 0], \"direction\": [0, -1, 0], "
+                                "\"cutoff\": 190, \"intensity\": [1, 1, 1], \"range\": 2}], ") + kPlane + "}",
+                    {}, 1, {"scene.json", "/lights/0/cutoff"}},
+        FailureCase{"missing_mesh", "{\"objects\": [{\"mesh\": \"models/none.obj\"}]}", {}, 1,
+                    {"none.obj", "/objects/0/mesh"}},
+        FailureCase{"lights_without_sets", std::string("{") + kPlane + "}", {"--lights", "100"}, 1,
+                    {"scene.json", "light_sets"}},
+        FailureCase{"size_beyond_gl_limit", std::string("{") + kPlane + "}", {"--size", "30000x16"}, 1,
+                    {"30000x16", "supports"}},
+        FailureCase{"unknown_technique", "", {"--technique", "raytraced"}, 2, {"raytraced"}},
+        FailureCase{"unknown_view", "", {"--view", "albedo"}, 2, {"albedo"}},
+        FailureCase{"malformed_size", "", {"--size", "1280by720"}, 2, {"--size"}},
+        FailureCase{"absurd_size", "", {"--size", "100000x100000"}, 2, {"--size"}},
+        FailureCase{"zero_frames", "", {"--frames", "0"}, 2, {"--frames"}},
+        FailureCase{"negative_lights", "", {"--lights", "-5"}, 2, {"--lights"}}),
+    [](const ::testing::TestParamInfo<FailureCase>& info) { return info.param.name; });
+
+TEST(Cli, MissingSceneFileIsOneLineExitOne)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result =
+        runExecutable({"render", (dir / "absent.json").string(), "-o", (dir / "out.png").string()});
+    EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("absent.json"), std::string::npos) << result.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+TEST(Cli, BadOutputExtensionIsUsageError)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.jpg").string()});
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_NE(result.stderrText.find(".png or .pfm"), std::string::npos) << result.stderrText;
+}
+
+TEST(Cli, UnwritableOutputIsExitOneWithNothingLeft)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result =
+        runExecutable({"render", "-o", (dir / "no-such-dir" / "out.png").string(), "--size", "32x18"});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("out.png"), std::string::npos) << result.stderrText;
+}
+
+TEST(Cli, MissingOutputOptionIsUsageError)
+{
+    EXPECT_EQ(runExecutable({"render"}).exitCode, 2);
+    EXPECT_EQ(runExecutable({}).exitCode, 2);
+    EXPECT_EQ(runExecutable({"paint"}).exitCode, 2);
+}
+
+TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result =
+        runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "160x90", "--technique", "deferred",
+                       "--frames", "3", "--stats", (dir / "stats.json").string()});
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+
+    std::ifstream in(dir / "stats.json");
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    EXPECT_EQ(stats["technique"], "deferred");
+    EXPECT_EQ(stats["width"], 160);
+    EXPECT_EQ(stats["height"], 90);
+    EXPECT_EQ(stats["frames"], 3);
+    EXPECT_GE(stats["lights"].get<int>(), 200);
+    const double median = stats["frame_ms"]["median"];
+    EXPECT_GT(median, 0.0);
+    EXPECT_LE(stats["frame_ms"]["min"].get<double>(), median);
+    EXPECT_GE(stats["frame_ms"]["max"].get<double>(), median);
+    ASSERT_EQ(stats["passes"].size(), 2u);
+    EXPECT_EQ(stats["passes"][0]["name"], "geometry");
+    EXPECT_EQ(stats["passes"][1]["name"], "lighting");
+}
+
+}  // namespace
+}  // namespace manylights

@@ -1,0 +1,82 @@
+// Every technique must give forward's image (SPEC.md §2). The final colour is compared as
+// unclamped floats, pixel for pixel, with no pixel exempt.
+//
+// Tolerance: |Δ| ≤ 1e-3 · |forward| + 2e-5 per channel. The seed G-buffer stores kd, ks and
+// ke as 16-bit floats (11 significant bits: relative rounding error ≤ 2^-11 ≈ 4.9e-4), and
+// every term of the colour is linear in one of them, so the deferred colour may differ from
+// forward's by at most ~4.9e-4 of its value; 1e-3 leaves room for float arithmetic in a
+// different order. Positions and normals are 32-bit floats and come from the same vertex
+// shader, so visibility and geometry agree exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "TestSupport.h"
+#include "render/Technique.h"
+
+namespace manylights {
+namespace {
+
+using test::renderPfm;
+using test::scratchDirectory;
+using test::writeFile;
+
+void expectSameImage(const Image& reference, const Image& candidate, const std::string& what)
+{
+    ASSERT_EQ(reference.width, candidate.width);
+    ASSERT_EQ(reference.height, candidate.height);
+    int failures = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
+        const double want = reference.rgb[i];
+        const double got = candidate.rgb[i];
+        const double difference = std::abs(got - want);
+        worst = std::max(worst, difference);
+        if (!(difference <= 1e-3 * std::abs(want) + 2e-5) && ++failures <= 5) {
+            const std::size_t pixel = i / 3;
+            ADD_FAILURE() << what << ": pixel (" << pixel % reference.width << ", " << pixel / reference.width
+                          << ") channel " << i % 3 << ": forward " << want << ", got " << got;
+        }
+    }
+    EXPECT_EQ(failures, 0) << what << " (largest difference " << worst << ")";
+}
+
+struct AgreementCase {
+    std::string name;
+    std::string scene;  // path, or "" for the default scene
+    std::vector<std::string> args;
+};
+
+class TechniqueAgreement : public ::testing::TestWithParam<AgreementCase> {};
+
+TEST_P(TechniqueAgreement, EveryTechniqueMatchesForward)
+{
+    const AgreementCase& c = GetParam();
+    const auto dir = scratchDirectory();
+    std::vector<std::string> args = c.args;
+    args.insert(args.end(), {"--technique", "forward"});
+    const Image reference = renderPfm(c.scene, dir / "forward.pfm", args);
+    for (const std::string& technique : techniqueNames()) {
+        if (technique == "forward")
+            continue;
+        std::vector<std::string> techniqueArgs = c.args;
+        techniqueArgs.insert(techniqueArgs.end(), {"--technique", technique});
+        const Image image = renderPfm(c.scene, dir / (technique + ".pfm"), techniqueArgs);
+        expectSameImage(reference, image, technique);
+    }
+}
+
+const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, TechniqueAgreement,
+    ::testing::Values(AgreementCase{"default_scene", "", {"--size", "320x180"}},
+                      AgreementCase{"default_scene_1024_lights", "", {"--size", "192x108", "--lights", "1024"}},
+                      AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json",
+                                    {"--size", "240x160"}},
+                      AgreementCase{"spots_points_300_set_lights", kScenes + "spots_and_points.json",
+                                    {"--size", "160x120", "--lights", "300"}}),
+    [](const ::testing::TestParamInfo<AgreementCase>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace manylights

@@ -1,0 +1,77 @@
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "apps/cli/Cli.h"
+
+namespace manylights::test {
+
+std::filesystem::path scratchDirectory()
+{
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::filesystem::path directory = std::filesystem::current_path() / "test-output" /
+                                      (std::string(info->test_suite_name()) + "." + info->name());
+    // Parameterised test names contain '/'.
+    std::string flat = directory.filename().string();
+    for (char& c : flat)
+        if (c == '/')
+            c = '_';
+    directory = directory.parent_path() / flat;
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    return directory;
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    ASSERT_TRUE(out.good()) << path;
+}
+
+void runCliOrFail(const std::vector<std::string>& args)
+{
+    std::vector<const char*> argv = {"manylights"};
+    for (const std::string& arg : args)
+        argv.push_back(arg.c_str());
+    const int status = runCli(static_cast<int>(argv.size()), argv.data());
+    ASSERT_EQ(status, 0) << "manylights failed";
+}
+
+Image renderPfm(const std::string& scene, const std::filesystem::path& output, const std::vector<std::string>& extraArgs)
+{
+    std::vector<std::string> args = {"render"};
+    if (!scene.empty())
+        args.push_back(scene);
+    args.insert(args.end(), {"-o", output.string()});
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    runCliOrFail(args);
+    if (::testing::Test::HasFatalFailure())
+        return {};
+    return readPfm(output);
+}
+
+ProcessResult runExecutable(const std::vector<std::string>& args)
+{
+    const std::filesystem::path errors = std::filesystem::temp_directory_path() /
+                                         ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
+    std::string command = "'" MANYLIGHTS_EXE "'";
+    for (const std::string& arg : args)
+        command += " '" + arg + "'";
+    command += " >/dev/null 2>'" + errors.string() + "' </dev/null";
+    const int status = std::system(command.c_str());
+    ProcessResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::ifstream in(errors);
+    std::stringstream text;
+    text << in.rdbuf();
+    result.stderrText = text.str();
+    std::filesystem::remove(errors);
+    return result;
+}
+
+}  // namespace manylights::test

@@ -1,0 +1,34 @@
+// Helpers for the image tests: scratch directories, running the CLI (in-process for
+// renders, as a child process where the exit status and stderr are the point), and
+// reading results back.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/Image.h"
+
+namespace manylights::test {
+
+// A fresh directory under the build tree's test-output folder, named after the test.
+std::filesystem::path scratchDirectory();
+
+void writeFile(const std::filesystem::path& path, const std::string& text);
+
+// Runs `manylights <args>` through runCli in this process; fails the test on a non-zero exit.
+void runCliOrFail(const std::vector<std::string>& args);
+
+// Renders `scene` (a path, or "" for the default scene) to the PFM `output` and reads it back.
+Image renderPfm(const std::string& scene, const std::filesystem::path& output,
+                const std::vector<std::string>& extraArgs = {});
+
+struct ProcessResult {
+    int exitCode = -1;
+    std::string stderrText;
+};
+
+// Runs the real executable as a child process (so a crash is seen as a crash).
+ProcessResult runExecutable(const std::vector<std::string>& args);
+
+}  // namespace manylights::test
