@@ -21,15 +21,18 @@ struct GBufferTarget {
     std::string_view contents;
 };
 
-// Full float precision where the lighting is sensitive to it (position; the normal, which a
-// specular power of 64 amplifies), half floats for colours: the deferred image then matches
-// forward to within the colours' 11-bit rounding (see tests/image/TechniqueAgreementTest.cpp).
+// Every quantity in full 32-bit float precision, exactly as the forward shader sees it: the
+// deferred image then equals forward's to float rounding, not to the G-buffer's precision
+// (tests/image/TechniqueAgreementTest.cpp). Half floats were tried and rejected: llvmpipe
+// truncates to half, a relative error of up to 2^-10 in every colour, and the normal's error
+// is amplified by specular powers. This explicit layout is for teaching and reference; its
+// bytes per pixel are the price (docs/gbuffer.md).
 inline constexpr std::array<GBufferTarget, 5> kGBufferColourTargets = {{
     {"position_shininess", GL_RGBA32F, 16, "world-space position xyz, shininess in w"},
     {"normal", GL_RGBA32F, 16, "world-space unit normal xyz, w unused"},
-    {"diffuse", GL_RGBA16F, 8, "kd rgb, w unused"},
-    {"specular", GL_RGBA16F, 8, "ks rgb, w unused"},
-    {"emissive", GL_RGBA16F, 8, "ke rgb (may exceed 1), w unused"},
+    {"diffuse", GL_RGBA32F, 16, "kd rgb, w unused"},
+    {"specular", GL_RGBA32F, 16, "ks rgb, w unused"},
+    {"emissive", GL_RGBA32F, 16, "ke rgb (may exceed 1), w unused"},
 }};
 // Depth and stencil (the stencil serves the stencil-volume technique).
 inline constexpr GBufferTarget kDepthStencilTarget = {"depth_stencil", GL_DEPTH24_STENCIL8, 4,

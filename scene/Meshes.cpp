@@ -359,8 +359,8 @@ void checkAttributeNumbers(const std::string& text, const std::string& displayNa
             const char* last = first + token.size();
             const auto [next, error] = std::from_chars(first, last, value);
             if (error != std::errc{} || next != last || !std::isfinite(value))
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " has a non-finite or malformed number '" +
-                                      token + "'");
+                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what +
+                                      " has a non-finite or malformed number '" + token + "'");
             ++count;
         }
         const int needed = keyword == "vt" ? 1 : 3;
@@ -419,8 +419,8 @@ Mesh loadObjStream(std::istream& stream, const std::string& displayName)
         if (index < 0)
             fail(displayName, std::string("a negative ") + what + " index reaches before the first one");
         if (index >= count)
-            fail(displayName, std::string(what) + " index " + std::to_string(index + 1) + " is out of range (the file has " +
-                                  std::to_string(count) + ")");
+            fail(displayName, std::string(what) + " index " + std::to_string(index + 1) +
+                                  " is out of range (the file has " + std::to_string(count) + ")");
     };
     const auto position = [&](int index) {
         const auto i = static_cast<std::size_t>(index) * 3;
@@ -460,7 +460,7 @@ Mesh loadObjStream(std::istream& stream, const std::string& displayName)
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t offset = 0;
         for (const unsigned char corners : shape.mesh.num_face_vertices) {
-            const tinyobj::index_t* face = &shape.mesh.indices[offset];
+            const tinyobj::index_t* face = shape.mesh.indices.data() + offset;
             offset += corners;
             for (unsigned char k = 0; k < corners; ++k) {
                 checkIndex(face[k].vertex_index, positionCount, false, "vertex");

@@ -148,7 +148,7 @@ std::size_t editDistance(std::string_view a, std::string_view b)
 }
 
 // The candidate the user most likely meant: a small edit away (typos, British spellings,
-// case) or one a prefix of the other ("position" for "pos").
+// case) or sharing all but the last letter of the shorter word as a prefix.
 std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates)
 {
     const std::string lowerWord = toLower(word);
@@ -158,7 +158,11 @@ std::optional<std::string> closest(std::string_view word, const std::vector<std:
         const std::string lowerCandidate = toLower(candidate);
         std::size_t distance = editDistance(lowerWord, lowerCandidate);
         const std::size_t shorter = std::min(lowerWord.size(), lowerCandidate.size());
-        const bool prefix = shorter >= 3 && (lowerWord.starts_with(lowerCandidate) || lowerCandidate.starts_with(lowerWord));
+        std::size_t common = 0;
+        while (common < shorter && lowerWord[common] == lowerCandidate[common])
+            ++common;
+        // "pos" for "position", "rotate" for "rotation", "scale" for "scaling".
+        const bool prefix = common >= 3 && common + 1 >= shorter;
         const std::size_t allowed = std::max<std::size_t>(1, std::max(lowerWord.size(), lowerCandidate.size()) / 3);
         if (distance > allowed && !prefix)
             continue;
@@ -329,9 +333,13 @@ Json parseJson(const std::string& text, const std::string& displayName)
         });
     } catch (const Json::parse_error& e) {
         // e.byte is the 1-based index of the last character read: the one that was wrong.
-        const TextPosition at = positionOf(text, e.byte > 0 ? e.byte - 1 : 0);
+        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+        const TextPosition at = positionOf(text, offset);
+        // Comments are the most common non-JSON in hand-written scenes; say so plainly.
+        const bool comment = offset + 1 < text.size() && text[offset] == '/' &&
+                             (text[offset + 1] == '/' || text[offset + 1] == '*');
         throw Error(displayName + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
-                    explainParseError(e.what()));
+                    (comment ? std::string("comments are not allowed in JSON") : explainParseError(e.what())));
     } catch (const Json::out_of_range& e) {
         const std::string what = e.what();
         const std::size_t open = what.find('\'');

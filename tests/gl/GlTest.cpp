@@ -84,7 +84,7 @@ TEST_F(GlTest, GBufferFramebufferIsCompleteAndBudgetIsKnown)
 {
     gl::Texture2D depth("depth", kDepthStencilTarget.format, 8, 8);
     GBuffer gbuffer(8, 8, depth);  // asserts completeness itself
-    EXPECT_EQ(gbufferBytesPerPixel(), 60);
+    EXPECT_EQ(gbufferBytesPerPixel(), 5 * 16 + 4);
 }
 
 TEST_F(GlTest, IncludesAreResolvedOnceAndDefinesInjected)

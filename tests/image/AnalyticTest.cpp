@@ -3,10 +3,13 @@
 // every covered pixel with the formula evaluated at that pixel's world position, written
 // here independently of the renderer's shaders, in double precision.
 //
+// Every test runs for every technique.
+//
 // Tolerance: 2e-5 absolute + 1e-4 relative. The renderer works in 32-bit floats: positions
 // of about 10 units carry ~1e-6 absolute error, and pow(), normalize() and the sum of a few
-// terms add a few ulps (~1e-6 relative each). A wrong formula (a missing factor, a wrong
-// exponent, the radius cut in the wrong place) is off by orders of magnitude more.
+// terms add a few ulps (~1e-6 relative each); GPUs may use faster, less exact pow and
+// inversesqrt. A wrong formula (a missing factor, a wrong exponent, the radius cut in the
+// wrong place) is off by orders of magnitude more.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "TestSupport.h"
+#include "render/Technique.h"
 
 namespace manylights {
 namespace {
@@ -29,6 +33,8 @@ constexpr double kRelativeTolerance = 1e-4;
 
 // The expected colour at a world position; nullopt where either answer is right (a pixel
 // within float rounding of a cut-off edge).
+class Analytic : public ::testing::TestWithParam<std::string> {};
+
 using Expected = std::function<std::optional<glm::dvec3>(const glm::dvec3& position)>;
 
 // Renders the scene's final image and position view, checks every covered pixel against
@@ -37,7 +43,9 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
 {
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", sceneJson);
-    const Image colour = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size});
+    const std::string technique = ::testing::TestWithParam<std::string>::GetParam();
+    const Image colour =
+        renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size, "--technique", technique});
     const Image position =
         renderPfm((dir / "scene.json").string(), dir / "position.pfm", {"--size", size, "--view", "position"});
     const Image normal =
@@ -72,7 +80,7 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
 const char* kTopCamera = R"("camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1],
                                       "fov_y": 60, "near": 0.1, "far": 100})";
 
-TEST(Analytic, PointLightAboveDiffusePlane)
+TEST_P(Analytic, PointLightAboveDiffusePlane)
 {
     // kd = 0.5, light 2 above the origin, A(d) = 1 / (1 + 0.25 d²).
     // Under the light: d = 2, N·L = 1, A = 1/2, so the colour is 0.5 · 1 · 0.5 = 0.25.
@@ -90,14 +98,15 @@ TEST(Analytic, PointLightAboveDiffusePlane)
 
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", scene);
-    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "65x65"});
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
+                                  {"--size", "65x65", "--technique", GetParam()});
     const float* centre = image.pixel(32, 32);
     EXPECT_NEAR(centre[0], 0.25, 1e-6);
     EXPECT_NEAR(centre[1], 0.25, 1e-6);
     EXPECT_NEAR(centre[2], 0.25, 1e-6);
 }
 
-TEST(Analytic, DirectionalLightOnTiltedPlane)
+TEST_P(Analytic, DirectionalLightOnTiltedPlane)
 {
     // The plane turned 30° about X has the normal (0, cos 30°, sin 30°); light falling
     // straight down gives N·L = cos 30° = 0.8660254 everywhere. With ambient 0.1:
@@ -113,7 +122,7 @@ TEST(Analytic, DirectionalLightOnTiltedPlane)
     EXPECT_GT(checkEveryPixel(scene, expected), 500);
 }
 
-TEST(Analytic, SpotLightConeEdge)
+TEST_P(Analytic, SpotLightConeEdge)
 {
     // Spot 4 above the plane pointing down, cutoff 30°, exponent 2, constant attenuation
     // (a = b = 0: unbounded, A = 1). At distance r from the axis: d = sqrt(r² + 16),
@@ -143,7 +152,7 @@ TEST(Analytic, SpotLightConeEdge)
     EXPECT_GT(outside, 300);
 }
 
-TEST(Analytic, RangeFalloffWithSpecularHighlight)
+TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
 {
     // Range falloff r = 6: A(d) = 1/max(d, 0.06)² − 1/36 for d < 6, else 0, and a specular
     // term ks · max(N·H, 0)^16 with H = normalize(L + V), V towards the eye at (0, 10, 0).
@@ -173,7 +182,7 @@ TEST(Analytic, RangeFalloffWithSpecularHighlight)
     EXPECT_GT(unlit, 100);  // the corners lie beyond the range and must be exactly black
 }
 
-TEST(Analytic, ClassicLightIsCutAtItsThresholdRadius)
+TEST_P(Analytic, ClassicLightIsCutAtItsThresholdRadius)
 {
     // c = 1, a = 1, Imax = 1, threshold 0.05: A(R) = 0.05 at R = sqrt(19) = 4.3589 (from
     // 1 + R² = 20). The light is 1 above the plane, so on the plane the cut falls at
@@ -201,7 +210,7 @@ TEST(Analytic, ClassicLightIsCutAtItsThresholdRadius)
     EXPECT_GT(outside, 300);
 }
 
-TEST(Analytic, EmissiveAndAmbientWithoutLights)
+TEST_P(Analytic, EmissiveAndAmbientWithoutLights)
 {
     // No lights: colour = ke + ambient ⊙ kd = (0.1, 0.2, 0.3) + (0.5, 0.25, 0.2) ⊙ (0.2, 0.4, 1).
     const std::string scene = std::string("{") + kTopCamera + R"(,
@@ -213,11 +222,15 @@ TEST(Analytic, EmissiveAndAmbientWithoutLights)
     // The background is the scene's background colour, exactly.
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", scene);
-    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "65x65"});
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
+                                  {"--size", "65x65", "--technique", GetParam()});
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[0], 0.3f);
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[1], 0.6f);
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[2], 0.9f);
 }
+
+INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()),
+                         [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
 }  // namespace
 }  // namespace manylights

@@ -44,8 +44,9 @@ TEST_P(CliFailure, OneLineAndNothingWritten)
     args.insert(args.end(), c.args.begin(), c.args.end());
     const test::ProcessResult result = runExecutable(args);
     EXPECT_EQ(result.exitCode, c.exitCode) << result.stderrText;
-    if (c.exitCode == 1)
+    if (c.exitCode == 1) {
         EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    }
     for (const std::string& part : c.messageParts)
         EXPECT_NE(result.stderrText.find(part), std::string::npos) << "missing '" << part << "' in: " << result.stderrText;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
@@ -86,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"absurd_size", "", {"--size", "100000x100000"}, 2, {"--size"}},
         FailureCase{"zero_frames", "", {"--frames", "0"}, 2, {"--frames"}},
         FailureCase{"negative_lights", "", {"--lights", "-5"}, 2, {"--lights"}}),
-    [](const ::testing::TestParamInfo<FailureCase>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<FailureCase>& param) { return param.param.name; });
 
 TEST(Cli, MissingSceneFileIsOneLineExitOne)
 {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
@@ -13,14 +14,10 @@ namespace manylights::test {
 std::filesystem::path scratchDirectory()
 {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::filesystem::path directory = std::filesystem::current_path() / "test-output" /
-                                      (std::string(info->test_suite_name()) + "." + info->name());
-    // Parameterised test names contain '/'.
-    std::string flat = directory.filename().string();
-    for (char& c : flat)
-        if (c == '/')
-            c = '_';
-    directory = directory.parent_path() / flat;
+    // Parameterised suites and tests have '/' in their names: one flat folder per test.
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    const std::filesystem::path directory = std::filesystem::current_path() / "test-output" / name;
     std::filesystem::remove_all(directory);
     std::filesystem::create_directories(directory);
     return directory;
