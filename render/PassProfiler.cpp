@@ -6,7 +6,12 @@ namespace manylights {
 
 namespace {
 constexpr double kNanosecondsPerMs = 1.0e6;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
+}  // namespace
 
 PassProfiler::PassProfiler()
     : countInvocations_(gl::hasPipelineStatistics()),
@@ -18,6 +23,8 @@ PassProfiler::PassProfiler()
 void PassProfiler::beginFrame()
 {
     passesThisFrame_ = 0;
+    glFinish();
+    frameStartTime_ = std::chrono::steady_clock::now();
     frameStart_.stamp();
 }
 
@@ -39,6 +46,8 @@ PassProfiler::Scope::Scope(PassProfiler& profiler, std::string_view name)
     ML_ASSERT(!profiler_.inPass_);
     profiler_.inPass_ = true;
     PassQueries& queries = profiler_.nextPass(name);
+    glFinish();
+    start_ = std::chrono::steady_clock::now();
     queries.time.begin();
     if (queries.invocations)
         queries.invocations.begin();
@@ -50,19 +59,24 @@ PassProfiler::Scope::~Scope()
     queries.time.end();
     if (queries.invocations)
         queries.invocations.end();
+    glFinish();
+    queries.wallMs = millisecondsSince(start_);
     profiler_.inPass_ = false;
 }
 
 FrameSample PassProfiler::endFrame()
 {
     frameEnd_.stamp();
+    glFinish();
     FrameSample sample;
+    sample.wallMs = millisecondsSince(frameStartTime_);
     sample.gpuMs = static_cast<double>(frameEnd_.result() - frameStart_.result()) / kNanosecondsPerMs;
     for (std::size_t i = 0; i < passesThisFrame_; ++i) {
         const PassQueries& queries = passes_[i];
         PassSample pass;
         pass.name = queries.name;
         pass.gpuMs = static_cast<double>(queries.time.result()) / kNanosecondsPerMs;
+        pass.wallMs = queries.wallMs;
         if (queries.invocations)
             pass.fragmentInvocations = queries.invocations.result();
         sample.passes.push_back(std::move(pass));

@@ -1,7 +1,14 @@
-// GPU time (GL_TIME_ELAPSED) and fragment-shader invocations (pipeline statistics) per pass,
-// and GPU time per frame (GL_TIMESTAMP at its start and end).
+// Time and fragment-shader invocations (pipeline statistics) per pass and per frame.
+//
+// Two clocks, because neither is right everywhere. GL timer queries (GL_TIME_ELAPSED per
+// pass, GL_TIMESTAMP per frame) are what a GPU profiler shows, but llvmpipe records them when
+// it bins commands, not when its threads rasterise the tiles, so it under-reports passes with
+// many draws by up to 10x. The wall clock between glFinish calls is exact on llvmpipe (the
+// GPU is the CPU) and on a GPU adds only the submission latency. frame_ms uses the wall
+// clock; the timer queries are reported beside it.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,12 +22,14 @@ namespace manylights {
 
 struct PassSample {
     std::string name;
-    double gpuMs = 0.0;
+    double gpuMs = 0.0;   // GL_TIME_ELAPSED
+    double wallMs = 0.0;  // wall clock from glFinish to glFinish
     std::optional<std::uint64_t> fragmentInvocations;  // absent where the driver cannot count
 };
 
 struct FrameSample {
-    double gpuMs = 0.0;
+    double gpuMs = 0.0;   // between GL_TIMESTAMPs at the frame's start and end
+    double wallMs = 0.0;  // wall clock from glFinish to glFinish
     std::vector<PassSample> passes;
 };
 
@@ -38,6 +47,7 @@ public:
         PassProfiler& profiler_;
         gl::DebugGroup group_;
         std::size_t index_;
+        std::chrono::steady_clock::time_point start_;
     };
 
     PassProfiler();
@@ -52,6 +62,7 @@ private:
         std::string name;
         gl::Query time;
         gl::Query invocations;
+        double wallMs = 0.0;
     };
     PassQueries& nextPass(std::string_view name);
 
@@ -61,6 +72,7 @@ private:
     gl::Query frameEnd_;
     std::vector<PassQueries> passes_;  // reused from frame to frame
     std::size_t passesThisFrame_ = 0;
+    std::chrono::steady_clock::time_point frameStartTime_;
 };
 
 }  // namespace manylights

@@ -105,8 +105,8 @@ Scene makeDefaultScene()
     scene.camera.nearPlane = 0.1f;
     scene.camera.farPlane = 200.0f;
     scene.background = glm::vec3{0.0f};
-    scene.ambient = glm::vec3{0.03f};
-    scene.directional = DirectionalLight{{-1.0f, -2.0f, -1.0f}, glm::vec3{0.15f}, false};
+    scene.ambient = glm::vec3{0.06f};
+    scene.directional = DirectionalLight{{-1.0f, -2.0f, -1.0f}, glm::vec3{0.25f}, false};
 
     // The lights are a light set, not explicit lights, so that `--lights N` scales this scene.
     LightSet lights;
@@ -116,7 +116,7 @@ Scene makeDefaultScene()
     lights.boxMin = {-17.0f, 0.4f, -17.0f};
     lights.boxMax = {17.0f, 1.0f, 17.0f};
     lights.range = {3.5f, 5.0f};
-    lights.intensity = {0.6f, 1.2f};
+    lights.intensity = {0.2f, 0.45f};
     scene.lightSets.push_back(lights);
 
     Mesh floorMesh = makePlane(40.0f, 40.0f);

@@ -987,7 +987,8 @@ private:
             expectNumberArray(size, 2);
             const float x = positive(element(size, 0));
             const float z = positive(element(size, 1));
-            return cached("plane(size=[" + formatFloat(x) + ", " + formatFloat(z) + "])", [&] { return makePlane(x, z); });
+            return cached("plane(size=[" + formatFloat(x) + ", " + formatFloat(z) + "])",
+                          [&] { return makePlane(x, z); });
         }
         if (kind == "box") {
             expectKeys(node, {"primitive", "size"});
@@ -1019,8 +1020,9 @@ private:
         }
         const std::vector<std::string> kinds{"plane", "box", "sphere", "cone", "cylinder", "torus"};
         const auto guess = closest(kind, kinds);
-        fail(kindNode, "unknown primitive " + quote(kind) +
-                           (guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")"));
+        const std::string hint =
+            guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")";
+        fail(kindNode, "unknown primitive " + quote(kind) + hint);
     }
 
     glm::mat4 readTransform(const Node& node) const

@@ -27,6 +27,8 @@ struct FailureCase {
     std::vector<std::string> args;  // after "render [scene.json] -o out.png"
     int exitCode;
     std::vector<std::string> messageParts;  // each must appear in the one stderr line
+    // Names the case in test listings instead of dumping its bytes.
+    friend void PrintTo(const FailureCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class CliFailure : public ::testing::TestWithParam<FailureCase> {};

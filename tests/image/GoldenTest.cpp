@@ -42,6 +42,8 @@ Png readPng(const std::filesystem::path& path)
 struct GoldenCase {
     std::string name;  // tests/golden/<name>.png
     std::vector<std::string> args;
+    // Names the case in test listings instead of dumping its bytes.
+    friend void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};

@@ -44,6 +44,8 @@ struct AgreementCase {
     std::string name;
     std::string scene;  // path, or "" for the default scene
     std::vector<std::string> args;
+    // Names the case in test listings instead of dumping its bytes.
+    friend void PrintTo(const AgreementCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class TechniqueAgreement : public ::testing::TestWithParam<AgreementCase> {};

@@ -350,7 +350,8 @@ TEST(SceneLoader, ErrorsInAFileNameTheFile)
     {
         std::FILE* out = std::fopen(file.c_str(), "wb");
         ASSERT_NE(out, nullptr);
-        const std::string text = "{\n  \"ambient\": [0, 0, 0],\n  \"materials\": { \"m\": { \"normal_map\": \"textures/n.png\" } }\n}\n";
+        const std::string text =
+            "{\n  \"ambient\": [0, 0, 0],\n  \"materials\": { \"m\": { \"normal_map\": \"textures/n.png\" } }\n}\n";
         std::fwrite(text.data(), 1, text.size(), out);
         std::fclose(out);
     }
@@ -399,7 +400,8 @@ std::string withMesh(const std::string& mesh) { return R"json({ "objects": [ { "
 const std::string kPoint = R"json("type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1])json";
 const std::string kSpot =
     R"json("type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "direction": [0, -1, 0], "range": 1)json";
-const std::string kSet = R"json("count": 4, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1])json";
+const std::string kSet =
+    R"json("count": 4, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1])json";
 
 std::string tooManyObjects()
 {
@@ -436,7 +438,8 @@ const std::vector<BadScene> kBadScenes = {
     {"AttenuationThresholdZero", R"json({"attenuation_threshold": 0})json", ": /attenuation_threshold: ",
      "must be > 0, got 0"},
     {"BackgroundNegative", R"json({"background": [0, 0, -0.5]})json", ": /background/2: ", "must be >= 0, got -0.5"},
-    {"AmbientNotAnArray", R"json({"ambient": 0.1})json", ": /ambient: ", "expected an array of 3 numbers, got a number"},
+    {"AmbientNotAnArray", R"json({"ambient": 0.1})json",
+     ": /ambient: ", "expected an array of 3 numbers, got a number"},
     {"AmbientOverflowsFloat", R"json({"ambient": [1e39, 0, 0]})json", ": /ambient/0: ",
      "1e+39 does not fit in a 32-bit float"},
     {"TooManyObjects", tooManyObjects(), ": /objects: ", "too many objects: 1000001 (at most 1000000)"},
@@ -464,21 +467,23 @@ const std::vector<BadScene> kBadScenes = {
     // Directional light.
     {"DirectionalMissingIntensity", R"json({"directional": {"direction": [0, -1, 0]}})json", ": /directional: ",
      "missing required key 'intensity'"},
-    {"DirectionalShadowsNotBool", R"json({"directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1], "shadows": "yes"}})json",
+    {"DirectionalShadowsNotBool",
+     R"json({"directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1], "shadows": "yes"}})json",
      ": /directional/shadows: ", "expected true or false, got a string"},
     {"DirectionalZero", R"json({"directional": {"direction": [0, 0, 0], "intensity": [1, 1, 1]}})json",
      ": /directional/direction: ", "must be a non-zero vector"},
 
     // Lights.
     {"LightsNotArray", R"json({"lights": {}})json", ": /lights: ", "expected an array, got an object"},
-    {"LightMissingType", withLight(R"json({"pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1})json"), ": /lights/0: ",
-     "missing required key 'type'"},
+    {"LightMissingType", withLight(R"json({"pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1})json"),
+     ": /lights/0: ", "missing required key 'type'"},
     {"LightTypeSpotlight", withLight(R"json({"type": "spotlight"})json"), ": /lights/0/type: ",
      "light type must be 'point' or 'spot', got 'spotlight' (did you mean 'spot'?)"},
     {"LightBothFalloffs", withLight("{" + kPoint + R"json(, "range": 1, "attenuation": {"constant": 1}})json"),
      ": /lights/0: ", "has both 'attenuation' and 'range'"},
     {"LightNoFalloff", withLight("{" + kPoint + "}"), ": /lights/0: ", "give exactly one of 'attenuation' or 'range'"},
-    {"LightRangeZero", withLight("{" + kPoint + R"json(, "range": 0})json"), ": /lights/0/range: ", "must be > 0, got 0"},
+    {"LightRangeZero", withLight("{" + kPoint + R"json(, "range": 0})json"),
+     ": /lights/0/range: ", "must be > 0, got 0"},
     {"LightAttenuationAllZero",
      withLight("{" + kPoint + R"json(, "attenuation": {"constant": 0, "linear": 0, "quadratic": 0}})json"),
      ": /lights/0/attenuation: ", "must not all be zero"},
@@ -506,7 +511,8 @@ const std::vector<BadScene> kBadScenes = {
      withLight(R"json({"type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "cutoff": 30})json"),
      ": /lights/0: ", "missing required key 'direction'"},
     {"SpotDirectionZero",
-     withLight(R"json({"type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "cutoff": 30, "direction": [0, 0, 0]})json"),
+     withLight(R"json({"type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "cutoff": 30,
+                       "direction": [0, 0, 0]})json"),
      ": /lights/0/direction: ", "must be a non-zero vector"},
     {"SpotExponentNegative", withLight("{" + kSpot + R"json(, "cutoff": 30, "exponent": -1})json"),
      ": /lights/0/exponent: ", "must be >= 0, got -1"},
@@ -516,13 +522,16 @@ const std::vector<BadScene> kBadScenes = {
     // Light sets.
     {"SetCountNegative", withSet(R"json({"count": -1})json"), ": /light_sets/0/count: ",
      "must be in [0, 16777216], got -1"},
-    {"SetCountFraction", withSet(R"json({"count": 1.5})json"), ": /light_sets/0/count: ", "expected an integer, got 1.5"},
+    {"SetCountFraction", withSet(R"json({"count": 1.5})json"),
+     ": /light_sets/0/count: ", "expected an integer, got 1.5"},
     {"SetCountTooLarge", withSet(R"json({"count": 20000000})json"), ": /light_sets/0/count: ",
      "must be in [0, 16777216], got 20000000"},
-    {"SetCountString", withSet(R"json({"count": "8"})json"), ": /light_sets/0/count: ", "expected an integer, got a string"},
+    {"SetCountString", withSet(R"json({"count": "8"})json"),
+     ": /light_sets/0/count: ", "expected an integer, got a string"},
     {"SetCountsAddUpTooHigh",
-     R"json({"light_sets": [{"count": 10000000, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1]},
-                            {"count": 10000000, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1]}]})json",
+     R"json({"light_sets": [
+         {"count": 10000000, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1]},
+         {"count": 10000000, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1]}]})json",
      ": /light_sets/1/count: ", "counts add up to 20000000, more than 16777216"},
     {"SetSeedNegative", withSet("{" + kSet + R"json(, "seed": -7})json"), ": /light_sets/0/seed: ",
      "must be in [0, 4294967295], got -7"},
@@ -571,7 +580,9 @@ const std::vector<BadScene> kBadScenes = {
     // Objects and meshes.
     {"ObjectsNotArray", R"json({"objects": {}})json", ": /objects: ", "expected an array, got an object"},
     {"ObjectMissingMesh", R"json({"objects": [{"name": "x"}]})json", ": /objects/0: ", "missing required key 'mesh'"},
-    {"ObjectUnknownMaterial", R"json({"materials": {"grey": {}}, "objects": [{"mesh": {"primitive": "sphere", "radius": 1}, "material": "gray"}]})json",
+    {"ObjectUnknownMaterial",
+     R"json({"materials": {"grey": {}},
+             "objects": [{"mesh": {"primitive": "sphere", "radius": 1}, "material": "gray"}]})json",
      ": /objects/0/material: ", "unknown material 'gray' (did you mean 'grey'?)"},
     {"ObjectMaterialWithoutMaterials", sphereObject(R"json(, "material": "grey")json"), ": /objects/0/material: ",
      "unknown material 'grey' (the scene's 'materials' defines none)"},
@@ -579,17 +590,20 @@ const std::vector<BadScene> kBadScenes = {
      "expected a material name or a material object, got a number"},
     {"ObjectInlineMaterialBad", sphereObject(R"json(, "material": {"shininess": 0})json"),
      ": /objects/0/material/shininess: ", "must be >= 1, got 0"},
-    {"MeshGltf", withMesh(R"json("models/helmet.gltf")json"), ": /objects/0/mesh: ", "glTF meshes are not supported yet"},
+    {"MeshGltf", withMesh(R"json("models/helmet.gltf")json"),
+     ": /objects/0/mesh: ", "glTF meshes are not supported yet"},
     {"MeshGlb", withMesh(R"json("models/helmet.GLB")json"), ": /objects/0/mesh: ", "glTF meshes are not supported yet"},
     {"MeshPly", withMesh(R"json("models/bunny.ply")json"), ": /objects/0/mesh: ",
      "unsupported mesh file type '.ply' (expected .obj)"},
     {"MeshObjMissing", withMesh(R"json("models/nothere.obj")json"), ": /objects/0/mesh: ",
      "file not found: " + resolved("models/nothere.obj")},
     {"MeshObjBroken", withMesh(R"json("models/broken.obj")json"), ": /objects/0/mesh: ", "broken.obj"},
-    {"MeshNumber", withMesh("7"), ": /objects/0/mesh: ", "expected a mesh file path or a primitive object, got a number"},
+    {"MeshNumber", withMesh("7"),
+     ": /objects/0/mesh: ", "expected a mesh file path or a primitive object, got a number"},
     {"PrimitiveUnknown", withMesh(R"json({"primitive": "sphre", "radius": 1})json"), ": /objects/0/mesh/primitive: ",
      "unknown primitive 'sphre' (did you mean 'sphere'?)"},
-    {"PrimitiveMissing", withMesh(R"json({"radius": 1})json"), ": /objects/0/mesh: ", "missing required key 'primitive'"},
+    {"PrimitiveMissing", withMesh(R"json({"radius": 1})json"),
+     ": /objects/0/mesh: ", "missing required key 'primitive'"},
     {"SphereRadiusZero", withMesh(R"json({"primitive": "sphere", "radius": 0})json"), ": /objects/0/mesh/radius: ",
      "must be > 0, got 0"},
     {"SphereWithSize", withMesh(R"json({"primitive": "sphere", "size": [1, 1, 1]})json"), ": /objects/0/mesh/size: ",

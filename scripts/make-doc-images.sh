@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Regenerates every image in docs/images/ with the project's own commands, and the timing
+# figures quoted in docs/gbuffer.md into docs/images/*-stats.json.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+make build
+ml=build/manylights
+out=docs/images
+
+# README picture: the default scene as `make run` renders it.
+$ml render -o $out/default-scene.png --size 1280x720
+
+# Every G-buffer quantity of the default scene (docs/gbuffer.md).
+for view in position normal diffuse specular emissive depth; do
+  $ml render -o $out/gbuffer-$view.png --size 640x360 --view $view
+done
+
+# The techniques side by side (docs/techniques.md), with their statistics.
+for technique in forward deferred; do
+  $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique \
+    --frames 3 --stats $out/technique-$technique-stats.json
+done
+echo "docs images written to $out"
