@@ -1,6 +1,6 @@
 #include "gl/Buffer.h"
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights::gl {
 

@@ -1,6 +1,6 @@
 #include "gl/Framebuffer.h"
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights::gl {
 

@@ -2,7 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights::gl {
 

@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
-#include "resources/EmbeddedFiles.h"
-#include "scene/Error.h"
+#include "core/EmbeddedFiles.h"
+#include "core/Error.h"
 
 namespace manylights::gl {
 

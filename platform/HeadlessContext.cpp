@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "gl/Debug.h"
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -9,7 +9,7 @@
 #include <system_error>
 #include <unistd.h>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

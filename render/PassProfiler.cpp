@@ -1,6 +1,6 @@
 #include "render/PassProfiler.h"
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "render/DeferredTechnique.h"
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "resources/EmbeddedFiles.h"
-#include "scene/Error.h"
+#include "core/EmbeddedFiles.h"
+#include "core/Error.h"
 #include "scene/Meshes.h"
 #include "scene/Transform.h"
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -15,7 +15,7 @@
 
 #include <tiny_obj_loader.h>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -1,6 +1,6 @@
 #include "scene/Scene.h"
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

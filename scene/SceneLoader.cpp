@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 #include "scene/Meshes.h"
 #include "scene/Transform.h"
 

@@ -8,7 +8,7 @@
 
 #include "apps/cli/RenderCommand.h"
 #include "render/Technique.h"
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 

@@ -10,7 +10,7 @@
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
 #include "scene/DefaultScene.h"
-#include "scene/Error.h"
+#include "core/Error.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 

@@ -14,7 +14,7 @@
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
 #include "render/GBuffer.h"
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 namespace {

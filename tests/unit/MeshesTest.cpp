@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 
 namespace manylights {
 namespace {

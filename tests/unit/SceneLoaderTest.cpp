@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "scene/Error.h"
+#include "core/Error.h"
 #include "scene/SceneLoader.h"
 #include "scene/Transform.h"
 
