@@ -35,12 +35,18 @@ test: build
 $(SANITIZE_DIR)/build.ninja: | setup
 	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DMANYLIGHTS_WERROR=ON -DMANYLIGHTS_SANITIZE=ON $(CMAKE_FLAGS)
 
+# LeakSanitizer runs on the tests without GL. With a GL context it cannot work: Mesa
+# dlcloses its driver at exit, before the leak check, so the driver's own never-freed
+# allocations show up from "<unknown module>" and no suppression can name them. Address and
+# undefined-behaviour checks stay on everywhere.
+SANITIZER_ENV = ASAN_OPTIONS=abort_on_error=1:detect_leaks=1 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
 sanitize: setup $(SANITIZE_DIR)/build.ninja
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
-	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
-		UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-		ctest --output-on-failure -j $(JOBS)
+	cd $(SANITIZE_DIR) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS) -R '^unit\.'
+	cd $(SANITIZE_DIR) && $(SANITIZER_ENV) ASAN_OPTIONS=abort_on_error=1:detect_leaks=0 \
+		ctest --output-on-failure -j $(JOBS) -E '^unit\.'
 
 ci: test sanitize
 
