@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates every image in docs/images/ with the project's own commands, and the timing
-# figures quoted in docs/gbuffer.md into docs/images/*-stats.json.
+# Regenerates every image in docs/images/ with the project's own commands. The figures in
+# docs/techniques.md come from scripts/measure-techniques.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 make build
@@ -15,9 +15,8 @@ for view in position normal diffuse specular emissive depth; do
   $ml render -o $out/gbuffer-$view.png --size 640x360 --view $view
 done
 
-# The techniques side by side (docs/techniques.md), with their statistics.
+# The techniques side by side (docs/techniques.md).
 for technique in forward deferred; do
-  $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique \
-    --frames 3 --stats $out/technique-$technique-stats.json
+  $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
 done
 echo "docs images written to $out"
