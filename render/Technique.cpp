@@ -2,6 +2,7 @@
 
 #include "render/DeferredTechnique.h"
 #include "render/ForwardTechnique.h"
+#include "render/VolumeTechniques.h"
 
 namespace manylights {
 
@@ -17,7 +18,7 @@ FrameTargets::FrameTargets(int width_, int height_)
 
 const std::vector<std::string>& techniqueNames()
 {
-    static const std::vector<std::string> names = {"forward", "deferred"};
+    static const std::vector<std::string> names = {"forward", "deferred", "volumes", "stencil"};
     return names;
 }
 
@@ -27,6 +28,10 @@ std::unique_ptr<Technique> makeTechnique(std::string_view name)
         return std::make_unique<ForwardTechnique>();
     if (name == "deferred")
         return std::make_unique<DeferredTechnique>();
+    if (name == "volumes")
+        return std::make_unique<VolumesTechnique>();
+    if (name == "stencil")
+        return std::make_unique<StencilTechnique>();
     return nullptr;
 }
 

@@ -1,0 +1,44 @@
+// Bounding meshes for local lights, and which shape each light is drawn with.
+//
+// A volume must enclose the whole region where the light's A·S is non-zero, or the
+// techniques that shade only inside volumes would cut light off. A tessellated sphere
+// inscribed in the radius does not: its flat faces pass inside the sphere. The meshes here
+// are scaled so that their faces lie outside the unit sphere (or unit cone), and every
+// light's instance scales them by its radius.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/GpuScene.h"
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// An icosphere subdivided `subdivisions` times, scaled so that the distance from the centre
+// to its nearest face is 1: it contains the unit sphere. Convex, outward (CCW) faces.
+Mesh makeBoundingSphere(int subdivisions = 2);
+
+// A cone with its apex at (just behind) the origin, its axis along +Z, its base cap at z = 1,
+// and its polygonal base circumscribing the circle of radius 1 (with a margin, see the .cpp):
+// scaled by (R tan θ, R tan θ, R) it
+// contains the part of the sphere of radius R inside the cone of half-angle θ < 90°, because
+// that region never reaches further than R along the axis.
+Mesh makeBoundingCone(int segments = 32);
+
+// Spot lights up to this half-angle get a cone; wider ones a sphere, which is then the
+// tighter bound (the cone's base radius R tan θ exceeds R beyond 45°, and it grows without
+// limit towards 90°).
+inline constexpr float kMaxConeCutoffDegrees = 60.0f;
+
+// Indices into the light buffer, grouped by the shape each light is drawn with.
+struct LightVolumeGroups {
+    std::vector<std::uint32_t> spheres;     // point lights, and spots wider than the cone limit
+    std::vector<std::uint32_t> cones;       // spots up to kMaxConeCutoffDegrees
+    std::vector<std::uint32_t> fullScreen;  // unbounded lights: no volume encloses them
+    // Lights that contribute nothing anywhere (radius 0) are in no group.
+};
+
+LightVolumeGroups groupLightVolumes(const std::vector<GpuLight>& lights);
+
+}  // namespace manylights

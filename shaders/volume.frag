@@ -1,0 +1,14 @@
+#version 450 core
+// One light's contribution at the pixel's surface, added by blending into the lit image.
+#include "lib/lighting.glsl"
+#include "lib/gbuffer.glsl"
+
+layout(early_fragment_tests) in;
+layout(location = 0) flat in uint lightIndex;
+layout(location = 0) out vec4 outColor;
+
+void main()
+{
+    Surface s = gbufferSurface(ivec2(gl_FragCoord.xy));
+    outColor = vec4(shadeLocal(lights[lightIndex], s, viewVector(s.position)), 0.0);
+}
