@@ -76,7 +76,19 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json",
                                     {"--size", "240x160"}},
                       AgreementCase{"spots_points_300_set_lights", kScenes + "spots_and_points.json",
-                                    {"--size", "160x120", "--lights", "300"}}),
+                                    {"--size", "160x120", "--lights", "300"}},
+                      // The camera cases of the light-volume techniques (tests/scenes/*.json say
+                      // how each is set up).
+                      AgreementCase{"camera_inside_point_light", kScenes + "camera_inside_point_light.json",
+                                    {"--size", "160x120"}},
+                      AgreementCase{"camera_inside_spot_cone", kScenes + "camera_inside_spot_cone.json",
+                                    {"--size", "160x120"}},
+                      AgreementCase{"light_cut_by_near_plane", kScenes + "light_cut_by_near_plane.json",
+                                    {"--size", "160x120"}},
+                      AgreementCase{"light_beyond_far_plane", kScenes + "light_beyond_far_plane.json",
+                                    {"--size", "160x120"}},
+                      AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
+                      AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace
