@@ -16,8 +16,9 @@ void drawCoveredPixels(const gl::Program& program)
     glDepthFunc(GL_LESS);
 }
 
-DeferredTechnique::DeferredTechnique()
-    : lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}})
+DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
+    : lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
+                shaderDefines(options))
 {
 }
 

@@ -10,7 +10,7 @@ namespace manylights {
 // covered pixel with every light.
 class DeferredTechnique : public Technique {
 public:
-    DeferredTechnique();
+    explicit DeferredTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "deferred"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 

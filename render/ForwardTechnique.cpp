@@ -6,8 +6,9 @@
 
 namespace manylights {
 
-ForwardTechnique::ForwardTechnique()
-    : program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}})
+ForwardTechnique::ForwardTechnique(const TechniqueOptions& options)
+    : program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
+               shaderDefines(options))
 {
 }
 

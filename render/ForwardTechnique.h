@@ -7,7 +7,7 @@ namespace manylights {
 
 class ForwardTechnique : public Technique {
 public:
-    ForwardTechnique();
+    explicit ForwardTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "forward"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 

@@ -26,6 +26,11 @@ GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil)
 void GBuffer::fill(const GpuScene& scene, PassProfiler& profiler) const
 {
     auto pass = profiler.pass("geometry");
+    fill(scene);
+}
+
+void GBuffer::fill(const GpuScene& scene) const
+{
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < static_cast<int>(targets_.size()); ++i)
         framebuffer_.clearColour(i, zero);

@@ -52,8 +52,9 @@ public:
     // against the scene's surfaces.
     GBuffer(int width, int height, const gl::Texture2D& depthStencil);
 
-    // The geometry pass: clears and fills every target.
+    // The geometry pass: clears and fills every target, as a profiled pass or not.
     void fill(const GpuScene& scene, PassProfiler& profiler) const;
+    void fill(const GpuScene& scene) const;
     // Binds the colour targets to texture units 0..4 (shaders/lib/gbuffer.glsl).
     void bindForReading() const;
 

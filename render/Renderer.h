@@ -2,6 +2,7 @@
 // result back. The CLI, the tests and (later) the viewer all drive this one class.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -11,8 +12,15 @@
 #include "render/PassProfiler.h"
 #include "render/Technique.h"
 #include "render/Views.h"
+#include "render/VolumeDrawer.h"
 
 namespace manylights {
+
+// Deterministic work of one frame (SPEC.md §3 --count-work).
+struct WorkCounts {
+    std::uint64_t lightEvaluations = 0;  // (pixel, light) pairs the technique evaluated
+    std::uint64_t inRangePairs = 0;      // (pixel, light) pairs with A·S > 0: the least possible
+};
 
 class Renderer {
 public:
@@ -22,11 +30,18 @@ public:
     // Rebuilds every size-dependent resource (the passes and programs stay).
     void resize(int width, int height);
 
-    // One frame: `view` Final runs the technique; any other view runs the geometry pass and
-    // shows that G-buffer quantity (the same for every technique). Waits for the GPU.
-    FrameSample renderFrame(Technique& technique, ViewMode view);
+    // With counting on, each frame also counts its work (lastWorkCounts). The technique must
+    // have been made with TechniqueOptions::countWork.
+    void setCountWork(bool count) { countWork_ = count; }
 
-    // The last frame's colour as linear floats, rows top to bottom.
+    // One frame: views Final, LightCount and Volumes run the technique (LightCount needs
+    // counting on); the G-buffer views run the geometry pass and show that quantity (the
+    // same for every technique). Waits for the GPU.
+    FrameSample renderFrame(Technique& technique, ViewMode view);
+    const WorkCounts& lastWorkCounts() const { return workCounts_; }
+
+    // The last frame's colour as linear floats, rows top to bottom; for the LightCount view,
+    // the light evaluations of each pixel in all three channels.
     Image readColour() const;
     // Which pixels of the last frame hold a surface.
     std::vector<bool> readCoverage() const;
@@ -38,8 +53,17 @@ public:
 private:
     GpuScene gpuScene_;
     std::unique_ptr<FrameTargets> targets_;
+    void countWork();
+    void drawVolumeOverlay();
+
     gl::Program viewProgram_;
+    gl::Program inRangeProgram_;
+    std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
+    gl::Program overlayProgram_;
     PassProfiler profiler_;
+    bool countWork_ = false;
+    WorkCounts workCounts_;
+    ViewMode lastView_ = ViewMode::Final;
 };
 
 }  // namespace manylights

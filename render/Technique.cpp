@@ -12,8 +12,18 @@ FrameTargets::FrameTargets(int width_, int height_)
       depthStencil("depth stencil", kDepthStencilTarget.format, width_, height_),
       lit("lit colour", GL_RGBA32F, width_, height_),
       litFramebuffer("lit", {&lit}, &depthStencil),
-      gbuffer(width_, height_, depthStencil)
+      gbuffer(width_, height_, depthStencil),
+      lightEvaluations("light evaluations", GL_R32UI, width_, height_),
+      inRangeCounts("in-range lights", GL_R32UI, width_, height_)
 {
+}
+
+gl::Defines shaderDefines(const TechniqueOptions& options)
+{
+    gl::Defines defines;
+    if (options.countWork)
+        defines.emplace_back("COUNT_WORK", "1");
+    return defines;
 }
 
 const std::vector<std::string>& techniqueNames()
@@ -22,16 +32,16 @@ const std::vector<std::string>& techniqueNames()
     return names;
 }
 
-std::unique_ptr<Technique> makeTechnique(std::string_view name)
+std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options)
 {
     if (name == "forward")
-        return std::make_unique<ForwardTechnique>();
+        return std::make_unique<ForwardTechnique>(options);
     if (name == "deferred")
-        return std::make_unique<DeferredTechnique>();
+        return std::make_unique<DeferredTechnique>(options);
     if (name == "volumes")
-        return std::make_unique<VolumesTechnique>();
+        return std::make_unique<VolumesTechnique>(options);
     if (name == "stencil")
-        return std::make_unique<StencilTechnique>();
+        return std::make_unique<StencilTechnique>(options);
     return nullptr;
 }
 

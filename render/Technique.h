@@ -26,7 +26,20 @@ struct FrameTargets {
     gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of SPEC.md §2
     gl::Framebuffer litFramebuffer;  // lit + depthStencil
     GBuffer gbuffer;
+    gl::Texture2D lightEvaluations;  // R32UI: pairs evaluated per pixel, when counting work
+    gl::Texture2D inRangeCounts;     // R32UI: lights whose A·S > 0 per pixel, when counting
 };
+
+// How a technique's shaders are built.
+struct TechniqueOptions {
+    // Shader variants that count the (pixel, light) pairs they evaluate into
+    // FrameTargets::lightEvaluations (--count-work, --view light-count). Costs an atomic per
+    // fragment, so timings taken with it are not the technique's own.
+    bool countWork = false;
+};
+
+// The shader #defines that realise `options`.
+gl::Defines shaderDefines(const TechniqueOptions& options);
 
 class Technique {
 public:
@@ -40,6 +53,6 @@ public:
 // The techniques SPEC.md §3 names, in the order of the docs.
 const std::vector<std::string>& techniqueNames();
 // nullptr when the name is unknown.
-std::unique_ptr<Technique> makeTechnique(std::string_view name);
+std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options = {});
 
 }  // namespace manylights

@@ -1,13 +1,14 @@
 #include "render/Views.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <limits>
 
 namespace manylights {
 
 namespace {
-const std::array<std::pair<ViewMode, std::string_view>, 7> kViews = {{
+const std::array<std::pair<ViewMode, std::string_view>, 9> kViews = {{
     {ViewMode::Final, "final"},
     {ViewMode::Position, "position"},
     {ViewMode::Normal, "normal"},
@@ -15,6 +16,8 @@ const std::array<std::pair<ViewMode, std::string_view>, 7> kViews = {{
     {ViewMode::Specular, "specular"},
     {ViewMode::Emissive, "emissive"},
     {ViewMode::Depth, "depth"},
+    {ViewMode::LightCount, "light-count"},
+    {ViewMode::Volumes, "volumes"},
 }};
 }  // namespace
 
@@ -45,11 +48,30 @@ const std::vector<std::string>& viewModeNames()
     return names;
 }
 
+void heatMapColour(float count, float rgb[3])
+{
+    static const std::array<std::array<float, 3>, 7> kStops = {{
+        {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 1.0f}, {0.0f, 1.0f, 0.0f},
+        {1.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f},
+    }};
+    // Stop k (k ≥ 1) sits at count 4^(k-1): the scale is logarithmic, two bits a stop.
+    float position = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;
+    position = std::clamp(position, 0.0f, static_cast<float>(kStops.size() - 1));
+    const auto below = static_cast<std::size_t>(position);
+    const std::size_t above = std::min(below + 1, kStops.size() - 1);
+    const float t = position - static_cast<float>(below);
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = kStops[below][c] + t * (kStops[above][c] - kStops[below][c]);
+}
+
 Image displayableView(const Image& raw, ViewMode mode, const std::vector<bool>& covered)
 {
     Image shown = raw;
     const std::size_t pixels = static_cast<std::size_t>(raw.width) * raw.height;
-    if (mode == ViewMode::Normal) {
+    if (mode == ViewMode::LightCount) {
+        for (std::size_t i = 0; i < pixels; ++i)
+            heatMapColour(raw.rgb[i * 3], &shown.rgb[i * 3]);
+    } else if (mode == ViewMode::Normal) {
         for (std::size_t i = 0; i < pixels; ++i)
             if (covered[i])
                 for (int c = 0; c < 3; ++c)

@@ -12,9 +12,9 @@ constexpr GLint kVolumeShape = 1;
 constexpr GLuint kVolumeLightsBinding = 1;
 }  // namespace
 
-VolumeDrawer::VolumeDrawer()
+VolumeDrawer::VolumeDrawer(const gl::Defines& defines)
     : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}}),
-      lighting_("light volumes", {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume.frag"}}),
+      lighting_("light volumes", {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume.frag"}}, defines),
       vertexArray_("light volume meshes")
 {
     const Mesh sphere = makeBoundingSphere();

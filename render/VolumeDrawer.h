@@ -17,7 +17,7 @@ enum class VolumeShape : int { Sphere = 0, Cone = 1, FullScreen = 2 };
 
 class VolumeDrawer {
 public:
-    VolumeDrawer();
+    explicit VolumeDrawer(const gl::Defines& defines = {});
 
     // Rebuilds the per-shape light lists when the scene's lights changed.
     void prepare(const GpuScene& scene);

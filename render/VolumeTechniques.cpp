@@ -66,7 +66,10 @@ void VolumesTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
     restoreDefaultState();
 }
 
-StencilTechnique::StencilTechnique() : stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}}) {}
+StencilTechnique::StencilTechnique(const TechniqueOptions& options)
+    : drawer_(shaderDefines(options)), stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
+{
+}
 
 void StencilTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
 {

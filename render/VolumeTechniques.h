@@ -15,6 +15,7 @@ namespace manylights {
 // every pixel they should.
 class VolumesTechnique : public Technique {
 public:
+    explicit VolumesTechnique(const TechniqueOptions& options) : drawer_(shaderDefines(options)) {}
     std::string_view name() const override { return "volumes"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 
@@ -26,7 +27,7 @@ private:
 // then the lighting pass shades only those (and clears their mark for the next light).
 class StencilTechnique : public Technique {
 public:
-    StencilTechnique();
+    explicit StencilTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "stencil"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 

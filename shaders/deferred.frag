@@ -13,5 +13,6 @@ void main()
     vec3 color = shadeGlobal(s, V);
     for (uint i = 0u; i < frame.counts.x; ++i)
         color += shadeLocal(lights[i], s, V);
+    recordLightEvaluations(frame.counts.x);
     outColor = vec4(color, 1.0);
 }

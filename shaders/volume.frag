@@ -11,4 +11,5 @@ void main()
 {
     Surface s = gbufferSurface(ivec2(gl_FragCoord.xy));
     outColor = vec4(shadeLocal(lights[lightIndex], s, viewVector(s.position)), 0.0);
+    recordLightEvaluations(1u);
 }

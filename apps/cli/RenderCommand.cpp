@@ -37,7 +37,8 @@ Statistics summarize(std::vector<double> values)
 }
 
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
-                              const std::vector<FrameSample>& frames, const std::string& device)
+                              const std::vector<FrameSample>& frames, const std::string& device,
+                              const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -82,6 +83,10 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
         passes.push_back(pass);
     }
     stats["passes"] = passes;
+    if (work) {
+        stats["light_evaluations"] = work->lightEvaluations;
+        stats["in_range_pairs"] = work->inRangePairs;
+    }
     return stats;
 }
 
@@ -118,7 +123,9 @@ void runRender(const RenderOptions& options)
 
     HeadlessContext context({.debug = defaultDebugContext()});
     Renderer renderer(scene, lights, options.width, options.height);
-    std::unique_ptr<Technique> technique = makeTechnique(options.technique);
+    const bool countWork = options.countWork || options.view == ViewMode::LightCount;
+    renderer.setCountWork(countWork);
+    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 
     const bool measuring = !options.statsPath.empty();
@@ -132,13 +139,16 @@ void runRender(const RenderOptions& options)
     if (endsWith(options.output, ".pfm")) {
         writePfm(image, options.output);
     } else {
-        if (options.view != ViewMode::Final)
+        if (options.view != ViewMode::Final && options.view != ViewMode::Volumes)
             image = displayableView(image, options.view, renderer.readCoverage());
         writePng(image, options.output);
     }
     if (measuring)
         writeTextAtomically(options.statsPath,
-                            statisticsJson(options, scene, lights.size(), frames, context.description()).dump(2) + "\n");
+                            statisticsJson(options, scene, lights.size(), frames, context.description(),
+                                           countWork ? &renderer.lastWorkCounts() : nullptr)
+                                    .dump(2) +
+                                "\n");
 }
 
 }  // namespace manylights

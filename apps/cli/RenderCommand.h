@@ -18,6 +18,7 @@ struct RenderOptions {
     std::optional<int> lights;
     int frames = 1;
     std::string statsPath;
+    bool countWork = false;
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

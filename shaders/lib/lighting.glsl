@@ -31,26 +31,50 @@ vec3 shadeGlobal(Surface s, vec3 V)
     return color;
 }
 
-// intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
-vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
+// A(d) · S of a point or spot light at `position`, and the unit direction L towards it.
+// Zero where the light does not reach; the culling of every technique may only skip pairs
+// for which this is zero.
+float lightReach(GpuLight light, vec3 position, out vec3 L)
 {
-    vec3 v = s.position - light.positionRadius.xyz;
+    vec3 v = position - light.positionRadius.xyz;
     float d = length(v);
+    L = vec3(0.0);
     // At d = 0 the direction to the light is undefined; the point gets nothing from it.
     if (d >= light.positionRadius.w || d == 0.0)
-        return vec3(0.0);
+        return 0.0;
     vec3 toSurface = v / d;
+    L = -toSurface;
     float A = light.attenuation.w == 0.0
                   ? classicAttenuation(d, light.positionRadius.w, light.attenuation.x, light.attenuation.y,
                                        light.attenuation.z)
                   : rangeAttenuation(d, light.attenuation.x);
     float S = spotFactor(dot(toSurface, light.spotAxisCosCutoff.xyz), light.spotAxisCosCutoff.w,
                          light.intensityExponent.w);
-    float AS = A * S;
-    if (AS == 0.0)
-        return vec3(0.0);
-    return light.intensityExponent.rgb * blinnPhong(s, -toSurface, V) * AS;
+    return A * S;
 }
+
+// intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
+vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
+{
+    vec3 L;
+    float reach = lightReach(light, s.position, L);
+    if (reach == 0.0)
+        return vec3(0.0);
+    return light.intensityExponent.rgb * blinnPhong(s, L, V) * reach;
+}
+
+// Work counting (--count-work): the shaders of each technique report how many (pixel,
+// light) pairs they evaluated, into an image the renderer sums. Helper invocations' atomics
+// have no effect, so only real pixels count.
+#ifdef COUNT_WORK
+layout(binding = 0, r32ui) uniform coherent uimage2D lightEvaluations;
+void recordLightEvaluations(uint count)
+{
+    imageAtomicAdd(lightEvaluations, ivec2(gl_FragCoord.xy), count);
+}
+#else
+void recordLightEvaluations(uint count) {}
+#endif
 
 vec3 viewVector(vec3 position)
 {

@@ -88,7 +88,9 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"light_beyond_far_plane", kScenes + "light_beyond_far_plane.json",
                                     {"--size", "160x120"}},
                       AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
-                      AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}}),
+                      AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
+                      AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json",
+                                    {"--size", "160x90"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace

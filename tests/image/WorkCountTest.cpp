@@ -55,3 +55,95 @@ TEST(WorkCounts, DeferredShadesEachPixelOnceForwardShadesOverdraw)
 
 }  // namespace
 }  // namespace manylights
+
+namespace manylights {
+namespace {
+
+nlohmann::json countWork(const std::filesystem::path& dir, const std::string& scene, const std::string& technique,
+                         const std::string& size)
+{
+    const std::filesystem::path stats = dir / (technique + "-work.json");
+    std::vector<std::string> args = {"render"};
+    if (!scene.empty())
+        args.push_back(scene);
+    args.insert(args.end(), {"-o", (dir / (technique + ".png")).string(), "--size", size, "--technique", technique,
+                             "--count-work", "--stats", stats.string()});
+    test::runCliOrFail(args);
+    std::ifstream in(stats);
+    return nlohmann::json::parse(in);
+}
+
+// Light evaluations are counted by the shaders themselves (an atomic add per fragment of
+// the number of lights it evaluated), so they are exact on every driver. Fragment-shader
+// invocations are not a usable bound here: llvmpipe counts whole 4x4 blocks, and counts
+// the stencil pass, which has no fragment shader, too.
+TEST(WorkCounts, VolumeCullingOnManySmallLights)
+{
+    const auto dir = test::scratchDirectory();
+    const std::string scene = MANYLIGHTS_SOURCE_DIR "/tests/scenes/small_lights_behind_walls.json";
+    const nlohmann::json deferred = countWork(dir, scene, "deferred", "320x180");
+    const nlohmann::json volumes = countWork(dir, scene, "volumes", "320x180");
+    const nlohmann::json stencil = countWork(dir, scene, "stencil", "320x180");
+    const auto inRange = deferred["in_range_pairs"].get<std::uint64_t>();
+    ASSERT_GT(inRange, 1000u) << "the scene should put many lights on visible surfaces";
+    EXPECT_EQ(volumes["in_range_pairs"], inRange);
+    EXPECT_EQ(stencil["in_range_pairs"], inRange);
+
+    const auto deferredWork = deferred["light_evaluations"].get<std::uint64_t>();
+    const auto volumesWork = volumes["light_evaluations"].get<std::uint64_t>();
+    const auto stencilWork = stencil["light_evaluations"].get<std::uint64_t>();
+    // Deferred evaluates every light at every covered pixel, exactly.
+    EXPECT_EQ(deferredWork % 2000u, 0u);
+    // No technique may do less than the pairs in range (that would drop light).
+    EXPECT_GE(stencilWork, inRange);
+    // Stencil shades only surfaces inside a volume: the bounding shapes' slack over the true
+    // spheres and the silhouette pixels are all it adds.
+    EXPECT_LE(stencilWork, inRange * 12 / 10);
+    // Volumes also shades the walls in front of the lights behind them.
+    EXPECT_LE(2 * stencilWork, volumesWork);
+    EXPECT_LE(volumesWork, deferredWork);
+}
+
+TEST(WorkCounts, DefaultSceneEvaluationsPerTechnique)
+{
+    const auto dir = test::scratchDirectory();
+    const nlohmann::json deferred = countWork(dir, "", "deferred", "160x90");
+    const nlohmann::json forward = countWork(dir, "", "forward", "160x90");
+    const nlohmann::json stencil = countWork(dir, "", "stencil", "160x90");
+    const auto inRange = deferred["in_range_pairs"].get<std::uint64_t>();
+    EXPECT_EQ(forward["in_range_pairs"], inRange);
+    // Forward evaluates every light for every fragment it shades, hidden ones included.
+    EXPECT_GE(forward["light_evaluations"].get<std::uint64_t>(), deferred["light_evaluations"].get<std::uint64_t>());
+    EXPECT_GE(stencil["light_evaluations"].get<std::uint64_t>(), inRange);
+    EXPECT_LE(stencil["light_evaluations"].get<std::uint64_t>(), inRange * 12 / 10);
+}
+
+TEST(Views, LightCountShowsEvaluationsPerPixel)
+{
+    const auto dir = test::scratchDirectory();
+    // Deferred evaluates all 256 lights of the default scene at each covered pixel, and
+    // none at the background.
+    const Image counts = renderPfm("", dir / "count.pfm", {"--size", "96x54", "--view", "light-count"});
+    const Image normals = renderPfm("", dir / "normal.pfm", {"--size", "96x54", "--view", "normal"});
+    for (std::size_t i = 0; i < counts.rgb.size(); i += 3) {
+        const bool covered = normals.rgb[i] != 0.0f || normals.rgb[i + 1] != 0.0f || normals.rgb[i + 2] != 0.0f;
+        ASSERT_EQ(counts.rgb[i], covered ? 256.0f : 0.0f) << "pixel " << i / 3;
+    }
+}
+
+TEST(Views, VolumesViewDrawsWireframesOverTheFinalImage)
+{
+    const auto dir = test::scratchDirectory();
+    const Image final = renderPfm("", dir / "final.pfm", {"--size", "96x54", "--technique", "stencil"});
+    const Image volumes =
+        renderPfm("", dir / "volumes.pfm", {"--size", "96x54", "--technique", "stencil", "--view", "volumes"});
+    int changed = 0;
+    for (std::size_t i = 0; i < final.rgb.size(); ++i)
+        changed += final.rgb[i] != volumes.rgb[i];
+    // The wireframes cover part of the image, not all of it.
+    EXPECT_GT(changed, 200);
+    EXPECT_LT(changed, static_cast<int>(final.rgb.size()) * 9 / 10);
+}
+
+}  // namespace
+}  // namespace manylights
