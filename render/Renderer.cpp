@@ -30,8 +30,7 @@ void checkSize(int width, int height)
 
 Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height)
     : gpuScene_(scene, lights),
-      viewProgram_("gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}}),
-      inRangeProgram_("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}})
+      viewProgram_("gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}})
 {
     resize(width, height);
 }
@@ -101,6 +100,8 @@ void Renderer::countWork()
     targets_->gbuffer.bindForReading();
     targets_->depthStencil.bindUnit(5);
     glBindImageTexture(1, targets_->inRangeCounts.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    if (!inRangeProgram_)
+        inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}});
     inRangeProgram_.use();
     constexpr int kGroupSize = 8;  // local_size of shaders/in_range.comp
     glDispatchCompute(static_cast<GLuint>((width() + kGroupSize - 1) / kGroupSize),

@@ -57,7 +57,7 @@ private:
     void drawVolumeOverlay();
 
     gl::Program viewProgram_;
-    gl::Program inRangeProgram_;
+    gl::Program inRangeProgram_;  // made on first use of work counting
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
     gl::Program overlayProgram_;
     PassProfiler profiler_;

@@ -16,7 +16,11 @@ for view in position normal diffuse specular emissive depth; do
 done
 
 # The techniques side by side (docs/techniques.md).
-for technique in forward deferred; do
+for technique in forward deferred volumes stencil; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
 done
+for technique in deferred volumes stencil; do
+  $ml render -o $out/light-count-$technique.png --size 640x360 --technique $technique --view light-count
+done
+$ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes
 echo "docs images written to $out"

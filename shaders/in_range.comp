@@ -17,11 +17,9 @@ void main()
     uint count = 0u;
     if (texelFetch(sceneDepth, pixel, 0).r < 1.0) {
         vec3 position = texelFetch(gPositionShininess, pixel, 0).xyz;
-        for (uint i = 0u; i < frame.counts.x; ++i) {
-            vec3 L;
-            if (lightReach(lights[i], position, L) > 0.0)
+        for (uint i = 0u; i < frame.counts.x; ++i)
+            if (lightReach(lights[i], position).w > 0.0)
                 ++count;
-        }
     }
     imageStore(inRangeCounts, pixel, uvec4(count));
 }

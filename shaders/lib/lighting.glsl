@@ -31,36 +31,33 @@ vec3 shadeGlobal(Surface s, vec3 V)
     return color;
 }
 
-// A(d) · S of a point or spot light at `position`, and the unit direction L towards it.
-// Zero where the light does not reach; the culling of every technique may only skip pairs
-// for which this is zero.
-float lightReach(GpuLight light, vec3 position, out vec3 L)
+// The unit direction L towards a point or spot light from `position` (xyz), and A(d) · S
+// (w). w is zero where the light does not reach; the culling of every technique may only
+// skip pairs for which it is zero.
+vec4 lightReach(GpuLight light, vec3 position)
 {
     vec3 v = position - light.positionRadius.xyz;
     float d = length(v);
-    L = vec3(0.0);
     // At d = 0 the direction to the light is undefined; the point gets nothing from it.
     if (d >= light.positionRadius.w || d == 0.0)
-        return 0.0;
+        return vec4(0.0);
     vec3 toSurface = v / d;
-    L = -toSurface;
     float A = light.attenuation.w == 0.0
                   ? classicAttenuation(d, light.positionRadius.w, light.attenuation.x, light.attenuation.y,
                                        light.attenuation.z)
                   : rangeAttenuation(d, light.attenuation.x);
     float S = spotFactor(dot(toSurface, light.spotAxisCosCutoff.xyz), light.spotAxisCosCutoff.w,
                          light.intensityExponent.w);
-    return A * S;
+    return vec4(-toSurface, A * S);
 }
 
 // intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
 vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
 {
-    vec3 L;
-    float reach = lightReach(light, s.position, L);
-    if (reach == 0.0)
+    vec4 reach = lightReach(light, s.position);
+    if (reach.w == 0.0)
         return vec3(0.0);
-    return light.intensityExponent.rgb * blinnPhong(s, L, V) * reach;
+    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w;
 }
 
 // Work counting (--count-work): the shaders of each technique report how many (pixel,
