@@ -22,5 +22,6 @@ done
 for technique in deferred volumes stencil; do
   $ml render -o $out/light-count-$technique.png --size 640x360 --technique $technique --view light-count
 done
-$ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes
+# A few lights, so that the scene shows between the wireframes.
+$ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes --lights 24
 echo "docs images written to $out"

@@ -120,6 +120,21 @@ TEST(Cli, UnwritableOutputIsExitOneWithNothingLeft)
     EXPECT_NE(result.stderrText.find("out.png"), std::string::npos) << result.stderrText;
 }
 
+TEST(Cli, NoOpenGLContextIsExitOneWithTheReason)
+{
+    // Mesa cannot load a driver named "nonexistent", so every EGL platform fails to
+    // initialise. (Mesa itself warns on stderr too, so only our line is looked for.)
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "32x18"},
+                                                     "GALLIUM_DRIVER=nonexistent MESA_LOADER_DRIVER_OVERRIDE=nonexistent");
+    if (result.exitCode == 0)
+        GTEST_SKIP() << "this GL driver ignores Mesa's driver override";
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.stderrText.find("manylights: cannot create an OpenGL 4.5 core context ("), std::string::npos)
+        << result.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
 TEST(Cli, MissingOutputOptionIsUsageError)
 {
     EXPECT_EQ(runExecutable({"render"}).exitCode, 2);

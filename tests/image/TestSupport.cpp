@@ -52,11 +52,11 @@ Image renderPfm(const std::string& scene, const std::filesystem::path& output, c
     return readPfm(output);
 }
 
-ProcessResult runExecutable(const std::vector<std::string>& args)
+ProcessResult runExecutable(const std::vector<std::string>& args, const std::string& environment)
 {
     const std::filesystem::path errors = std::filesystem::temp_directory_path() /
                                          ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
-    std::string command = "'" MANYLIGHTS_EXE "'";
+    std::string command = environment + " '" MANYLIGHTS_EXE "'";
     for (const std::string& arg : args)
         command += " '" + arg + "'";
     command += " >/dev/null 2>'" + errors.string() + "' </dev/null";

@@ -28,7 +28,8 @@ struct ProcessResult {
     std::string stderrText;
 };
 
-// Runs the real executable as a child process (so a crash is seen as a crash).
-ProcessResult runExecutable(const std::vector<std::string>& args);
+// Runs the real executable as a child process (so a crash is seen as a crash), with
+// `environment` ("NAME=value ...") added to its environment.
+ProcessResult runExecutable(const std::vector<std::string>& args, const std::string& environment = "");
 
 }  // namespace manylights::test
