@@ -35,8 +35,9 @@ GpuLight packLight(const Light& light, float attenuationThreshold)
     return packed;
 }
 
-FrameUniforms makeFrameUniforms(const Scene& scene, float aspect, std::uint32_t lightCount)
+FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::uint32_t lightCount)
 {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const Camera& camera = scene.camera;
     FrameUniforms frame{};
     frame.view = glm::lookAt(camera.eye, camera.lookAt, camera.up);
@@ -52,6 +53,10 @@ FrameUniforms makeFrameUniforms(const Scene& scene, float aspect, std::uint32_t 
     }
     frame.background = glm::vec4(scene.background, 1.0f);
     frame.counts = glm::uvec4(lightCount, 0u, 0u, 0u);
+    const float tanHalfFovY = std::tan(glm::radians(camera.fovYDegrees) / 2.0f);
+    frame.projection = glm::vec4(tanHalfFovY * aspect, tanHalfFovY, camera.nearPlane, camera.farPlane);
+    frame.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width),
+                               1.0f / static_cast<float>(height));
     return frame;
 }
 
@@ -82,12 +87,12 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         packedLights_.push_back(packLight(light, scene.attenuationThreshold));
     lightBuffer_ = gl::Buffer::fromSpan<GpuLight>("lights", packedLights_);
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
-    setAspect(1.0f);
+    setViewport(1, 1);
 }
 
-void GpuScene::setAspect(float aspect)
+void GpuScene::setViewport(int width, int height)
 {
-    frame_ = makeFrameUniforms(scene_, aspect, static_cast<std::uint32_t>(lightCount_));
+    frame_ = makeFrameUniforms(scene_, width, height, static_cast<std::uint32_t>(lightCount_));
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
 }
 

@@ -38,10 +38,12 @@ struct FrameUniforms {
     glm::vec4 directionalIntensity;
     glm::vec4 background;
     glm::uvec4 counts;
+    glm::vec4 projection;  // tan(fovX / 2), tan(fovY / 2), near, far
+    glm::vec4 viewport;    // width, height, 1 / width, 1 / height
 };
 
-// The camera matrices for an image of the given aspect ratio (width / height).
-FrameUniforms makeFrameUniforms(const Scene& scene, float aspect, std::uint32_t lightCount);
+// The camera matrices for an image of the given size.
+FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::uint32_t lightCount);
 
 class GpuScene {
 public:
@@ -53,7 +55,7 @@ public:
     // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
     // shaders/lib/material.glsl.
     void drawObjects(const gl::Program& program) const;
-    void setAspect(float aspect);
+    void setViewport(int width, int height);
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }

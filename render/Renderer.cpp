@@ -40,7 +40,7 @@ void Renderer::resize(int width, int height)
     checkSize(width, height);
     targets_.reset();  // free the old targets before allocating the new ones
     targets_ = std::make_unique<FrameTargets>(width, height);
-    gpuScene_.setAspect(static_cast<float>(width) / static_cast<float>(height));
+    gpuScene_.setViewport(width, height);
 }
 
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)

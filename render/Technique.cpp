@@ -1,7 +1,10 @@
 #include "render/Technique.h"
 
+#include "render/ClusteredTechnique.h"
 #include "render/DeferredTechnique.h"
 #include "render/ForwardTechnique.h"
+#include "render/TiledQuadsTechnique.h"
+#include "render/TiledTechnique.h"
 #include "render/VolumeTechniques.h"
 
 namespace manylights {
@@ -28,7 +31,8 @@ gl::Defines shaderDefines(const TechniqueOptions& options)
 
 const std::vector<std::string>& techniqueNames()
 {
-    static const std::vector<std::string> names = {"forward", "deferred", "volumes", "stencil"};
+    static const std::vector<std::string> names = {"forward", "deferred", "volumes", "stencil",
+                                                   "tiled-quads", "tiled", "clustered"};
     return names;
 }
 
@@ -42,6 +46,12 @@ std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueO
         return std::make_unique<VolumesTechnique>(options);
     if (name == "stencil")
         return std::make_unique<StencilTechnique>(options);
+    if (name == "tiled-quads")
+        return std::make_unique<TiledQuadsTechnique>(options);
+    if (name == "tiled")
+        return std::make_unique<TiledTechnique>(options);
+    if (name == "clustered")
+        return std::make_unique<ClusteredTechnique>(options);
     return nullptr;
 }
 

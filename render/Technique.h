@@ -41,10 +41,18 @@ struct TechniqueOptions {
 // The shader #defines that realise `options`.
 gl::Defines shaderDefines(const TechniqueOptions& options);
 
+// A technique-specific figure of the last frame for --stats (e.g. tiles whose light list
+// overflowed).
+struct TechniqueCounter {
+    std::string name;
+    double value;
+};
+
 class Technique {
 public:
     virtual ~Technique() = default;
     virtual std::string_view name() const = 0;
+    virtual std::vector<TechniqueCounter> counters() const { return {}; }
     // Renders the frame into targets.lit (already cleared to the background colour) and
     // leaves the scene's depth in targets.depthStencil.
     virtual void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) = 0;

@@ -53,6 +53,11 @@ constexpr float kMaxSpotTiltDegrees = 30.0f;
 void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vector<Light>& out)
 {
     Random random(set.seed);
+    // The drawn range is scaled after the draw (not the interval before it), so that a light's
+    // range at any count is exactly its range at the reference count times this factor.
+    float rangeScale = 1.0f;
+    if (set.rangeReferenceCount && count > 0)
+        rangeScale = static_cast<float>(rangeScaleFor(*set.rangeReferenceCount, count));
     const std::string prefix = "set" + std::to_string(setIndex) + "[";
     for (int i = 0; i < count; ++i) {
         Light light;
@@ -62,7 +67,7 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
         light.position.x = random.in({set.boxMin.x, set.boxMax.x});
         light.position.y = random.in({set.boxMin.y, set.boxMax.y});
         light.position.z = random.in({set.boxMin.z, set.boxMax.z});
-        light.range = random.in(set.range);
+        light.range = random.in(set.range) * rangeScale;
         const glm::vec3 colour = hueToRgb(random.unit());
         light.intensity = colour * random.in(set.intensity);
         if (set.type == LightType::Spot) {
@@ -80,6 +85,12 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
 }
 
 }  // namespace
+
+double rangeScaleFor(int referenceCount, int count)
+{
+    ML_ASSERT(referenceCount > 0 && count > 0);
+    return std::sqrt(static_cast<double>(referenceCount) / static_cast<double>(count));
+}
 
 std::vector<int> distributeLightCount(const std::vector<LightSet>& sets, int total)
 {

@@ -72,6 +72,10 @@ struct LightSet {
     Interval intensity{1.0f, 1.0f};
     Interval cutoffDegrees{20.0f, 45.0f};  // spot sets only
     Interval exponent{0.0f, 8.0f};         // spot sets only
+    // When set, each light's range is multiplied by sqrt(rangeReferenceCount / count), count
+    // being the set's count after --lights: the lights' total covered area stays that of
+    // `range` at the reference count, so lights per pixel stay about constant in a sweep.
+    std::optional<int> rangeReferenceCount;
 };
 
 struct Material {

@@ -537,7 +537,8 @@ private:
         const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
         if (json.is_number_unsigned()) {
             const auto value = json.get<std::uint64_t>();
-            if (value > static_cast<std::uint64_t>(hi))
+            // nlohmann stores 0 and every positive literal as unsigned, so lo applies here too.
+            if (value > static_cast<std::uint64_t>(hi) || static_cast<std::int64_t>(value) < lo)
                 fail(node, "must be in " + range + ", got " + std::to_string(value));
             return static_cast<std::int64_t>(value);
         }
@@ -798,9 +799,10 @@ private:
             set.type = lightType(*type, "light set");
         if (set.type == LightType::Point) {
             rejectSpotKeys(node, {"cutoff", "exponent"}, "light sets");
-            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "intensity"});
+            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity"});
         } else {
-            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "intensity", "cutoff", "exponent"});
+            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
+                              "cutoff", "exponent"});
         }
         set.count = static_cast<int>(integer(required(node, "count"), 0, kMaxSetLights));
         if (const auto seed = member(node, "seed"))
@@ -817,6 +819,8 @@ private:
             }
         }
         set.range = interval(required(node, "range"), &Loader::positive);
+        if (const auto reference = member(node, "range_reference_count"))
+            set.rangeReferenceCount = static_cast<int>(integer(*reference, 1, kMaxSetLights));
         set.intensity = interval(required(node, "intensity"), &Loader::nonNegative);
         if (set.type == LightType::Spot) {
             if (const auto cutoffNode = member(node, "cutoff"))

@@ -24,4 +24,6 @@ for technique in deferred volumes stencil; do
 done
 # A few lights, so that the scene shows between the wireframes.
 $ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes --lights 24
+# The benchmark scene of docs/performance.md at its reference light count.
+$ml render bench/courtyard.json -o $out/courtyard.png --size 640x360 --lights 1024
 echo "docs images written to $out"

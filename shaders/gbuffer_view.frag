@@ -19,7 +19,7 @@ void main()
     case 4: value = s.specular; break;
     case 5: value = s.emissive; break;
     // View-space distance along the view axis (SPEC.md §3).
-    case 6: value = vec3(dot(s.position - frame.eye.xyz, frame.viewAxis.xyz)); break;
+    case 6: value = vec3(viewDepth(s.position)); break;
     }
     outColor = vec4(value, 1.0);
 }

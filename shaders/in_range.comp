@@ -2,6 +2,7 @@
 // in_range_pairs (SPEC.md §3): for every pixel holding a surface, how many lights reach it
 // (A·S > 0). The least work any technique can do; a technique's culling efficiency is this
 // over its light evaluations.
+#define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 

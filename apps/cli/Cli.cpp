@@ -2,10 +2,12 @@
 
 #include <cstdio>
 #include <new>
-#include <regex>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "apps/cli/BenchCommand.h"
+#include "apps/cli/CommandSupport.h"
 #include "apps/cli/RenderCommand.h"
 #include "render/Technique.h"
 #include "core/Error.h"
@@ -16,23 +18,24 @@ namespace {
 
 constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
-// Far beyond any display, and small enough that width · height · bytes per pixel stays
-// within 64-bit sizes; the GL implementation's own limit is checked when rendering.
-constexpr int kMaxImageDimension = 32768;
 
-// "WxH" with both in 1..kMaxImageDimension.
-std::string parseSize(const std::string& text, int& width, int& height)
+// Runs a parsed command: a user-facing failure is one line on stderr and exit status 1.
+template <typename Command>
+int reportingErrors(Command command, const std::string& activity)
 {
-    static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
-    std::smatch match;
-    if (!std::regex_match(text, match, pattern))
-        return "--size must look like 1280x720, got '" + text + "'";
-    width = std::stoi(match[1]);
-    height = std::stoi(match[2]);
-    if (width < 1 || height < 1 || width > kMaxImageDimension || height > kMaxImageDimension)
-        return "--size must be between 1x1 and " + std::to_string(kMaxImageDimension) + "x" +
-               std::to_string(kMaxImageDimension) + ", got " + text;
-    return {};
+    try {
+        command();
+    } catch (const Error& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "manylights: out of memory %s\n", activity.c_str());
+        return kExitFailure;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    }
+    return 0;
 }
 
 }  // namespace
@@ -64,6 +67,9 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 
+    BenchOptions bench;
+    CLI::App* benchCommand = addBenchCommand(app, bench);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& help) {
@@ -73,10 +79,16 @@ int runCli(int argc, const char* const* argv)
         return kExitUsage;
     }
 
-    if (std::string problem = parseSize(size, render.width, render.height); !problem.empty()) {
+    if (benchCommand->parsed())
+        return reportingErrors([&] { runBench(bench); }, "benchmarking");
+
+    ImageSize renderSize;
+    if (std::string problem = parseSize(size, renderSize); !problem.empty()) {
         std::fprintf(stderr, "manylights: %s\n", problem.c_str());
         return kExitUsage;
     }
+    render.width = renderSize.width;
+    render.height = renderSize.height;
     const bool pfm = render.output.size() > 4 && render.output.ends_with(".pfm");
     const bool png = render.output.size() > 4 && render.output.ends_with(".png");
     if (!pfm && !png) {
@@ -85,19 +97,8 @@ int runCli(int argc, const char* const* argv)
     }
     render.view = *parseViewMode(view);
 
-    try {
-        runRender(render);
-    } catch (const Error& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "manylights: out of memory rendering %dx%d\n", render.width, render.height);
-        return kExitFailure;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    }
-    return 0;
+    return reportingErrors([&] { runRender(render); },
+                           "rendering " + std::to_string(render.width) + "x" + std::to_string(render.height));
 }
 
 }  // namespace manylights

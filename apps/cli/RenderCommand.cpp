@@ -1,12 +1,8 @@
 #include "apps/cli/RenderCommand.h"
 
-#include <algorithm>
-#include <cstdio>
-#include <fstream>
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
+#include "apps/cli/CommandSupport.h"
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
 #include "scene/DefaultScene.h"
@@ -22,23 +18,9 @@ namespace {
 // shader compilation and first-use allocations in the driver.
 constexpr int kWarmupFrames = 1;
 
-struct Statistics {
-    double median;
-    double min;
-    double max;
-};
-
-Statistics summarize(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {median, values.front(), values.back()};
-}
-
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
                               const std::vector<FrameSample>& frames, const std::string& device,
-                              const WorkCounts* work)
+                              const Technique& technique, const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -83,33 +65,13 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
         passes.push_back(pass);
     }
     stats["passes"] = passes;
+    for (const TechniqueCounter& counter : technique.counters())
+        stats[counter.name] = counter.value;
     if (work) {
         stats["light_evaluations"] = work->lightEvaluations;
         stats["in_range_pairs"] = work->inRangePairs;
     }
     return stats;
-}
-
-void writeTextAtomically(const std::string& path, const std::string& text)
-{
-    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out.flush()) {
-            std::remove(temporary.c_str());
-            throw Error(path + ": cannot write statistics");
-        }
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw Error(path + ": cannot write statistics");
-    }
-}
-
-bool endsWith(const std::string& text, const std::string& suffix)
-{
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -145,10 +107,11 @@ void runRender(const RenderOptions& options)
     }
     if (measuring)
         writeTextAtomically(options.statsPath,
-                            statisticsJson(options, scene, lights.size(), frames, context.description(),
+                            statisticsJson(options, scene, lights.size(), frames, context.description(), *technique,
                                            countWork ? &renderer.lastWorkCounts() : nullptr)
                                     .dump(2) +
-                                "\n");
+                                "\n",
+                            "statistics");
 }
 
 }  // namespace manylights

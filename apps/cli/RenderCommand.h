@@ -12,7 +12,7 @@ struct RenderOptions {
     std::string output;
     int width = 1280;
     int height = 720;
-    std::string technique = "deferred";
+    std::string technique = "clustered";
     ViewMode view = ViewMode::Final;
     double time = 0.0;
     std::optional<int> lights;

@@ -10,4 +10,12 @@ layout(std140, binding = 0) uniform Frame {
     vec4 directionalIntensity;  // rgb; zero when the scene has none
     vec4 background;            // rgb
     uvec4 counts;               // x: number of local lights
+    vec4 projection;            // x: tan(horizontal fov / 2), y: tan(vertical fov / 2), z: near, w: far
+    vec4 viewport;              // x: width, y: height in pixels; z, w: their reciprocals
 } frame;
+
+// Distance from the eye along the view axis (the depth the techniques cull with).
+float viewDepth(vec3 worldPosition)
+{
+    return dot(worldPosition - frame.eye.xyz, frame.viewAxis.xyz);
+}

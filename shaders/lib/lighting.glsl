@@ -63,14 +63,23 @@ vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
 // Work counting (--count-work): the shaders of each technique report how many (pixel,
 // light) pairs they evaluated, into an image the renderer sums. Helper invocations' atomics
 // have no effect, so only real pixels count.
+// Compute shaders name the pixel; fragment shaders may leave it to gl_FragCoord (compute
+// shaders define LIGHTING_IN_COMPUTE before including this file, where gl_FragCoord does
+// not exist).
 #ifdef COUNT_WORK
 layout(binding = 0, r32ui) uniform coherent uimage2D lightEvaluations;
-void recordLightEvaluations(uint count)
+void recordLightEvaluationsAt(ivec2 pixel, uint count)
 {
-    imageAtomicAdd(lightEvaluations, ivec2(gl_FragCoord.xy), count);
+    imageAtomicAdd(lightEvaluations, pixel, count);
 }
 #else
-void recordLightEvaluations(uint count) {}
+void recordLightEvaluationsAt(ivec2 pixel, uint count) {}
+#endif
+#ifndef LIGHTING_IN_COMPUTE
+void recordLightEvaluations(uint count)
+{
+    recordLightEvaluationsAt(ivec2(gl_FragCoord.xy), count);
+}
 #endif
 
 vec3 viewVector(vec3 position)

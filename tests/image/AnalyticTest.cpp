@@ -12,6 +12,7 @@
 // wrong place) is off by orders of magnitude more.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -229,8 +230,13 @@ TEST_P(Analytic, EmissiveAndAmbientWithoutLights)
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[2], 0.9f);
 }
 
+// Test names allow only letters, digits and '_': "tiled-quads" becomes tiled_quads.
 INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()),
-                         [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                             std::string name = param.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace manylights

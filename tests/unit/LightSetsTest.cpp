@@ -206,6 +206,58 @@ TEST(LightSets, TotalOverridesCountsInProportion)
     EXPECT_TRUE(expandLights(scene, 0).empty());
 }
 
+// range_reference_count: the drawn range times sqrt(reference / count), count being the
+// set's count after --lights; every other draw is untouched.
+TEST(LightSets, ReferenceCountScalesRangesBySquareRoot)
+{
+    LightSet plain = pointSet(1024, 21);
+    LightSet scaled = plain;
+    scaled.rangeReferenceCount = 1024;
+    struct Case {
+        int count;
+        float factor;  // sqrt(1024 / count)
+    };
+    // Powers of four give exact factors; 1000 an irrational one, computed as the loader does.
+    const Case cases[] = {{1024, 1.0f},
+                          {4096, 0.5f},
+                          {256, 2.0f},
+                          {65536, 0.125f},
+                          {1000, static_cast<float>(std::sqrt(1024.0 / 1000.0))}};
+    for (const Case& c : cases) {
+        const std::vector<Light> expected = expandLights(sceneWith({plain}), c.count);
+        const std::vector<Light> actual = expandLights(sceneWith({scaled}), c.count);
+        ASSERT_EQ(actual.size(), static_cast<std::size_t>(c.count));
+        for (std::size_t i = 0; i < actual.size(); ++i) {
+            EXPECT_EQ(actual[i].range, expected[i].range * c.factor) << "count " << c.count << " light " << i;
+            EXPECT_EQ(actual[i].position, expected[i].position);
+            EXPECT_EQ(actual[i].intensity, expected[i].intensity);
+        }
+    }
+    // Without --lights the set's own count is the count: 1024 here, so the ranges are as drawn.
+    const std::vector<Light> own = expandLights(sceneWith({scaled}));
+    const std::vector<Light> ownPlain = expandLights(sceneWith({plain}));
+    for (std::size_t i = 0; i < own.size(); ++i)
+        EXPECT_EQ(own[i].range, ownPlain[i].range);
+    EXPECT_EQ(rangeScaleFor(1024, 4096), 0.5);
+    EXPECT_EQ(rangeScaleFor(3, 12), 0.5);
+}
+
+// Each set scales by its own count after the split, and a set without the key is untouched.
+TEST(LightSets, ReferenceCountUsesEachSetsShareOfLights)
+{
+    LightSet first = pointSet(100, 1);
+    first.rangeReferenceCount = 100;
+    const LightSet second = spotSet(300, 2);
+    // 1600 lights split 400 / 1200: the first set's ranges halve, the second's stay.
+    const std::vector<Light> lights = expandLights(sceneWith({first, second}), 1600);
+    const std::vector<Light> plain = expandLights(sceneWith({pointSet(100, 1), second}), 1600);
+    ASSERT_EQ(lights.size(), 1600u);
+    for (std::size_t i = 0; i < 400; ++i)
+        EXPECT_EQ(lights[i].range, plain[i].range * 0.5f);
+    for (std::size_t i = 400; i < 1600; ++i)
+        EXPECT_EQ(lights[i].range, plain[i].range);
+}
+
 TEST(DistributeLightCount, HandWorkedExamples)
 {
     auto counts = [](std::vector<int> setCounts, int total) {

@@ -270,7 +270,8 @@ TEST(SceneLoader, LightDefaultsAndOptionalKeys)
             { "count": 0, "type": "spot", "min": [0, 0, 0], "max": [0, 0, 0], "range": [1, 1],
               "intensity": [0, 0] },
             { "count": 1e3, "seed": 4294967295, "type": "spot", "min": [0, 0, 0], "max": [1, 1, 1],
-              "range": [1, 2], "intensity": [1, 2], "cutoff": 30, "exponent": [1, 2] }
+              "range": [1, 2], "range_reference_count": 4096, "intensity": [1, 2], "cutoff": 30,
+              "exponent": [1, 2] }
         ] })json");
     ASSERT_TRUE(scene.directional.has_value());
     EXPECT_TRUE(scene.directional->shadows);
@@ -288,7 +289,9 @@ TEST(SceneLoader, LightDefaultsAndOptionalKeys)
     EXPECT_FLOAT_EQ(scene.lightSets[0].cutoffDegrees.hi, 45.0f);
     EXPECT_FLOAT_EQ(scene.lightSets[0].exponent.lo, 0.0f);
     EXPECT_FLOAT_EQ(scene.lightSets[0].exponent.hi, 8.0f);
+    EXPECT_FALSE(scene.lightSets[0].rangeReferenceCount.has_value());
     EXPECT_EQ(scene.lightSets[1].count, 1000);
+    EXPECT_EQ(scene.lightSets[1].rangeReferenceCount, std::optional<int>(4096));
     EXPECT_EQ(scene.lightSets[1].seed, 4294967295u);
     EXPECT_FLOAT_EQ(scene.lightSets[1].cutoffDegrees.lo, 30.0f);
     EXPECT_FLOAT_EQ(scene.lightSets[1].cutoffDegrees.hi, 30.0f);
@@ -551,6 +554,14 @@ const std::vector<BadScene> kBadScenes = {
      withSet(R"json({"count": 4, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [-1, 1]})json"),
      ": /light_sets/0/intensity/0: ", "must be >= 0, got -1"},
     {"SetMissingMin", withSet(R"json({"count": 4})json"), ": /light_sets/0: ", "missing required key 'min'"},
+    {"SetRangeReferenceZero", withSet("{" + kSet + R"json(, "range_reference_count": 0})json"),
+     ": /light_sets/0/range_reference_count: ", "must be in [1, 16777216], got 0"},
+    {"SetRangeReferenceFraction", withSet("{" + kSet + R"json(, "range_reference_count": 2.5})json"),
+     ": /light_sets/0/range_reference_count: ", "expected an integer, got 2.5"},
+    {"SetRangeReferenceString", withSet("{" + kSet + R"json(, "range_reference_count": "1024"})json"),
+     ": /light_sets/0/range_reference_count: ", "expected an integer, got a string"},
+    {"SetRangeReferenceTooLarge", withSet("{" + kSet + R"json(, "range_reference_count": 20000000})json"),
+     ": /light_sets/0/range_reference_count: ", "must be in [1, 16777216], got 20000000"},
     {"SpotSetCutoffTooLarge", withSet("{" + kSet + R"json(, "type": "spot", "cutoff": [10, 200]})json"),
      ": /light_sets/0/cutoff/1: ", "must be in (0, 180], got 200"},
     {"SpotSetExponentString", withSet("{" + kSet + R"json(, "type": "spot", "exponent": "high"})json"),

@@ -1,0 +1,446 @@
+#include "apps/cli/BenchCommand.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <type_traits>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/cli/SvgPlot.h"
+#include "core/Error.h"
+#include "platform/HeadlessContext.h"
+#include "render/Renderer.h"
+#include "scene/DefaultScene.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+
+namespace {
+
+// Within what `render --lights` and `--frames` accept.
+constexpr int kMaxLights = 16'777'216;
+constexpr int kMaxFrames = 100'000;
+
+struct PassResult {
+    std::string name;
+    double wallMs = 0.0;  // median over the measured frames
+    std::optional<std::uint64_t> fragmentInvocations;
+};
+
+// One combination of the sweep.
+struct BenchResult {
+    std::string technique;
+    std::size_t lights = 0;  // every light rendered: the scene's explicit lights and its sets'
+    ImageSize size;
+    int frames = 0;
+    Statistics frameMs;   // wall clock (render/PassProfiler.h says why)
+    double frameGpuMs = 0.0;  // median of the timer-query frame times
+    std::vector<PassResult> passes;
+    std::optional<WorkCounts> work;  // with --count-work
+};
+
+// Rejects a list that names an entry twice: the sweep would measure it twice and the plot
+// would draw a line back on itself, so a repeat is almost surely a typo.
+template <typename T>
+void rejectRepeats(const std::vector<T>& values, const std::string& option)
+{
+    std::set<T> seen;
+    for (const T& value : values)
+        if (!seen.insert(value).second) {
+            if constexpr (std::is_same_v<T, std::string>)
+                throw CLI::ValidationError(option, "lists " + value + " twice");
+            else
+                throw CLI::ValidationError(option, "lists " + std::to_string(value) + " twice");
+        }
+}
+
+std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassResult>& passes)
+{
+    std::uint64_t total = 0;
+    for (const PassResult& pass : passes) {
+        if (!pass.fragmentInvocations)
+            return std::nullopt;
+        total += *pass.fragmentInvocations;
+    }
+    return total;
+}
+
+BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const std::string& techniqueName,
+                    ImageSize size, const BenchOptions& options)
+{
+    Renderer renderer(scene, lights, size.width, size.height);
+    std::unique_ptr<Technique> technique = makeTechnique(techniqueName);
+    ML_ASSERT(technique != nullptr);  // the command line only accepts known names
+    for (int i = 0; i < options.warmup; ++i)
+        renderer.renderFrame(*technique, ViewMode::Final);
+    std::vector<FrameSample> frames;
+    for (int i = 0; i < options.frames; ++i)
+        frames.push_back(renderer.renderFrame(*technique, ViewMode::Final));
+
+    BenchResult result;
+    result.technique = techniqueName;
+    result.lights = lights.size();
+    result.size = size;
+    result.frames = options.frames;
+    std::vector<double> wallMs;
+    std::vector<double> gpuMs;
+    for (const FrameSample& frame : frames) {
+        wallMs.push_back(frame.wallMs);
+        gpuMs.push_back(frame.gpuMs);
+    }
+    result.frameMs = summarize(wallMs);
+    result.frameGpuMs = summarize(gpuMs).median;
+    // Every frame runs the same passes in the same order.
+    for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
+        std::vector<double> passWallMs;
+        for (const FrameSample& frame : frames)
+            passWallMs.push_back(frame.passes[p].wallMs);
+        const PassSample& last = frames.back().passes[p];
+        result.passes.push_back({last.name, summarize(passWallMs).median, last.fragmentInvocations});
+    }
+
+    if (options.countWork) {
+        // A separate frame with the counting variant: its atomics would distort the timings.
+        std::unique_ptr<Technique> counting = makeTechnique(techniqueName, {.countWork = true});
+        renderer.setCountWork(true);
+        renderer.renderFrame(*counting, ViewMode::Final);
+        result.work = renderer.lastWorkCounts();
+    }
+    return result;
+}
+
+// The progress line on stderr: rewritten in place on a terminal, one line per finished
+// combination otherwise (a log file or CI output gets no carriage returns).
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), terminal_(::isatty(::fileno(stderr)) != 0) {}
+    ~Progress()
+    {
+        // Also on an error: the one-line message that follows must start on its own line.
+        if (pending_)
+            std::fputc('\n', stderr);
+    }
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    void start(const std::string& label)
+    {
+        ++index_;
+        if (terminal_) {
+            std::fprintf(stderr, "\r[%zu/%zu] %s ...\033[K", index_, total_, label.c_str());
+            std::fflush(stderr);
+            pending_ = true;
+        }
+    }
+
+    void finish(const std::string& label, double ms)
+    {
+        if (terminal_) {
+            std::fprintf(stderr, "\r[%zu/%zu] %s: %.1f ms\033[K", index_, total_, label.c_str(), ms);
+        } else {
+            std::fprintf(stderr, "[%zu/%zu] %s: %.1f ms\n", index_, total_, label.c_str(), ms);
+        }
+        std::fflush(stderr);
+    }
+
+private:
+    std::size_t total_;
+    std::size_t index_ = 0;
+    bool terminal_;
+    bool pending_ = false;
+};
+
+std::string formatMs(double ms)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f", ms);
+    return buffer;
+}
+
+// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled.
+std::string csvField(const std::string& text)
+{
+    if (text.find_first_of(",\"\r\n") == std::string::npos)
+        return text;
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"')
+            quoted += '"';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+std::string optionalCount(const std::optional<std::uint64_t>& count)
+{
+    return count ? std::to_string(*count) : std::string();
+}
+
+// docs/cli.md documents every column.
+std::string csvText(const std::vector<BenchResult>& results)
+{
+    std::string text =
+        "technique,lights,width,height,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_gpu_ms_median,"
+        "fragment_invocations,passes,light_evaluations,in_range_pairs\n";
+    for (const BenchResult& r : results) {
+        std::string passes;
+        for (const PassResult& pass : r.passes) {
+            if (!passes.empty())
+                passes += ';';
+            passes += pass.name + ':' + formatMs(pass.wallMs) + ':' + optionalCount(pass.fragmentInvocations);
+        }
+        const std::vector<std::string> fields = {
+            r.technique,
+            std::to_string(r.lights),
+            std::to_string(r.size.width),
+            std::to_string(r.size.height),
+            std::to_string(r.frames),
+            formatMs(r.frameMs.median),
+            formatMs(r.frameMs.min),
+            formatMs(r.frameMs.max),
+            formatMs(r.frameGpuMs),
+            optionalCount(totalFragmentInvocations(r.passes)),
+            passes,
+            r.work ? std::to_string(r.work->lightEvaluations) : "",
+            r.work ? std::to_string(r.work->inRangePairs) : "",
+        };
+        for (std::size_t i = 0; i < fields.size(); ++i) {
+            if (i)
+                text += ',';
+            text += csvField(fields[i]);
+        }
+        text += '\n';
+    }
+    return text;
+}
+
+// Columns padded to their widest cell; text columns left-aligned, numbers right-aligned.
+std::string formatTable(const std::vector<std::vector<std::string>>& rows, const std::vector<bool>& leftAligned)
+{
+    std::vector<std::size_t> widths(leftAligned.size(), 0);
+    for (const auto& row : rows)
+        for (std::size_t c = 0; c < row.size(); ++c)
+            widths[c] = std::max(widths[c], row[c].size());
+    std::string text;
+    for (const auto& row : rows) {
+        std::string line;
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            const std::string padding(widths[c] - row[c].size(), ' ');
+            if (c)
+                line += "  ";
+            line += leftAligned[c] ? row[c] + padding : padding + row[c];
+        }
+        while (!line.empty() && line.back() == ' ')
+            line.pop_back();
+        text += line + '\n';
+    }
+    return text;
+}
+
+std::string tableText(const std::vector<BenchResult>& results, bool countWork)
+{
+    std::vector<std::vector<std::string>> rows;
+    std::vector<bool> left = {true, false, false, false, false, false};
+    rows.push_back({"technique", "lights", "size", "median ms", "min ms", "max ms"});
+    if (countWork) {
+        rows.back().insert(rows.back().end(), {"light evals", "in range", "efficiency"});
+        left.insert(left.end(), {false, false, false});
+    }
+    rows.back().push_back("passes (median wall ms)");
+    left.push_back(true);
+    for (const BenchResult& r : results) {
+        std::vector<std::string> row = {r.technique,
+                                        std::to_string(r.lights),
+                                        formatSize(r.size),
+                                        formatMs(r.frameMs.median),
+                                        formatMs(r.frameMs.min),
+                                        formatMs(r.frameMs.max)};
+        if (countWork) {
+            row.push_back(std::to_string(r.work->lightEvaluations));
+            row.push_back(std::to_string(r.work->inRangePairs));
+            // in_range_pairs / light_evaluations: 100% is perfect culling (docs/techniques.md).
+            char efficiency[32] = "-";
+            if (r.work->lightEvaluations > 0)
+                std::snprintf(efficiency, sizeof efficiency, "%.1f%%",
+                              100.0 * static_cast<double>(r.work->inRangePairs) /
+                                  static_cast<double>(r.work->lightEvaluations));
+            row.emplace_back(efficiency);
+        }
+        std::string passes;
+        for (const PassResult& pass : r.passes) {
+            char entry[96];
+            std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(),
+                          pass.wallMs);
+            passes += entry;
+        }
+        row.push_back(passes);
+        rows.push_back(std::move(row));
+    }
+    return formatTable(rows, left);
+}
+
+std::string plotText(const std::vector<BenchResult>& results, const BenchOptions& options,
+                     const std::vector<std::string>& techniques, const std::string& sceneName)
+{
+    LogLogPlot plot;
+    plot.xLabel = "lights";
+    plot.yLabel = "frame time (ms, wall clock)";
+    for (const ImageSize& size : options.sizes) {
+        PlotPanel panel;
+        panel.title = sceneName + ", " + formatSize(size) + ": ";
+        panel.title += options.frames == 1 ? "one frame"
+                                           : "median of " + std::to_string(options.frames) +
+                                                 " frames, bars from min to max";
+        for (const std::string& technique : techniques) {
+            PlotSeries series;
+            series.name = technique;
+            // By the technique's place in the full list, so a technique keeps its colour in
+            // every plot whatever subset a sweep runs.
+            const auto& names = techniqueNames();
+            series.colour = paletteColour(
+                static_cast<std::size_t>(std::find(names.begin(), names.end(), technique) - names.begin()));
+            for (const BenchResult& r : results) {
+                if (r.technique != technique || r.size.width != size.width || r.size.height != size.height)
+                    continue;
+                char note[128];
+                std::snprintf(note, sizeof note, "%s: %zu lights, %.1f ms (min %.1f, max %.1f)", technique.c_str(),
+                              r.lights, r.frameMs.median, r.frameMs.min, r.frameMs.max);
+                series.points.push_back({static_cast<double>(r.lights), r.frameMs.median, r.frameMs.min,
+                                         r.frameMs.max, note});
+            }
+            panel.series.push_back(std::move(series));
+        }
+        plot.panels.push_back(std::move(panel));
+    }
+    return logLogSvg(plot);
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
+{
+    CLI::App* bench = app.add_subcommand("bench", "Time techniques over light counts and image sizes");
+    bench->add_option("scene", options.scenePath, "Scene file (JSON); the built-in default scene if absent");
+    // The comma-separated lists take one argument each, so a scene given after them is not
+    // read as one more entry.
+    bench
+        ->add_option_function<std::vector<std::string>>(
+            "--techniques",
+            [&options](const std::vector<std::string>& names) {
+                rejectRepeats(names, "--techniques");
+                options.techniques = names;
+            },
+            "Comma-separated techniques to time (default: all)")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(CLI::IsMember(techniqueNames()));
+    bench
+        ->add_option_function<std::vector<int>>(
+            "--lights",
+            [&options](const std::vector<int>& counts) {
+                rejectRepeats(counts, "--lights");
+                options.lightCounts = counts;
+            },
+            "Comma-separated totals for the scene's light sets (default: the scene's own)")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(CLI::Range(0, kMaxLights));
+    bench
+        ->add_option_function<std::vector<std::string>>(
+            "--size",
+            [&options](const std::vector<std::string>& texts) {
+                rejectRepeats(texts, "--size");
+                options.sizes.clear();
+                for (const std::string& text : texts) {
+                    ImageSize size;
+                    parseSize(text, size);  // the check below has accepted it
+                    options.sizes.push_back(size);
+                }
+            },
+            "Comma-separated image sizes WxH (default: 1280x720)")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(
+            [](const std::string& text) {
+                ImageSize size;
+                std::string problem = parseSize(text, size);
+                // CLI11 puts the option's name in front already.
+                const std::string name = "--size ";
+                if (problem.compare(0, name.size(), name) == 0)
+                    problem.erase(0, name.size());
+                return problem;
+            },
+            "WxH");
+    bench->add_option("--frames", options.frames, "Frames timed per combination")
+        ->check(CLI::Range(1, kMaxFrames))
+        ->capture_default_str();
+    bench->add_option("--warmup", options.warmup, "Frames rendered before timing (not counted)")
+        ->check(CLI::Range(0, kMaxFrames))
+        ->capture_default_str();
+    bench->add_option("--csv", options.csvPath, "Write one row per combination as CSV");
+    bench->add_option("--plot", options.plotPath, "Write frame time against lights as an SVG plot")
+        ->check([](const std::string& path) {
+            return endsWith(path, ".svg") && path.size() > 4 ? std::string()
+                                                              : "must end in .svg, got '" + path + "'";
+        });
+    bench->add_flag("--count-work", options.countWork,
+                    "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
+    return bench;
+}
+
+void runBench(const BenchOptions& options)
+{
+    const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    if (!options.lightCounts.empty() && scene.lightSets.empty())
+        throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
+    // Before the sweep, which may take hours, rather than after it.
+    if (!options.csvPath.empty())
+        checkWritable(options.csvPath, "CSV");
+    if (!options.plotPath.empty())
+        checkWritable(options.plotPath, "plot");
+
+    const std::vector<std::string> techniques = options.techniques.empty() ? techniqueNames() : options.techniques;
+    std::vector<std::optional<int>> lightCounts(options.lightCounts.begin(), options.lightCounts.end());
+    if (lightCounts.empty())
+        lightCounts.push_back(std::nullopt);
+
+    HeadlessContext context({.debug = defaultDebugContext()});
+    std::vector<BenchResult> results;
+    {
+        Progress progress(options.sizes.size() * lightCounts.size() * techniques.size());
+        // Sizes outermost and techniques innermost: the techniques at one light count finish
+        // together, so an interrupted sweep has compared them all up to where it stopped.
+        for (const ImageSize& size : options.sizes)
+            for (const std::optional<int>& count : lightCounts) {
+                const std::vector<Light> lights = expandLights(scene, count);
+                for (const std::string& technique : techniques) {
+                    const std::string label =
+                        technique + " " + std::to_string(lights.size()) + " lights " + formatSize(size);
+                    progress.start(label);
+                    results.push_back(measure(scene, lights, technique, size, options));
+                    progress.finish(label, results.back().frameMs.median);
+                }
+            }
+    }
+
+    std::printf("%s on %s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s",
+                scene.source.c_str(), context.description().c_str(), options.warmup, options.warmup == 1 ? "" : "s",
+                options.frames, options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
+    std::fflush(stdout);
+    if (!options.csvPath.empty())
+        writeTextAtomically(options.csvPath, csvText(results), "CSV");
+    if (!options.plotPath.empty())
+        writeTextAtomically(options.plotPath,
+                            plotText(results, options, techniques,
+                                     std::filesystem::path(scene.source).filename().string()),
+                            "plot");
+}
+
+}  // namespace manylights

@@ -1,0 +1,36 @@
+// `manylights bench` (SPEC.md §3): sweeps techniques × light counts × image sizes over one
+// scene and reports frame times and work counts as a table, a CSV and an SVG plot.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "apps/cli/CommandSupport.h"
+
+namespace CLI {
+class App;
+}
+
+namespace manylights {
+
+struct BenchOptions {
+    std::string scenePath;                // empty: the built-in default scene
+    std::vector<std::string> techniques;  // empty: every technique there is (techniqueNames())
+    std::vector<int> lightCounts;         // empty: the scene's own lights
+    std::vector<ImageSize> sizes{{1280, 720}};
+    int frames = 5;
+    int warmup = 1;
+    std::string csvPath;   // empty: no CSV
+    std::string plotPath;  // empty: no plot
+    bool countWork = false;
+};
+
+// Adds the `bench` subcommand to `app`; what it parses lands in `options`. Malformed values
+// (a size, a light count, an unknown technique, a repeated entry) are CLI11 parse errors.
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
+
+// Runs the sweep: progress on stderr, the table on stdout, then the CSV and the plot.
+// Throws manylights::Error on failure (the files are written only after the whole sweep).
+void runBench(const BenchOptions& options);
+
+}  // namespace manylights

@@ -1,0 +1,85 @@
+#include "apps/cli/CommandSupport.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <unistd.h>
+
+#include "core/Error.h"
+
+namespace manylights {
+
+namespace {
+
+std::string temporarySibling(const std::string& path) { return path + ".tmp" + std::to_string(::getpid()); }
+
+}  // namespace
+
+std::string parseSize(const std::string& text, ImageSize& size)
+{
+    // At most 6 digits each, so std::stoi cannot overflow before the range check.
+    static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
+    std::smatch match;
+    if (!std::regex_match(text, match, pattern))
+        return "--size must look like 1280x720, got '" + text + "'";
+    const int width = std::stoi(match[1]);
+    const int height = std::stoi(match[2]);
+    if (width < 1 || height < 1 || width > kMaxImageDimension || height > kMaxImageDimension)
+        return "--size must be between 1x1 and " + std::to_string(kMaxImageDimension) + "x" +
+               std::to_string(kMaxImageDimension) + ", got " + text;
+    size = {width, height};
+    return {};
+}
+
+std::string formatSize(const ImageSize& size)
+{
+    return std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
+Statistics summarize(std::vector<double> values)
+{
+    ML_ASSERT(!values.empty());
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {median, values.front(), values.back()};
+}
+
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void writeTextAtomically(const std::string& path, const std::string& text, const std::string& what)
+{
+    const std::string temporary = temporarySibling(path);
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        if (!out.flush()) {
+            const int error = errno;
+            std::remove(temporary.c_str());
+            throw Error(path + ": cannot write " + what + ": " + std::strerror(error));
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const int error = errno;
+        std::remove(temporary.c_str());
+        throw Error(path + ": cannot write " + what + ": " + std::strerror(error));
+    }
+}
+
+void checkWritable(const std::string& path, const std::string& what)
+{
+    const std::string temporary = temporarySibling(path);
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file)
+        throw Error(path + ": cannot write " + what + ": " + std::strerror(errno));
+    std::fclose(file);
+    std::remove(temporary.c_str());
+}
+
+}  // namespace manylights

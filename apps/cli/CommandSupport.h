@@ -1,0 +1,45 @@
+// What the subcommands share: the parsing of option values, the summary of timed frames and
+// atomic file output. One definition each, so `render` and `bench` accept the same sizes and
+// report the same statistics.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace manylights {
+
+// Far beyond any display, and small enough that width · height · bytes per pixel stays
+// within 64-bit sizes; the GL implementation's own limit is checked when rendering.
+inline constexpr int kMaxImageDimension = 32768;
+
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+};
+
+// "WxH" with both in 1..kMaxImageDimension. Returns the problem as one line (naming --size),
+// or an empty string when `text` is a size; then `size` holds it.
+std::string parseSize(const std::string& text, ImageSize& size);
+
+// "1280x720".
+std::string formatSize(const ImageSize& size);
+
+// Median (the mean of the middle two for an even count), min and max; `values` not empty.
+struct Statistics {
+    double median = 0.0;
+    double min = 0.0;
+    double max = 0.0;
+};
+Statistics summarize(std::vector<double> values);
+
+bool endsWith(const std::string& text, const std::string& suffix);
+
+// Writes `text` to a temporary sibling of `path` and renames it into place, so `path` never
+// holds a partial file. Throws manylights::Error naming `path` and `what` ("statistics").
+void writeTextAtomically(const std::string& path, const std::string& text, const std::string& what);
+
+// Throws manylights::Error when a file cannot be created beside `path` (a missing folder, no
+// permission): checked before a long run, so that it fails in a second rather than at the end.
+void checkWritable(const std::string& path, const std::string& what);
+
+}  // namespace manylights

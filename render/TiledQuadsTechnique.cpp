@@ -1,0 +1,158 @@
+#include "render/TiledQuadsTechnique.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+
+#include "render/DeferredTechnique.h"
+#include "render/GpuScene.h"
+#include "render/PassProfiler.h"
+
+namespace manylights {
+
+namespace {
+
+// Locations and bindings of shaders/tiled_quads.vert and tiled_quads.frag (binding 0 is
+// the light buffer).
+constexpr GLint kFirstTile = 0;
+constexpr GLint kTilesX = 1;
+constexpr GLint kTileSize = 2;
+constexpr GLint kImageSize = 3;
+constexpr GLuint kTileOrderBinding = 1;
+constexpr GLuint kTileRangesBinding = 2;
+constexpr GLuint kTileLightsBinding = 3;
+
+gl::Program makeVariant(const TechniqueOptions& options, std::size_t variant)
+{
+    gl::Defines defines = shaderDefines(options);
+    std::string label = "tiled quads, unbounded";
+    if (variant < kTileLightBounds.size()) {
+        const std::string bound = std::to_string(kTileLightBounds[variant]);
+        defines.emplace_back("MAX_TILE_LIGHTS", bound + "u");
+        label = "tiled quads, up to " + bound + " lights";
+    }
+    return gl::Program(label, {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
+                       defines);
+}
+
+// The variant that draws a tile with `count` > 0 lights.
+std::size_t variantFor(std::uint32_t count)
+{
+    const auto bound = std::lower_bound(kTileLightBounds.begin(), kTileLightBounds.end(), count);
+    return static_cast<std::size_t>(bound - kTileLightBounds.begin());
+}
+
+// Uploads `data` to the start of `buffer`, first replacing the buffer with a larger one when
+// the data does not fit (with room to grow, so that a slowly growing list does not
+// reallocate every frame).
+template <typename T>
+void upload(gl::Buffer& buffer, std::string_view label, std::span<const T> data)
+{
+    if (!buffer || buffer.size() < data.size_bytes())
+        buffer = gl::Buffer(label, data.size_bytes() + data.size_bytes() / 2, nullptr);
+    buffer.update(0, data.size_bytes(), data.data());
+}
+
+}  // namespace
+
+TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
+    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}})
+{
+    for (std::size_t v = 0; v < kVariants; ++v)
+        variants_[v] = makeVariant(options, v);
+}
+
+void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTargets& targets)
+{
+    // The camera as the frame's matrices were made from it (render/GpuScene.cpp).
+    const FrameUniforms& frame = scene.frameUniforms();
+    TileCullingView view;
+    view.view = frame.view;
+    view.fovY = 2.0f * std::atan(frame.projection.y);
+    view.aspect = static_cast<float>(targets.width) / static_cast<float>(targets.height);
+    view.nearPlane = frame.projection.z;
+    view.farPlane = frame.projection.w;
+    view.width = targets.width;
+    view.height = targets.height;
+    view.tileSize = kDefaultTileSize;
+    const TileLightLists& lists = culler_.cull(view, scene.packedLights());
+
+    // Bucket the tiles that have lights by variant (a counting sort), so that each variant
+    // is one instanced draw and the program changes only between buckets.
+    std::array<std::uint32_t, kVariants> perVariant{};
+    for (const TileRange& range : lists.tiles)
+        if (range.count > 0)
+            ++perVariant[variantFor(range.count)];
+    variantFirst_[0] = 0;
+    for (std::size_t v = 0; v < kVariants; ++v)
+        variantFirst_[v + 1] = variantFirst_[v] + perVariant[v];
+    drawOrder_.resize(variantFirst_[kVariants]);
+    std::array<std::uint32_t, kVariants> cursor{};
+    std::copy(variantFirst_.begin(), variantFirst_.end() - 1, cursor.begin());
+    for (std::size_t tile = 0; tile < lists.tileCount(); ++tile)
+        if (lists.tiles[tile].count > 0)
+            drawOrder_[cursor[variantFor(lists.tiles[tile].count)]++] = static_cast<std::uint32_t>(tile);
+
+    upload<TileRange>(tileRanges_, "tile light ranges", lists.tiles);
+    upload<std::uint32_t>(tileOrder_, "tile draw order", drawOrder_);
+    upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
+}
+
+void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& targets) const
+{
+    if (drawOrder_.empty())
+        return;
+    const TileLightLists& lists = culler_.lists();
+    scene.bind();
+    tileOrder_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileOrderBinding);
+    tileRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileRangesBinding);
+    lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
+    const glm::vec2 imageSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    // As in drawCoveredPixels: the quads lie at depth 1, so GL_GREATER passes only where a
+    // surface was drawn, and the background is never shaded.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    for (std::size_t v = 0; v < kVariants; ++v) {
+        const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
+        if (tiles == 0)
+            continue;
+        const gl::Program& program = variants_[v];
+        program.set(kFirstTile, variantFirst_[v]);
+        program.set(kTilesX, lists.tilesX);
+        program.set(kTileSize, lists.tileSize);
+        program.set(kImageSize, imageSize);
+        program.use();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(tiles));
+    }
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+}
+
+void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+{
+    targets.gbuffer.fill(scene, profiler);
+    {
+        // The culling runs on the CPU: this pass's wall time is its cost (with the upload of
+        // the lists), its GPU time is near zero.
+        auto pass = profiler.pass("cpu-culling");
+        cullAndUpload(scene, targets);
+    }
+    {
+        auto pass = profiler.pass("global");
+        targets.litFramebuffer.bind();
+        scene.bind();
+        targets.gbuffer.bindForReading();
+        glDisable(GL_BLEND);
+        drawCoveredPixels(global_);
+    }
+    auto pass = profiler.pass("lighting");
+    drawTiles(scene, targets);
+}
+
+}  // namespace manylights

@@ -1,0 +1,57 @@
+#include "render/TiledTechnique.h"
+
+#include <string>
+
+#include "render/GpuScene.h"
+#include "render/PassProfiler.h"
+
+namespace manylights {
+
+namespace {
+// Bindings of shaders/tiled.comp.
+constexpr GLuint kLitImageUnit = 2;
+constexpr GLuint kDepthUnit = 5;
+constexpr GLuint kStatisticsBinding = 6;
+
+gl::Defines tiledDefines(const TechniqueOptions& options)
+{
+    gl::Defines defines = shaderDefines(options);
+    defines.emplace_back("TILE_SIZE", std::to_string(kTiledTileSize));
+    defines.emplace_back("TILE_CAPACITY", std::to_string(kTiledTileCapacity));
+    return defines;
+}
+}  // namespace
+
+TiledTechnique::TiledTechnique(const TechniqueOptions& options)
+    : program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options)),
+      statistics_("tiled statistics", sizeof(std::uint32_t), nullptr)
+{
+}
+
+void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+{
+    targets.gbuffer.fill(scene, profiler);
+    auto pass = profiler.pass("lighting");
+    const std::uint32_t zero = 0;
+    statistics_.update(0, sizeof(zero), &zero);
+    statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding);
+    scene.bind();
+    targets.gbuffer.bindForReading();
+    targets.depthStencil.bindUnit(kDepthUnit);
+    // Make the lit image's clear to the background visible to the image stores' neighbours.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glBindImageTexture(kLitImageUnit, targets.lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    program_.use();
+    const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
+    glDispatchCompute(groups(targets.width), groups(targets.height), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(statistics_.id(), 0, sizeof(lastOverflowedTiles_), &lastOverflowedTiles_);
+}
+
+std::vector<TechniqueCounter> TiledTechnique::counters() const
+{
+    return {{"tile_overflows", static_cast<double>(lastOverflowedTiles_)}};
+}
+
+}  // namespace manylights

@@ -1,0 +1,191 @@
+// tiled-quads on a headless context: every tile is drawn once, over exactly its pixels, by
+// the shader variant of its light count, and the image is deferred's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <set>
+
+#include "gl/Debug.h"
+#include "platform/HeadlessContext.h"
+#include "render/DeferredTechnique.h"
+#include "render/Renderer.h"
+#include "render/TiledQuadsTechnique.h"
+#include "scene/Meshes.h"
+
+namespace manylights {
+namespace {
+
+class TiledQuadsTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<HeadlessContext>(ContextOptions{.debug = true}); }
+    static void TearDownTestSuite() { context_.reset(); }
+    void TearDown() override { gl::checkNoError("end of test"); }
+
+    static std::unique_ptr<HeadlessContext> context_;
+};
+std::unique_ptr<HeadlessContext> TiledQuadsTest::context_;
+
+constexpr int kWidth = 160;  // 5x2 tiles of 32 pixels
+constexpr int kHeight = 64;
+constexpr float kEyeHeight = 10.0f;
+constexpr float kLightHeight = 0.3f;
+
+// A floor seen from straight above, narrower than the view so that the image's left and
+// right edges show background.
+Scene floorScene()
+{
+    Scene scene;
+    scene.source = "<tiled-quads test>";
+    scene.camera.eye = glm::vec3(0.0f, kEyeHeight, 0.0f);
+    scene.camera.lookAt = glm::vec3(0.0f);
+    scene.camera.up = glm::vec3(0.0f, 0.0f, -1.0f);  // screen right is +X, screen up is −Z
+    scene.camera.fovYDegrees = 30.0f;
+    scene.camera.nearPlane = 0.5f;
+    scene.camera.farPlane = 50.0f;
+    scene.ambient = glm::vec3(0.02f);
+    Material grey;
+    grey.diffuse = glm::vec3(0.7f);
+    grey.specular = glm::vec3(0.2f);
+    scene.materials.push_back(grey);
+    scene.meshes.push_back(makePlane(10.0f, 20.0f));
+    scene.objects.push_back(Object{"floor", 0, 0, glm::mat4(1.0f)});
+    return scene;
+}
+
+// `count` small lights just above the floor under the middle of tile (tx, ty): random
+// pixels at least 10 from the tile's edges, where a light of range 0.5 (about 4 pixels
+// across here) cannot reach a neighbouring tile.
+void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, std::mt19937& random)
+{
+    const float tanY = std::tan(glm::radians(30.0f) / 2.0f);
+    const float tanX = tanY * static_cast<float>(kWidth) / static_cast<float>(kHeight);
+    const float depth = kEyeHeight - kLightHeight;
+    std::uniform_real_distribution<float> within(10.0f, 22.0f);
+    std::uniform_real_distribution<float> hue(0.0f, 1.0f);
+    for (int i = 0; i < count; ++i) {
+        const float px = static_cast<float>(tx * 32) + within(random);
+        const float py = static_cast<float>(ty * 32) + within(random);
+        const float slopeX = (2.0f * px / kWidth - 1.0f) * tanX;
+        const float slopeY = (2.0f * py / kHeight - 1.0f) * tanY;
+        Light light;
+        light.position = glm::vec3(slopeX * depth, kLightHeight, -slopeY * depth);
+        light.range = 0.5f;
+        light.intensity = 0.02f * glm::vec3(hue(random), hue(random), hue(random));
+        lights.push_back(light);
+    }
+}
+
+void expectSameImage(const Image& reference, const Image& candidate)
+{
+    ASSERT_EQ(reference.rgb.size(), candidate.rgb.size());
+    int failures = 0;
+    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
+        // The tolerance of tests/image/TechniqueAgreementTest.cpp, for the same reasons.
+        const float difference = std::abs(candidate.rgb[i] - reference.rgb[i]);
+        if (!(difference <= 1e-5f * std::abs(reference.rgb[i]) + 1e-6f) && ++failures <= 5)
+            ADD_FAILURE() << "pixel " << i / 3 << " channel " << i % 3 << ": " << reference.rgb[i] << " vs "
+                          << candidate.rgb[i];
+    }
+    EXPECT_EQ(failures, 0);
+}
+
+TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
+{
+    const Scene scene = floorScene();
+    // One tile per variant (up to 8, 16, ..., 1024 lights, and beyond), and one with none.
+    const int counts[2][5] = {{0, 5, 12, 24, 48}, {96, 192, 384, 768, 1500}};
+    std::mt19937 random(1);
+    std::vector<Light> lights;
+    for (int ty = 0; ty < 2; ++ty)
+        for (int tx = 0; tx < 5; ++tx)
+            addLightsOverTile(lights, tx, ty, counts[ty][tx], random);
+
+    Renderer renderer(scene, lights, kWidth, kHeight);
+    renderer.setCountWork(true);
+    TiledQuadsTechnique tiled({.countWork = true});
+    renderer.renderFrame(tiled, ViewMode::LightCount);
+    const Image evaluations = renderer.readColour();
+    const std::vector<bool> covered = renderer.readCoverage();
+    const TileLightLists& lists = tiled.lastLists();
+    ASSERT_EQ(lists.tilesX, 5);
+    ASSERT_EQ(lists.tilesY, 2);
+
+    // The lights stayed over their tiles, so each tile's count picks a different variant.
+    std::set<std::size_t> variants;
+    for (int ty = 0; ty < 2; ++ty)
+        for (int tx = 0; tx < 5; ++tx) {
+            const std::uint32_t count = lists.tiles[lists.tileIndex(tx, ty)].count;
+            EXPECT_EQ(count, static_cast<std::uint32_t>(counts[ty][tx])) << "tile " << tx << ", " << ty;
+            if (count > 0)
+                variants.insert(static_cast<std::size_t>(
+                    std::lower_bound(kTileLightBounds.begin(), kTileLightBounds.end(), count) -
+                    kTileLightBounds.begin()));
+        }
+    EXPECT_EQ(variants.size(), kTileLightBounds.size() + 1);
+
+    // Each covered pixel evaluated exactly its tile's lights, once; the background none.
+    int coveredPixels = 0;
+    int wrong = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const int glY = kHeight - 1 - y;  // Image rows run top to bottom
+            const bool surface = covered[static_cast<std::size_t>(y) * kWidth + x];
+            coveredPixels += surface;
+            const float expected =
+                surface ? static_cast<float>(lists.tiles[lists.tileIndex(x / 32, glY / 32)].count) : 0.0f;
+            if (evaluations.pixel(x, y)[0] != expected && ++wrong <= 5)
+                ADD_FAILURE() << "pixel (" << x << ", " << glY << "): " << evaluations.pixel(x, y)[0]
+                              << " evaluations, expected " << expected;
+        }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(coveredPixels, kWidth * kHeight / 2);
+    EXPECT_LT(coveredPixels, kWidth * kHeight) << "the image should show some background";
+    EXPECT_GE(renderer.lastWorkCounts().lightEvaluations, renderer.lastWorkCounts().inRangePairs);
+    EXPECT_GT(renderer.lastWorkCounts().inRangePairs, 0u);
+
+    // And the image is deferred's (which loops over all 3,029 lights everywhere).
+    renderer.renderFrame(tiled, ViewMode::Final);
+    const Image image = renderer.readColour();
+    DeferredTechnique deferred({.countWork = true});
+    renderer.renderFrame(deferred, ViewMode::Final);
+    expectSameImage(renderer.readColour(), image);
+}
+
+TEST_F(TiledQuadsTest, NoLightsAndResizing)
+{
+    const Scene scene = floorScene();
+    // No local lights: nothing to draw but the global terms.
+    {
+        Renderer renderer(scene, {}, 40, 30);
+        TiledQuadsTechnique tiled({});
+        renderer.renderFrame(tiled, ViewMode::Final);
+        EXPECT_TRUE(tiled.lastLists().lightIndices.empty());
+        const Image image = renderer.readColour();
+        DeferredTechnique deferred({});
+        renderer.renderFrame(deferred, ViewMode::Final);
+        expectSameImage(renderer.readColour(), image);
+    }
+    // The grid follows the image size from frame to frame.
+    std::mt19937 random(2);
+    std::vector<Light> lights;
+    addLightsOverTile(lights, 1, 1, 40, random);
+    addLightsOverTile(lights, 3, 0, 10, random);
+    Renderer renderer(scene, lights, kWidth, kHeight);
+    TiledQuadsTechnique tiled({});
+    DeferredTechnique deferred({});
+    for (const auto& [width, height] : {std::pair{kWidth, kHeight}, std::pair{97, 45}, std::pair{kWidth, kHeight}}) {
+        renderer.resize(width, height);
+        renderer.renderFrame(tiled, ViewMode::Final);
+        EXPECT_EQ(tiled.lastLists().tilesX, (width + 31) / 32);
+        EXPECT_EQ(tiled.lastLists().tilesY, (height + 31) / 32);
+        const Image image = renderer.readColour();
+        renderer.renderFrame(deferred, ViewMode::Final);
+        expectSameImage(renderer.readColour(), image);
+    }
+}
+
+}  // namespace
+}  // namespace manylights

@@ -1,0 +1,269 @@
+// `manylights bench` as scripts meet it: a tiny real sweep through the executable (exit
+// status, the CSV's rows and values, the SVG plot), its usage errors, and the plot's axes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "TestSupport.h"
+#include "apps/cli/SvgPlot.h"
+
+namespace manylights {
+namespace {
+
+using test::runExecutable;
+using test::scratchDirectory;
+
+std::string readText(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, separator))
+        parts.push_back(part);
+    // getline drops a trailing empty field ("a,b," gives two): the CSV's empty last
+    // columns must still count.
+    if (!text.empty() && text.back() == separator)
+        parts.emplace_back();
+    return parts;
+}
+
+// The lines of a text file whose every line ends in '\n'.
+std::vector<std::string> lines(const std::string& text)
+{
+    std::vector<std::string> result = split(text, '\n');
+    if (!result.empty() && result.back().empty())
+        result.pop_back();
+    return result;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what)
+{
+    std::size_t count = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+        ++count;
+    return count;
+}
+
+// Nothing under `dir` at all: no output and no temporary beside it.
+void expectEmpty(const std::filesystem::path& dir)
+{
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+// The whole path users take, kept tiny: two techniques, two light counts, one small size.
+TEST(Bench, TinySweepWritesCsvAndPlot)
+{
+    const auto dir = scratchDirectory();
+    const auto csv = dir / "bench.csv";
+    const auto svg = dir / "bench.svg";
+    const test::ProcessResult result =
+        runExecutable({"bench", "--techniques", "forward,deferred", "--lights", "16,64", "--size", "64x36",
+                       "--frames", "1", "--warmup", "0", "--count-work", "--csv", csv.string(), "--plot",
+                       svg.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    // Not a terminal: one progress line per combination.
+    EXPECT_NE(result.stderrText.find("[4/4] deferred 64 lights 64x36: "), std::string::npos) << result.stderrText;
+
+    const std::string csvText = readText(csv);
+    ASSERT_FALSE(csvText.empty());
+    EXPECT_EQ(csvText.back(), '\n');
+    const std::vector<std::string> rows = lines(csvText);
+    ASSERT_EQ(rows.size(), 5u) << csvText;  // the header and one row per combination
+    const std::vector<std::string> header = split(rows[0], ',');
+    const std::vector<std::string> expectedHeader = {
+        "technique", "lights", "width", "height", "frames", "frame_ms_median", "frame_ms_min", "frame_ms_max",
+        "frame_gpu_ms_median", "fragment_invocations", "passes", "light_evaluations", "in_range_pairs"};
+    ASSERT_EQ(header, expectedHeader);
+    const auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+
+    // Sizes, then light counts, then techniques: the order of the sweep.
+    const std::vector<std::pair<std::string, std::string>> expectedRows = {
+        {"forward", "16"}, {"deferred", "16"}, {"forward", "64"}, {"deferred", "64"}};
+    std::map<std::string, std::vector<std::string>> inRangeByLights;
+    for (std::size_t r = 0; r < expectedRows.size(); ++r) {
+        const std::vector<std::string> row = split(rows[r + 1], ',');
+        ASSERT_EQ(row.size(), header.size()) << rows[r + 1];
+        EXPECT_EQ(row[column("technique")], expectedRows[r].first);
+        EXPECT_EQ(row[column("lights")], expectedRows[r].second);
+        EXPECT_EQ(row[column("width")], "64");
+        EXPECT_EQ(row[column("height")], "36");
+        EXPECT_EQ(row[column("frames")], "1");
+        const double median = std::stod(row[column("frame_ms_median")]);
+        EXPECT_GT(median, 0.0);
+        // With one frame the median is that frame, and so are min and max.
+        EXPECT_EQ(row[column("frame_ms_min")], row[column("frame_ms_median")]);
+        EXPECT_EQ(row[column("frame_ms_max")], row[column("frame_ms_median")]);
+        EXPECT_FALSE(row[column("passes")].empty());
+        const std::uint64_t evaluations = std::stoull(row[column("light_evaluations")]);
+        const std::uint64_t inRange = std::stoull(row[column("in_range_pairs")]);
+        EXPECT_GT(inRange, 0u);
+        EXPECT_GE(evaluations, inRange) << "no technique can evaluate fewer pairs than are in range";
+        inRangeByLights[row[column("lights")]].push_back(row[column("in_range_pairs")]);
+    }
+    // in_range_pairs depends on the scene and the lights, not on the technique.
+    for (const auto& [lights, values] : inRangeByLights) {
+        ASSERT_EQ(values.size(), 2u);
+        EXPECT_EQ(values[0], values[1]) << lights << " lights";
+    }
+    // Passes are name:wall_ms:fragment_invocations, joined by ';'; deferred has two.
+    EXPECT_EQ(split(split(rows[2], ',')[column("passes")], ';').size(), 2u) << rows[2];
+
+    const std::string plot = readText(svg);
+    EXPECT_EQ(plot.rfind("<svg", 0), 0u) << plot.substr(0, 80);
+    EXPECT_NE(plot.find("</svg>"), std::string::npos);
+    EXPECT_EQ(occurrences(plot, "<polyline"), 2u);  // one line per technique
+    EXPECT_NE(plot.find(">forward<"), std::string::npos);
+    EXPECT_NE(plot.find(">deferred<"), std::string::npos);
+    // No temporaries left beside the outputs.
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+struct UsageCase {
+    std::string name;
+    std::vector<std::string> args;
+    std::string phrase;
+    friend void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class BenchUsage : public ::testing::TestWithParam<UsageCase> {};
+
+// A bad command line exits 2 before anything runs, so nothing is written.
+TEST_P(BenchUsage, ExitsTwoAndWritesNothing)
+{
+    const UsageCase& c = GetParam();
+    const auto dir = scratchDirectory();
+    std::vector<std::string> args = {"bench", "--size", "16x16", "--frames", "1", "--warmup", "0",
+                                     "--csv", (dir / "out.csv").string(), "--plot", (dir / "out.svg").string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const test::ProcessResult result = runExecutable(args);
+    EXPECT_EQ(result.exitCode, 2) << result.stderrText;
+    EXPECT_NE(result.stderrText.find(c.phrase), std::string::npos) << result.stderrText;
+    expectEmpty(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BenchUsage,
+    ::testing::Values(UsageCase{"lights_not_a_number", {"--lights", "abc"}, "--lights"},
+                      UsageCase{"lights_one_bad_entry", {"--lights", "16,x"}, "--lights"},
+                      UsageCase{"lights_negative", {"--lights", "16,-4"}, "--lights"},
+                      UsageCase{"lights_repeated", {"--lights", "16,16"}, "lists 16 twice"},
+                      UsageCase{"unknown_technique", {"--techniques", "nope"}, "nope"},
+                      UsageCase{"one_unknown_technique", {"--techniques", "forward,nope"}, "nope"},
+                      UsageCase{"malformed_size", {"--size", "64x36,big"}, "--size"},
+                      UsageCase{"zero_frames", {"--frames", "0"}, "--frames"},
+                      UsageCase{"negative_warmup", {"--warmup", "-1"}, "--warmup"},
+                      UsageCase{"plot_not_svg", {"--plot", "plot.png"}, "--plot"}),
+    [](const ::testing::TestParamInfo<UsageCase>& param) { return param.param.name; });
+
+// Like render: a scene problem is one line on stderr, exit 1, and no file written.
+TEST(Bench, BadSceneIsOneLineExitOne)
+{
+    const auto dir = scratchDirectory();
+    const auto scene = dir / "scene.json";
+    test::writeFile(scene, "{\"ambient\": [0, 0\n");
+    const auto out = dir / "out";
+    std::filesystem::create_directory(out);
+    const test::ProcessResult result = runExecutable(
+        {"bench", scene.string(), "--size", "16x16", "--csv", (out / "b.csv").string(), "--plot",
+         (out / "b.svg").string()});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("scene.json:"), std::string::npos) << result.stderrText;
+    expectEmpty(out);
+}
+
+TEST(Bench, LightsNeedLightSets)
+{
+    const auto dir = scratchDirectory();
+    const auto scene = dir / "scene.json";
+    test::writeFile(scene, R"({"objects": [{"mesh": {"primitive": "plane", "size": [2, 2]}}]})");
+    const test::ProcessResult result = runExecutable({"bench", scene.string(), "--lights", "4", "--size", "16x16"});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.stderrText.find("light_sets"), std::string::npos) << result.stderrText;
+}
+
+// An output that cannot be written fails before the sweep, not after hours of it.
+TEST(Bench, UnwritableCsvFailsFirst)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result =
+        runExecutable({"bench", "--size", "16x16", "--csv", (dir / "missing" / "b.csv").string()});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.stderrText.find("b.csv"), std::string::npos) << result.stderrText;
+    EXPECT_EQ(result.stderrText.find("[1/"), std::string::npos) << "the sweep started: " << result.stderrText;
+}
+
+// --- the plot's axes, without GL ---------------------------------------------------------
+
+TEST(SvgPlot, DecadeRangeCoversTheValues)
+{
+    EXPECT_EQ(decadeRange(256, 65536).first, 2);
+    EXPECT_EQ(decadeRange(256, 65536).last, 5);
+    // Exact powers of ten do not widen the axis by an empty decade.
+    EXPECT_EQ(decadeRange(1000, 100000).first, 3);
+    EXPECT_EQ(decadeRange(1000, 100000).last, 5);
+    EXPECT_EQ(decadeRange(0.05, 0.3).first, -2);
+    EXPECT_EQ(decadeRange(0.05, 0.3).last, 0);
+    // One value still gets a decade.
+    EXPECT_EQ(decadeRange(100, 100).first, 2);
+    EXPECT_EQ(decadeRange(100, 100).last, 3);
+}
+
+TEST(SvgPlot, DecadeLabels)
+{
+    EXPECT_EQ(decadeLabel(0), "1");
+    EXPECT_EQ(decadeLabel(3), "1000");
+    EXPECT_EQ(decadeLabel(4), "10k");
+    EXPECT_EQ(decadeLabel(5), "100k");
+    EXPECT_EQ(decadeLabel(6), "1M");
+    EXPECT_EQ(decadeLabel(-1), "0.1");
+    EXPECT_EQ(decadeLabel(-3), "0.001");
+    EXPECT_EQ(decadeLabel(-4), "1e-4");
+    EXPECT_EQ(decadeLabel(12), "1e12");
+}
+
+TEST(SvgPlot, OnePanelPerSizeOneLinePerSeries)
+{
+    LogLogPlot plot;
+    plot.xLabel = "lights";
+    plot.yLabel = "ms";
+    for (const char* title : {"a <small> & wide", "b"}) {
+        PlotPanel panel;
+        panel.title = title;
+        for (std::size_t s = 0; s < 3; ++s)
+            panel.series.push_back({"series" + std::to_string(s), paletteColour(s),
+                                    {{256, 10.0 + static_cast<double>(s), 9.0, 12.0, "note"},
+                                     {4096, 100.0, 100.0, 100.0, ""},
+                                     {0, 5.0, 5.0, 5.0, ""}}});  // x = 0 is left out
+        plot.panels.push_back(panel);
+    }
+    const std::string svg = logLogSvg(plot);
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+    EXPECT_EQ(occurrences(svg, "<polyline"), 6u);
+    EXPECT_EQ(occurrences(svg, "<g transform="), 2u);
+    EXPECT_NE(svg.find("a &lt;small&gt; &amp; wide"), std::string::npos);  // escaped
+    // Decade labels of both axes: lights 100 to 10k, times 1 to 1000.
+    for (const char* label : {">100<", ">1000<", ">10k<", ">1<", ">10<"})
+        EXPECT_NE(svg.find(label), std::string::npos) << label;
+    EXPECT_EQ(svg.find("nan"), std::string::npos);
+    EXPECT_EQ(svg.find("inf"), std::string::npos);
+    EXPECT_NE(paletteColour(0), paletteColour(1));
+}
+
+}  // namespace
+}  // namespace manylights
