@@ -123,7 +123,8 @@ TEST(Views, LightCountShowsEvaluationsPerPixel)
     const auto dir = test::scratchDirectory();
     // Deferred evaluates all 256 lights of the default scene at each covered pixel, and
     // none at the background.
-    const Image counts = renderPfm("", dir / "count.pfm", {"--size", "96x54", "--view", "light-count"});
+    const Image counts =
+        renderPfm("", dir / "count.pfm", {"--size", "96x54", "--view", "light-count", "--technique", "deferred"});
     const Image normals = renderPfm("", dir / "normal.pfm", {"--size", "96x54", "--view", "normal"});
     for (std::size_t i = 0; i < counts.rgb.size(); i += 3) {
         const bool covered = normals.rgb[i] != 0.0f || normals.rgb[i + 1] != 0.0f || normals.rgb[i + 2] != 0.0f;
