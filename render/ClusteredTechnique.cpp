@@ -147,11 +147,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
         buildClusters(scene, targets);
     }
     auto pass = profiler.pass("lighting");
-    targets.litFramebuffer.bind();
-    glDisable(GL_BLEND);
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    drawCoveredPixels(lighting_);
+    shadeCoveredPixels(scene, targets, lighting_);
 }
 
 }  // namespace manylights

@@ -16,6 +16,25 @@ void drawCoveredPixels(const gl::Program& program)
     glDepthFunc(GL_LESS);
 }
 
+void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program)
+{
+    targets.litFramebuffer.bind();
+    glDisable(GL_BLEND);
+    scene.bind();
+    targets.gbuffer.bindForReading();
+    drawCoveredPixels(program);
+}
+
+void beginAddingToCoveredPixels()
+{
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+}
+
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
     : lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
                 shaderDefines(options))
@@ -26,11 +45,7 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pas
 {
     targets.gbuffer.fill(scene, profiler);
     auto pass = profiler.pass("lighting");
-    targets.litFramebuffer.bind();
-    glDisable(GL_BLEND);
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    drawCoveredPixels(lighting_);
+    shadeCoveredPixels(scene, targets, lighting_);
 }
 
 }  // namespace manylights

@@ -23,4 +23,12 @@ private:
 // Used by every full-screen pass over the G-buffer.
 void drawCoveredPixels(const gl::Program& program);
 
+// A full-screen lighting pass: `program` reads the G-buffer and writes each covered pixel's
+// colour into the lit image (deferred and clustered end with it).
+void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program);
+
+// Sets up adding to the lit image over covered pixels only: additive blending, and the
+// depth test GL_GREATER against the scene's depth for geometry at depth 1, no depth writes.
+void beginAddingToCoveredPixels();
+
 }  // namespace manylights

@@ -109,14 +109,9 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
     tileRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileRangesBinding);
     lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
     const glm::vec2 imageSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
-    // As in drawCoveredPixels: the quads lie at depth 1, so GL_GREATER passes only where a
-    // surface was drawn, and the background is never shaded.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_FALSE);
+    // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
+    // background is never shaded.
+    beginAddingToCoveredPixels();
     for (std::size_t v = 0; v < kVariants; ++v) {
         const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
         if (tiles == 0)

@@ -1,5 +1,6 @@
 #include "render/VolumeTechniques.h"
 
+#include "render/DeferredTechnique.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 
@@ -16,13 +17,8 @@ void shadeGlobalTermsAndUnboundedLights(const GpuScene& scene, FrameTargets& tar
     targets.gbuffer.bindForReading();
     glDisable(GL_BLEND);
     drawer.drawGlobalTerms();
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
     // No volume encloses an unbounded light: it is added over every covered pixel.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_FALSE);
+    beginAddingToCoveredPixels();
     drawer.drawVolumes(VolumeShape::FullScreen, 0, drawer.groups().fullScreen.size());
 }
 

@@ -16,10 +16,10 @@ for view in position normal diffuse specular emissive depth; do
 done
 
 # The techniques side by side (docs/techniques.md).
-for technique in forward deferred volumes stencil; do
+for technique in forward deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
 done
-for technique in deferred volumes stencil; do
+for technique in deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/light-count-$technique.png --size 640x360 --technique $technique --view light-count
 done
 # A few lights, so that the scene shows between the wireframes.

@@ -150,6 +150,14 @@ public:
         std::fflush(stderr);
     }
 
+    void skip(const std::string& label)
+    {
+        ++index_;
+        std::fprintf(stderr, terminal_ ? "\r[%zu/%zu] %s: skipped, over the budget\033[K" : "[%zu/%zu] %s: skipped, over the budget\n",
+                     index_, total_, label.c_str());
+        std::fflush(stderr);
+    }
+
 private:
     std::size_t total_;
     std::size_t index_ = 0;
@@ -385,6 +393,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(CLI::Range(0, kMaxFrames))
         ->capture_default_str();
     bench->add_option("--csv", options.csvPath, "Write one row per combination as CSV");
+    bench->add_option("--budget-ms", options.budgetMs,
+                      "Skip a technique's larger light counts once its median frame exceeds this")
+        ->check(CLI::NonNegativeNumber);
     bench->add_option("--plot", options.plotPath, "Write frame time against lights as an SVG plot")
         ->check([](const std::string& path) {
             return endsWith(path, ".svg") && path.size() > 4 ? std::string()
@@ -417,17 +428,25 @@ void runBench(const BenchOptions& options)
         Progress progress(options.sizes.size() * lightCounts.size() * techniques.size());
         // Sizes outermost and techniques innermost: the techniques at one light count finish
         // together, so an interrupted sweep has compared them all up to where it stopped.
-        for (const ImageSize& size : options.sizes)
+        for (const ImageSize& size : options.sizes) {
+            std::set<std::string> overBudget;
             for (const std::optional<int>& count : lightCounts) {
                 const std::vector<Light> lights = expandLights(scene, count);
                 for (const std::string& technique : techniques) {
                     const std::string label =
                         technique + " " + std::to_string(lights.size()) + " lights " + formatSize(size);
+                    if (overBudget.contains(technique)) {
+                        progress.skip(label);
+                        continue;
+                    }
                     progress.start(label);
                     results.push_back(measure(scene, lights, technique, size, options));
                     progress.finish(label, results.back().frameMs.median);
+                    if (options.budgetMs > 0.0 && results.back().frameMs.median > options.budgetMs)
+                        overBudget.insert(technique);
                 }
             }
+        }
     }
 
     std::printf("%s on %s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s",

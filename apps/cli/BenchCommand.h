@@ -23,6 +23,10 @@ struct BenchOptions {
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
     bool countWork = false;
+    // When a technique's median frame exceeds this at one light count, its later (larger)
+    // counts at that size are skipped: a sweep to a million lights need not wait hours for
+    // forward. 0: no budget.
+    double budgetMs = 0.0;
 };
 
 // Adds the `bench` subcommand to `app`; what it parses lands in `options`. Malformed values
