@@ -6,35 +6,11 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <system_error>
-#include <unistd.h>
 
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 
 namespace manylights {
-
-namespace {
-
-// Writes through `write` into a temporary sibling of `path`, then renames it over `path`.
-template <typename WriteFunction>
-void writeAtomically(const std::filesystem::path& path, WriteFunction write)
-{
-    std::filesystem::path temporary = path;
-    temporary += ".tmp" + std::to_string(::getpid());
-    if (!write(temporary)) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw Error(path.string() + ": cannot write image: " + std::strerror(errno));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw Error(path.string() + ": cannot write image: " + error.message());
-    }
-}
-
-}  // namespace
 
 unsigned char toByte(float value)
 {
@@ -46,7 +22,7 @@ unsigned char toByte(float value)
 
 void writePfm(const Image& image, const std::filesystem::path& path)
 {
-    writeAtomically(path, [&](const std::filesystem::path& file) {
+    writeFileAtomically(path, "image", [&](const std::filesystem::path& file) {
         std::ofstream out(file, std::ios::binary);
         // Scale −1: little-endian floats. Rows run bottom to top.
         out << "PF\n" << image.width << " " << image.height << "\n-1\n";
@@ -62,7 +38,7 @@ void writePng(const Image& image, const std::filesystem::path& path)
 {
     std::vector<unsigned char> bytes(image.rgb.size());
     std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), toByte);
-    writeAtomically(path, [&](const std::filesystem::path& file) {
+    writeFileAtomically(path, "image", [&](const std::filesystem::path& file) {
         return stbi_write_png(file.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) != 0;
     });
 }

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/SvgPlot.h"
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
@@ -454,12 +455,11 @@ void runBench(const BenchOptions& options)
                 options.frames, options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
     std::fflush(stdout);
     if (!options.csvPath.empty())
-        writeTextAtomically(options.csvPath, csvText(results), "CSV");
+        writeTextFileAtomically(options.csvPath, "CSV", csvText(results));
     if (!options.plotPath.empty())
-        writeTextAtomically(options.plotPath,
-                            plotText(results, options, techniques,
-                                     std::filesystem::path(scene.source).filename().string()),
-                            "plot");
+        writeTextFileAtomically(options.plotPath, "plot",
+                                plotText(results, options, techniques,
+                                         std::filesystem::path(scene.source).filename().string()));
 }
 
 }  // namespace manylights

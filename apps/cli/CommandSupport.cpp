@@ -4,19 +4,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <regex>
-#include <unistd.h>
 
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 
 namespace manylights {
-
-namespace {
-
-std::string temporarySibling(const std::string& path) { return path + ".tmp" + std::to_string(::getpid()); }
-
-}  // namespace
 
 std::string parseSize(const std::string& text, ImageSize& size)
 {
@@ -53,28 +46,9 @@ bool endsWith(const std::string& text, const std::string& suffix)
     return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-void writeTextAtomically(const std::string& path, const std::string& text, const std::string& what)
-{
-    const std::string temporary = temporarySibling(path);
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out.flush()) {
-            const int error = errno;
-            std::remove(temporary.c_str());
-            throw Error(path + ": cannot write " + what + ": " + std::strerror(error));
-        }
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int error = errno;
-        std::remove(temporary.c_str());
-        throw Error(path + ": cannot write " + what + ": " + std::strerror(error));
-    }
-}
-
 void checkWritable(const std::string& path, const std::string& what)
 {
-    const std::string temporary = temporarySibling(path);
+    const std::string temporary = temporarySibling(path).string();
     std::FILE* file = std::fopen(temporary.c_str(), "wb");
     if (!file)
         throw Error(path + ": cannot write " + what + ": " + std::strerror(errno));

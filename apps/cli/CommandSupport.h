@@ -1,5 +1,5 @@
 // What the subcommands share: the parsing of option values, the summary of timed frames and
-// atomic file output. One definition each, so `render` and `bench` accept the same sizes and
+// the check that an output can be written (atomic writes themselves are core/AtomicFile.h). One definition each, so `render` and `bench` accept the same sizes and
 // report the same statistics.
 #pragma once
 
@@ -33,10 +33,6 @@ struct Statistics {
 Statistics summarize(std::vector<double> values);
 
 bool endsWith(const std::string& text, const std::string& suffix);
-
-// Writes `text` to a temporary sibling of `path` and renames it into place, so `path` never
-// holds a partial file. Throws manylights::Error naming `path` and `what` ("statistics").
-void writeTextAtomically(const std::string& path, const std::string& text, const std::string& what);
 
 // Throws manylights::Error when a file cannot be created beside `path` (a missing folder, no
 // permission): checked before a long run, so that it fails in a second rather than at the end.

@@ -3,10 +3,11 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/cli/CommandSupport.h"
+#include "core/AtomicFile.h"
+#include "core/Error.h"
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
 #include "scene/DefaultScene.h"
-#include "core/Error.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -105,13 +106,12 @@ void runRender(const RenderOptions& options)
             image = displayableView(image, options.view, renderer.readCoverage());
         writePng(image, options.output);
     }
-    if (measuring)
-        writeTextAtomically(options.statsPath,
-                            statisticsJson(options, scene, lights.size(), frames, context.description(), *technique,
-                                           countWork ? &renderer.lastWorkCounts() : nullptr)
-                                    .dump(2) +
-                                "\n",
-                            "statistics");
+    if (measuring) {
+        const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
+        const nlohmann::json stats =
+            statisticsJson(options, scene, lights.size(), frames, context.description(), *technique, work);
+        writeTextFileAtomically(options.statsPath, "statistics", stats.dump(2) + "\n");
+    }
 }
 
 }  // namespace manylights
