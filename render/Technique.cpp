@@ -29,29 +29,46 @@ gl::Defines shaderDefines(const TechniqueOptions& options)
     return defines;
 }
 
+namespace {
+
+// Every technique, in the order of the docs: the one list the names and the factory come from,
+// so a technique cannot be named without being made or made without being named.
+struct TechniqueEntry {
+    std::string_view name;
+    std::unique_ptr<Technique> (*make)(const TechniqueOptions& options);
+};
+
+template <typename T>
+std::unique_ptr<Technique> make(const TechniqueOptions& options)
+{
+    return std::make_unique<T>(options);
+}
+
+constexpr TechniqueEntry kTechniques[] = {
+    {"forward", make<ForwardTechnique>},       {"deferred", make<DeferredTechnique>},
+    {"volumes", make<VolumesTechnique>},       {"stencil", make<StencilTechnique>},
+    {"tiled-quads", make<TiledQuadsTechnique>}, {"tiled", make<TiledTechnique>},
+    {"clustered", make<ClusteredTechnique>},
+};
+
+}  // namespace
+
 const std::vector<std::string>& techniqueNames()
 {
-    static const std::vector<std::string> names = {"forward", "deferred", "volumes", "stencil",
-                                                   "tiled-quads", "tiled", "clustered"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> result;
+        for (const TechniqueEntry& entry : kTechniques)
+            result.emplace_back(entry.name);
+        return result;
+    }();
     return names;
 }
 
 std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options)
 {
-    if (name == "forward")
-        return std::make_unique<ForwardTechnique>(options);
-    if (name == "deferred")
-        return std::make_unique<DeferredTechnique>(options);
-    if (name == "volumes")
-        return std::make_unique<VolumesTechnique>(options);
-    if (name == "stencil")
-        return std::make_unique<StencilTechnique>(options);
-    if (name == "tiled-quads")
-        return std::make_unique<TiledQuadsTechnique>(options);
-    if (name == "tiled")
-        return std::make_unique<TiledTechnique>(options);
-    if (name == "clustered")
-        return std::make_unique<ClusteredTechnique>(options);
+    for (const TechniqueEntry& entry : kTechniques)
+        if (entry.name == name)
+            return entry.make(options);
     return nullptr;
 }
 
