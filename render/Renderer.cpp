@@ -29,8 +29,7 @@ void checkSize(int width, int height)
 }  // namespace
 
 Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height)
-    : gpuScene_(scene, lights),
-      viewProgram_("gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}})
+    : gpuScene_(scene, lights)
 {
     resize(width, height);
 }
@@ -68,6 +67,9 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         targets_->litFramebuffer.bind();
         gpuScene_.bind();
         targets_->gbuffer.bindForReading();
+        if (!viewProgram_)
+            viewProgram_ = gl::Program("gbuffer view",
+                                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}});
         viewProgram_.set(0, static_cast<int>(view));
         drawCoveredPixels(viewProgram_);
     }
@@ -78,13 +80,26 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 }
 
 namespace {
+// Every texel of `texture`, `components` values of T each, rows top to bottom like Image's
+// (GL's run bottom to top).
+template <typename T>
+std::vector<T> readTopDown(const gl::Texture2D& texture, GLenum format, GLenum type, int components)
+{
+    const std::size_t row = static_cast<std::size_t>(texture.width()) * components;
+    const auto height = static_cast<std::size_t>(texture.height());
+    std::vector<T> bottomUp(row * height);
+    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(bottomUp.size() * sizeof(T)),
+                      bottomUp.data());
+    std::vector<T> topDown(bottomUp.size());
+    for (std::size_t y = 0; y < height; ++y)
+        std::copy_n(&bottomUp[row * (height - 1 - y)], row, &topDown[row * y]);
+    return topDown;
+}
+
 std::uint64_t sumOfTexels(const gl::Texture2D& texture)
 {
-    std::vector<std::uint32_t> values(static_cast<std::size_t>(texture.width()) * texture.height());
-    glGetTextureImage(texture.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                      static_cast<GLsizei>(values.size() * sizeof(std::uint32_t)), values.data());
     std::uint64_t sum = 0;
-    for (std::uint32_t value : values)
+    for (std::uint32_t value : readTopDown<std::uint32_t>(texture, GL_RED_INTEGER, GL_UNSIGNED_INT, 1))
         sum += value;
     return sum;
 }
@@ -134,50 +149,29 @@ void Renderer::drawVolumeOverlay()
 
 Image Renderer::readColour() const
 {
-    const int width = targets_->width;
-    const int height = targets_->height;
-    if (lastView_ == ViewMode::LightCount) {
-        std::vector<std::uint32_t> counts(static_cast<std::size_t>(width) * height);
-        glGetTextureImage(targets_->lightEvaluations.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                          static_cast<GLsizei>(counts.size() * sizeof(std::uint32_t)), counts.data());
-        Image image;
-        image.width = width;
-        image.height = height;
-        image.rgb.resize(counts.size() * 3);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                const auto count = static_cast<float>(counts[static_cast<std::size_t>(height - 1 - y) * width + x]);
-                std::fill(image.pixel(x, y), image.pixel(x, y) + 3, count);
-            }
-        return image;
-    }
-    std::vector<float> rgba(static_cast<std::size_t>(width) * height * 4);
-    glGetTextureImage(targets_->lit.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)),
-                      rgba.data());
     Image image;
-    image.width = width;
-    image.height = height;
-    image.rgb.resize(static_cast<std::size_t>(width) * height * 3);
-    // GL's rows run bottom to top; Image's top to bottom.
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const float* source = &rgba[(static_cast<std::size_t>(height - 1 - y) * width + x) * 4];
-            std::copy(source, source + 3, image.pixel(x, y));
-        }
+    image.width = targets_->width;
+    image.height = targets_->height;
+    image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
+    if (lastView_ == ViewMode::LightCount) {
+        const std::vector<std::uint32_t> counts =
+            readTopDown<std::uint32_t>(targets_->lightEvaluations, GL_RED_INTEGER, GL_UNSIGNED_INT, 1);
+        for (std::size_t i = 0; i < counts.size(); ++i)
+            std::fill_n(&image.rgb[i * 3], 3, static_cast<float>(counts[i]));
+    } else {
+        const std::vector<float> rgba = readTopDown<float>(targets_->lit, GL_RGBA, GL_FLOAT, 4);
+        for (std::size_t i = 0; i < rgba.size() / 4; ++i)
+            std::copy_n(&rgba[i * 4], 3, &image.rgb[i * 3]);
+    }
     return image;
 }
 
 std::vector<bool> Renderer::readCoverage() const
 {
-    const int width = targets_->width;
-    const int height = targets_->height;
-    std::vector<float> depth(static_cast<std::size_t>(width) * height);
-    glGetTextureImage(targets_->depthStencil.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+    const std::vector<float> depth = readTopDown<float>(targets_->depthStencil, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
     std::vector<bool> covered(depth.size());
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            covered[static_cast<std::size_t>(y) * width + x] = depth[static_cast<std::size_t>(height - 1 - y) * width + x] < 1.0f;
+    for (std::size_t i = 0; i < depth.size(); ++i)
+        covered[i] = depth[i] < 1.0f;
     return covered;
 }
 

@@ -56,6 +56,8 @@ private:
     void countWork();
     void drawVolumeOverlay();
 
+    // The debug and counting programs are made on first use: most runs render the final image
+    // only and need not compile them.
     gl::Program viewProgram_;
     gl::Program inRangeProgram_;  // made on first use of work counting
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
