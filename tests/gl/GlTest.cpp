@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 
+#include "GlContextTest.h"
 #include "gl/Buffer.h"
 #include "gl/Debug.h"
 #include "gl/Framebuffer.h"
@@ -19,15 +20,7 @@
 namespace manylights {
 namespace {
 
-class GlTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<HeadlessContext>(ContextOptions{.debug = true}); }
-    static void TearDownTestSuite() { context_.reset(); }
-    void TearDown() override { gl::checkNoError("end of test"); }
-
-    static std::unique_ptr<HeadlessContext> context_;
-};
-std::unique_ptr<HeadlessContext> GlTest::context_;
+class GlTest : public GlContextTest {};
 
 // A reader over an in-memory set of shader files, for include and error tests.
 gl::ShaderFileReader memoryReader(std::map<std::string, std::string> files)
@@ -50,7 +43,7 @@ TEST_F(GlTest, ContextIsOpenGL45Core)
     glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
     EXPECT_GE(major * 10 + minor, 45);
     EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
-    EXPECT_NE(context_->description().find("via EGL"), std::string::npos) << context_->description();
+    EXPECT_NE(context().description().find("via EGL"), std::string::npos) << context().description();
 }
 
 TEST_F(GlTest, BufferRoundTripsDataAndMoves)

@@ -8,8 +8,7 @@
 #include <random>
 #include <set>
 
-#include "gl/Debug.h"
-#include "platform/HeadlessContext.h"
+#include "GlContextTest.h"
 #include "render/DeferredTechnique.h"
 #include "render/Renderer.h"
 #include "render/TiledQuadsTechnique.h"
@@ -18,15 +17,7 @@
 namespace manylights {
 namespace {
 
-class TiledQuadsTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<HeadlessContext>(ContextOptions{.debug = true}); }
-    static void TearDownTestSuite() { context_.reset(); }
-    void TearDown() override { gl::checkNoError("end of test"); }
-
-    static std::unique_ptr<HeadlessContext> context_;
-};
-std::unique_ptr<HeadlessContext> TiledQuadsTest::context_;
+class TiledQuadsTest : public GlContextTest {};
 
 constexpr int kWidth = 160;  // 5x2 tiles of 32 pixels
 constexpr int kHeight = 64;
