@@ -36,7 +36,7 @@ public:
     TileFrustums(const TileCullingView& view, int tilesX, int tilesY) : tilesX_(tilesX)
     {
         const double tanY = std::tan(0.5 * static_cast<double>(view.fovY));
-        const double tanX = tanY * static_cast<double>(view.aspect);
+        const double tanX = tanY * static_cast<double>(view.aspect());
         // Slopes (view-space x / depth) of the pixel edges between tiles; the last edge is
         // the image's, which may cut the last tile short.
         const auto slopes = [](int tiles, int tileSize, int pixels, double tanHalf) {
@@ -181,14 +181,14 @@ std::pair<int, int> tileSpan(double low, double high, int tileSize, int tiles)
 const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<const GpuLight> lights)
 {
     ML_ASSERT(view.width > 0 && view.height > 0 && view.tileSize > 0);
-    ML_ASSERT(view.nearPlane > 0.0f && view.farPlane > view.nearPlane && view.fovY > 0.0f && view.aspect > 0.0f);
+    ML_ASSERT(view.nearPlane > 0.0f && view.farPlane > view.nearPlane && view.fovY > 0.0f && view.width > 0 && view.height > 0);
     ML_ASSERT(lights.size() < std::numeric_limits<std::uint32_t>::max());
     const int tilesX = (view.width + view.tileSize - 1) / view.tileSize;
     const int tilesY = (view.height + view.tileSize - 1) / view.tileSize;
     const auto tileCount = static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY);
     const TileFrustums frustums(view, tilesX, tilesY);
     const double tanY = std::tan(0.5 * static_cast<double>(view.fovY));
-    const double tanX = tanY * static_cast<double>(view.aspect);
+    const double tanX = tanY * static_cast<double>(view.aspect());
     const float nearLimit = view.nearPlane * (1.0f - kDepthMargin);
     const float farLimit = view.farPlane * (1.0f + kDepthMargin);
     // The eye in world space: the scale of the coordinates the view transform rounds.

@@ -26,12 +26,13 @@ inline constexpr int kDefaultTileSize = 32;
 struct TileCullingView {
     glm::mat4 view{1.0f};  // world to view space
     float fovY = 0.0f;     // vertical field of view, radians
-    float aspect = 1.0f;   // width / height
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
     int width = 0;  // image size, pixels
     int height = 0;
     int tileSize = kDefaultTileSize;
+
+    float aspect() const { return static_cast<float>(width) / static_cast<float>(height); }
 };
 
 // One tile's lights within TileLightLists::lightIndices; std430 layout of a uvec2.

@@ -70,7 +70,6 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     TileCullingView view;
     view.view = frame.view;
     view.fovY = 2.0f * std::atan(frame.projection.y);
-    view.aspect = static_cast<float>(targets.width) / static_cast<float>(targets.height);
     view.nearPlane = frame.projection.z;
     view.farPlane = frame.projection.w;
     view.width = targets.width;

@@ -25,7 +25,6 @@ TileCullingView simpleView()
     TileCullingView view;
     view.view = glm::mat4(1.0f);
     view.fovY = glm::radians(90.0f);
-    view.aspect = 1.0f;
     view.nearPlane = 0.1f;
     view.farPlane = 100.0f;
     view.width = 256;
@@ -286,7 +285,7 @@ BruteForceResult bruteForceCheck(const TileCullingView& view, std::uint32_t seed
     const TileLightLists lists = cullLightsToTiles(view, lights);
 
     const float tanY = std::tan(view.fovY / 2.0f);
-    const float tanX = tanY * view.aspect;
+    const float tanX = tanY * view.aspect();
     // Whether some sample along the ray through pixel (px, py) is lit by `light`.
     const auto litThroughPixel = [&](const GpuLight& light, float px, float py) {
         const glm::vec3 dir =
@@ -348,7 +347,6 @@ TEST(TileCulling, NeverDropsALitPixel)
     slanted.fovY = glm::radians(50.0f);
     slanted.width = 320;
     slanted.height = 180;
-    slanted.aspect = 320.0f / 180.0f;
     slanted.nearPlane = 0.5f;
     slanted.farPlane = 30.0f;
     // A wide, tall view with a distant near plane and small tiles, rolled about its axis.
@@ -357,7 +355,6 @@ TEST(TileCulling, NeverDropsALitPixel)
     wide.fovY = glm::radians(100.0f);
     wide.width = 150;
     wide.height = 200;
-    wide.aspect = 150.0f / 200.0f;
     wide.nearPlane = 1.5f;
     wide.farPlane = 25.0f;
     wide.tileSize = 16;
@@ -384,7 +381,6 @@ TEST(TileCulling, ManyLightsAtFullResolution)
     view.fovY = glm::radians(45.0f);
     view.width = 1280;
     view.height = 720;
-    view.aspect = 1280.0f / 720.0f;
     view.nearPlane = 0.1f;
     view.farPlane = 200.0f;
     std::mt19937 random(5);
