@@ -181,7 +181,8 @@ std::pair<int, int> tileSpan(double low, double high, int tileSize, int tiles)
 const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<const GpuLight> lights)
 {
     ML_ASSERT(view.width > 0 && view.height > 0 && view.tileSize > 0);
-    ML_ASSERT(view.nearPlane > 0.0f && view.farPlane > view.nearPlane && view.fovY > 0.0f && view.width > 0 && view.height > 0);
+    ML_ASSERT(view.nearPlane > 0.0f && view.farPlane > view.nearPlane && view.fovY > 0.0f);
+    ML_ASSERT(view.width > 0 && view.height > 0);
     ML_ASSERT(lights.size() < std::numeric_limits<std::uint32_t>::max());
     const int tilesX = (view.width + view.tileSize - 1) / view.tileSize;
     const int tilesY = (view.height + view.tileSize - 1) / view.tileSize;
