@@ -66,8 +66,16 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     std::vector<Vertex> allVertices;
     std::vector<std::uint32_t> allIndices;
     for (const Mesh& mesh : scene.meshes) {
-        meshRanges_.push_back({static_cast<GLint>(allVertices.size()), allIndices.size(),
-                               static_cast<GLsizei>(mesh.indices.size())});
+        const auto baseVertex = static_cast<GLint>(allVertices.size());
+        if (mesh.subMeshes.empty())
+            meshRanges_.push_back({{baseVertex, allIndices.size(), static_cast<GLsizei>(mesh.indices.size()), {}}});
+        else {
+            std::vector<MeshRange> ranges;
+            for (const SubMesh& sub : mesh.subMeshes)
+                ranges.push_back({baseVertex, allIndices.size() + sub.firstIndex,
+                                  static_cast<GLsizei>(sub.indexCount), sub.material});
+            meshRanges_.push_back(std::move(ranges));
+        }
         allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
         allIndices.insert(allIndices.end(), mesh.indices.begin(), mesh.indices.end());
     }
@@ -77,10 +85,15 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     vertexArray_.setFloatAttribute(0, 0, 3, offsetof(Vertex, position));
     vertexArray_.setFloatAttribute(1, 0, 3, offsetof(Vertex, normal));
     vertexArray_.setFloatAttribute(2, 0, 2, offsetof(Vertex, uv));
+    vertexArray_.setFloatAttribute(3, 0, 4, offsetof(Vertex, tangent));
     vertexArray_.setIndexBuffer(indices_);
 
     for (const Object& object : scene.objects)
-        draws_.push_back({object.transform, normalMatrix(object.transform), object.mesh, object.material});
+        for (const MeshRange& range : meshRanges_[object.mesh]) {
+            const std::size_t material =
+                object.materialOverridesMesh || !range.material ? object.material : *range.material;
+            draws_.push_back({object.transform, normalMatrix(object.transform), range, material});
+        }
 
     packedLights_.reserve(lights.size());
     for (const Light& light : lights)
@@ -116,7 +129,7 @@ void GpuScene::drawObjects(const gl::Program& program) const
         program.set(kSpecular, material.specular);
         program.set(kShininess, material.shininess);
         program.set(kEmissive, material.emissive);
-        const MeshRange& range = meshRanges_[draw.mesh];
+        const MeshRange& range = draw.range;
         glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
                                  range.baseVertex);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -62,20 +63,22 @@ public:
     const FrameUniforms& frameUniforms() const { return frame_; }
 
 private:
+    // One sub-mesh's place in the shared buffers.
     struct MeshRange {
         GLint baseVertex;
         std::size_t firstIndex;
         GLsizei indexCount;
+        std::optional<std::size_t> material;  // the mesh file's own, if any
     };
     struct DrawItem {
         glm::mat4 model;
         glm::mat3 normalMatrix;
-        std::size_t mesh;
+        MeshRange range;
         std::size_t material;
     };
 
     const Scene& scene_;
-    std::vector<MeshRange> meshRanges_;
+    std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;

@@ -94,6 +94,20 @@ struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv;
+    // Tangent-space basis for normal maps: xyz the unit tangent (direction of increasing u),
+    // w the handedness (±1; bitangent = w · cross(normal, tangent)). All zero when the mesh has
+    // no texture coordinates to derive it from.
+    glm::vec4 tangent{0.0f};
+};
+
+// A range of a mesh's index list drawn with one material: a model file may give different
+// groups different materials, all in the one vertex buffer of the model.
+struct SubMesh {
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    // The mesh file's own material for this range (index into Scene::materials); none means the
+    // object's material.
+    std::optional<std::size_t> material;
 };
 
 struct Bounds {
@@ -112,6 +126,8 @@ struct Mesh {
     std::string name;  // the primitive's description or the file it came from
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
+    // Empty: the whole index list is one range drawn with the object's material.
+    std::vector<SubMesh> subMeshes;
     Bounds bounds() const;
 };
 
@@ -120,6 +136,9 @@ struct Object {
     std::size_t mesh = 0;      // index into Scene::meshes
     std::size_t material = 0;  // index into Scene::materials
     glm::mat4 transform{1.0f};
+    // True when the object names its material: it then replaces the mesh file's own materials
+    // (SPEC.md §1: a file's materials are used only when the object names none).
+    bool materialOverridesMesh = true;
 };
 
 // Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.

@@ -884,6 +884,7 @@ private:
             object.name = "objects[" + std::to_string(index) + "]";
         object.mesh = readMesh(required(node, "mesh"));
         object.material = objectMaterial(node);
+        object.materialOverridesMesh = member(node, "material").has_value();
         if (const auto transform = member(node, "transform"))
             object.transform = readTransform(*transform);
         return object;

@@ -6,6 +6,7 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;  // xyz tangent, w handedness; zero without uvs
 
 layout(location = 0) uniform mat4 model;
 layout(location = 1) uniform mat3 normalMatrix;
@@ -13,6 +14,7 @@ layout(location = 1) uniform mat3 normalMatrix;
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec2 uv;
+layout(location = 3) out vec4 worldTangent;
 
 void main()
 {
@@ -20,5 +22,7 @@ void main()
     worldPosition = world.xyz;
     worldNormal = normalMatrix * inNormal;
     uv = inUv;
+    // Tangents transform with the model matrix (they lie in the surface), not the normal matrix.
+    worldTangent = vec4(mat3(model) * inTangent.xyz, inTangent.w);
     gl_Position = frame.viewProjection * world;
 }
