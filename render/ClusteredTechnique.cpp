@@ -46,8 +46,10 @@ void clearToZero(const gl::Buffer& buffer)
 }  // namespace
 
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
-    : depthRange_("cluster depth range", {{GL_COMPUTE_SHADER, "cluster_depth_range.comp"}}, gridDefines()),
-      occupancy_("cluster occupancy", {{GL_COMPUTE_SHADER, "cluster_occupancy.comp"}}, gridDefines()),
+    : depthRange_("cluster depth range", {{GL_COMPUTE_SHADER, "cluster_depth_range.comp"}},
+                  gridDefines(gbufferDefines(options.gbufferLayout))),
+      occupancy_("cluster occupancy", {{GL_COMPUTE_SHADER, "cluster_occupancy.comp"}},
+                 gridDefines(gbufferDefines(options.gbufferLayout))),
       countLights_("cluster light counts", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, gridDefines()),
       offsets_("cluster offsets", {{GL_COMPUTE_SHADER, "cluster_offsets.comp"}}, gridDefines()),
       fillLists_("cluster light lists", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, fillDefines()),

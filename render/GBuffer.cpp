@@ -6,20 +6,44 @@
 namespace manylights {
 
 namespace {
-std::array<gl::Texture2D, kGBufferColourTargets.size()> makeTargets(int width, int height)
+std::array<gl::Texture2D, kSeedGBufferTargets.size()> makeTargets(int width, int height, GBufferLayout layout)
 {
-    std::array<gl::Texture2D, kGBufferColourTargets.size()> targets;
+    const auto& layoutTargets = gbufferColourTargets(layout);
+    std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets;
     for (std::size_t i = 0; i < targets.size(); ++i)
-        targets[i] = gl::Texture2D(std::string("gbuffer ") + std::string(kGBufferColourTargets[i].name),
-                                   kGBufferColourTargets[i].format, width, height);
+        targets[i] = gl::Texture2D(std::string("gbuffer ") + std::string(layoutTargets[i].name),
+                                   layoutTargets[i].format, width, height);
     return targets;
 }
 }  // namespace
 
-GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil)
-    : targets_(makeTargets(width, height)),
+std::string_view gbufferLayoutName(GBufferLayout layout)
+{
+    return layout == GBufferLayout::Seed ? "seed" : "compact";
+}
+
+std::optional<GBufferLayout> parseGBufferLayout(std::string_view name)
+{
+    if (name == "seed")
+        return GBufferLayout::Seed;
+    if (name == "compact")
+        return GBufferLayout::Compact;
+    return std::nullopt;
+}
+
+gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines)
+{
+    if (layout == GBufferLayout::Compact)
+        defines.emplace_back("GBUFFER_COMPACT", "1");
+    return defines;
+}
+
+GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBufferLayout layout)
+    : layout_(layout),
+      targets_(makeTargets(width, height, layout)),
       framebuffer_("gbuffer", {&targets_[0], &targets_[1], &targets_[2], &targets_[3], &targets_[4]}, &depthStencil),
-      program_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}})
+      program_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+               gbufferDefines(layout))
 {
 }
 

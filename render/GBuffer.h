@@ -1,8 +1,10 @@
-// The G-buffer ("seed layout": explicit world position, every quantity displayable) and the
-// geometry pass that fills it. docs/gbuffer.md shows each target.
+// The G-buffer in one of two layouts (seed: explicit world position, every quantity a 32-bit
+// float; compact: position from depth, packed normal and colours) and the geometry pass that
+// fills it. docs/gbuffer.md shows each target.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string_view>
 
 #include "gl/Framebuffer.h"
@@ -21,36 +23,78 @@ struct GBufferTarget {
     std::string_view contents;
 };
 
-// Every quantity in full 32-bit float precision, exactly as the forward shader sees it: the
-// deferred image then equals forward's to float rounding, not to the G-buffer's precision
-// (tests/image/TechniqueAgreementTest.cpp). Half floats were tried and rejected: llvmpipe
-// truncates to half, a relative error of up to 2^-10 in every colour, and the normal's error
-// is amplified by specular powers. This explicit layout is for teaching and reference; its
-// bytes per pixel are the price (docs/gbuffer.md).
-inline constexpr std::array<GBufferTarget, 5> kGBufferColourTargets = {{
+// Which G-buffer the deferred techniques write and read (--gbuffer). Each shader that touches
+// the G-buffer is compiled for one layout (#define GBUFFER_COMPACT, gbufferDefines).
+enum class GBufferLayout {
+    Seed,     // every quantity as a 32-bit float: exact, 84 bytes per pixel
+    Compact,  // position from depth, octahedral normal, 8-bit colours: 28 bytes per pixel
+};
+inline constexpr GBufferLayout kDefaultGBufferLayout = GBufferLayout::Compact;
+
+std::string_view gbufferLayoutName(GBufferLayout layout);  // "seed" or "compact"
+std::optional<GBufferLayout> parseGBufferLayout(std::string_view name);
+// The shader #defines that select `layout` in shaders/lib/gbuffer*.glsl.
+gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines = {});
+
+// Seed layout: every quantity in full 32-bit float precision, exactly as the forward shader
+// sees it: the deferred image then equals forward's to float rounding, not to the G-buffer's
+// precision (tests/image/TechniqueAgreementTest.cpp). Half floats were tried and rejected:
+// llvmpipe truncates to half, a relative error of up to 2^-10 in every colour, and the normal's
+// error is amplified by specular powers. This explicit layout is for teaching and reference;
+// its bytes per pixel are the price (docs/gbuffer.md).
+inline constexpr std::array<GBufferTarget, 5> kSeedGBufferTargets = {{
     {"position_shininess", GL_RGBA32F, 16, "world-space position xyz, shininess in w"},
     {"normal", GL_RGBA32F, 16, "world-space unit normal xyz, w unused"},
     {"diffuse", GL_RGBA32F, 16, "kd rgb, w unused"},
     {"specular", GL_RGBA32F, 16, "ks rgb, w unused"},
     {"emissive", GL_RGBA32F, 16, "ke rgb (may exceed 1), w unused"},
 }};
-// Depth and stencil (the stencil serves the stencil-volume technique).
+
+// Compact layout (the default; docs/gbuffer.md derives each precision and the test tolerances):
+// - The position is not stored: a 32-bit float view depth (distance along the view axis) and
+//   the pixel's ray give it back. The hardware depth (24-bit, non-linear) would lose ~1e-4 of
+//   a unit at 15 units from a 0.1 near plane, far more than float rounding, and a 32-bit float
+//   depth buffer has the same 2^-24 steps near 1; a linear float depth keeps ~1e-7 relative.
+// - The normal is octahedral-encoded in two 16-bit unorm channels (RG16 is colour-renderable
+//   in core GL, RG16_SNORM is not required to be): ≤ ~3e-5 rad of error.
+// - kd and ks in 8-bit unorm (≤ 0.5/255 absolute per channel); the shininess as a 16-bit code
+//   of log2(s) / 16 split over the two alpha bytes (s in [1, 65536], ≤ 8.5e-5 relative).
+// - ke may exceed 1 (light markers), so it stays floating point: half floats, ≤ 2^-10
+//   relative (llvmpipe truncates). R11G11B10F would save 4 bytes at 2^-5 relative in blue.
+inline constexpr std::array<GBufferTarget, 5> kCompactGBufferTargets = {{
+    {"view_depth", GL_R32F, 4, "view-space depth along the view axis; position = eye + ray · depth"},
+    {"normal", GL_RG16, 4, "octahedral-encoded world-space unit normal"},
+    {"diffuse_shininess_high", GL_RGBA8, 4, "kd rgb; high byte of the 16-bit log2 shininess code"},
+    {"specular_shininess_low", GL_RGBA8, 4, "ks rgb; low byte of the shininess code"},
+    {"emissive", GL_RGBA16F, 8, "ke rgb as half floats (may exceed 1); a unused"},
+}};
+
+constexpr const std::array<GBufferTarget, 5>& gbufferColourTargets(GBufferLayout layout)
+{
+    return layout == GBufferLayout::Seed ? kSeedGBufferTargets : kCompactGBufferTargets;
+}
+
+// Depth and stencil (the stencil serves the stencil-volume technique); both layouts share it.
 inline constexpr GBufferTarget kDepthStencilTarget = {"depth_stencil", GL_DEPTH24_STENCIL8, 4,
                                                       "24-bit depth, 8-bit stencil"};
 
-constexpr int gbufferBytesPerPixel()
+constexpr int gbufferBytesPerPixel(GBufferLayout layout)
 {
     int bytes = kDepthStencilTarget.bytesPerPixel;
-    for (const GBufferTarget& target : kGBufferColourTargets)
+    for (const GBufferTarget& target : gbufferColourTargets(layout))
         bytes += target.bytesPerPixel;
     return bytes;
 }
+static_assert(2 * gbufferBytesPerPixel(GBufferLayout::Compact) <= gbufferBytesPerPixel(GBufferLayout::Seed),
+              "the compact layout must take at most half the seed layout's memory");
 
 class GBuffer {
 public:
     // `depthStencil` is shared with the lit image's framebuffer, so later passes can depth-test
     // against the scene's surfaces.
-    GBuffer(int width, int height, const gl::Texture2D& depthStencil);
+    GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBufferLayout layout);
+
+    GBufferLayout layout() const { return layout_; }
 
     // The geometry pass: clears and fills every target, as a profiled pass or not.
     void fill(const GpuScene& scene, PassProfiler& profiler) const;
@@ -59,7 +103,8 @@ public:
     void bindForReading() const;
 
 private:
-    std::array<gl::Texture2D, kGBufferColourTargets.size()> targets_;
+    GBufferLayout layout_;
+    std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
     gl::Framebuffer framebuffer_;
     gl::Program program_;
 };

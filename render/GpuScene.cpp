@@ -88,6 +88,18 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     vertexArray_.setFloatAttribute(3, 0, 4, offsetof(Vertex, tangent));
     vertexArray_.setIndexBuffer(indices_);
 
+    // Colour maps are sRGB-encoded 8-bit images; normal and specular maps hold data.
+    for (const Material& material : scene.materials) {
+        MaterialMaps maps;
+        if (!material.diffuseMap.empty())
+            maps.diffuse = &textures_.get(material.diffuseMap, TextureColourSpace::Srgb);
+        if (!material.specularMap.empty())
+            maps.specular = &textures_.get(material.specularMap, TextureColourSpace::Linear);
+        if (!material.normalMap.empty())
+            maps.normal = &textures_.get(material.normalMap, TextureColourSpace::Linear);
+        materialMaps_.push_back(maps);
+    }
+
     for (const Object& object : scene.objects)
         for (const MeshRange& range : meshRanges_[object.mesh]) {
             const std::size_t material =
@@ -118,22 +130,54 @@ void GpuScene::bind() const
 
 void GpuScene::drawObjects(const gl::Program& program) const
 {
-    // Locations of shaders/mesh.vert and shaders/lib/material.glsl.
-    enum : GLint { kModel = 0, kNormalMatrix = 1, kDiffuse = 10, kSpecular = 11, kShininess = 12, kEmissive = 13 };
+    // Locations of shaders/mesh.vert.
+    enum : GLint { kModel = 0, kNormalMatrix = 1 };
     program.use();
     for (const DrawItem& draw : draws_) {
-        const Material& material = scene_.materials[draw.material];
         program.set(kModel, draw.model);
         program.set(kNormalMatrix, draw.normalMatrix);
-        program.set(kDiffuse, material.diffuse);
-        program.set(kSpecular, material.specular);
-        program.set(kShininess, material.shininess);
-        program.set(kEmissive, material.emissive);
+        bindMaterial(program, draw.material);
         const MeshRange& range = draw.range;
         glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
                                  range.baseVertex);
     }
+}
+
+void GpuScene::bindMaterial(const gl::Program& program, std::size_t materialIndex) const
+{
+    // Locations and units of shaders/lib/material.glsl.
+    enum : GLint {
+        kDiffuse = 10,
+        kSpecular = 11,
+        kShininess = 12,
+        kEmissive = 13,
+        kMaps = 14,
+        kNormalScale = 15,
+    };
+    enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8 };
+    enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4 };
+    const Material& material = scene_.materials[materialIndex];
+    const MaterialMaps& maps = materialMaps_[materialIndex];
+    program.set(kDiffuse, material.diffuse);
+    program.set(kSpecular, material.specular);
+    program.set(kShininess, material.shininess);
+    program.set(kEmissive, material.emissive);
+    int present = 0;
+    if (maps.diffuse) {
+        maps.diffuse->bindUnit(kDiffuseUnit);
+        present |= kHasDiffuseMap;
+    }
+    if (maps.specular) {
+        maps.specular->bindUnit(kSpecularUnit);
+        present |= kHasSpecularMap;
+    }
+    if (maps.normal) {
+        maps.normal->bindUnit(kNormalUnit);
+        present |= kHasNormalMap;
+    }
+    program.set(kMaps, present);
+    program.set(kNormalScale, material.normalScale);
 }
 
 }  // namespace manylights

@@ -12,6 +12,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
+#include "render/TextureCache.h"
 #include "scene/Scene.h"
 
 namespace manylights {
@@ -49,18 +50,20 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
 class GpuScene {
 public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights).
+    // Loads every material's textures; throws manylights::Error for a broken one.
     GpuScene(const Scene& scene, const std::vector<Light>& lights);
 
     // Binds the vertex array, the frame uniforms and the light buffer.
     void bind() const;
     // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
-    // shaders/lib/material.glsl.
+    // shaders/lib/material.glsl and binding the material's maps (texture units 6-8).
     void drawObjects(const gl::Program& program) const;
     void setViewport(int width, int height);
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
+    const TextureCache& textures() const { return textures_; }
 
 private:
     // One sub-mesh's place in the shared buffers.
@@ -77,7 +80,17 @@ private:
         std::size_t material;
     };
 
+    // A material's maps in the texture cache; null where the material has none.
+    struct MaterialMaps {
+        const gl::MipmappedTexture2D* diffuse = nullptr;
+        const gl::MipmappedTexture2D* specular = nullptr;
+        const gl::MipmappedTexture2D* normal = nullptr;
+    };
+    void bindMaterial(const gl::Program& program, std::size_t material) const;
+
     const Scene& scene_;
+    TextureCache textures_;
+    std::vector<MaterialMaps> materialMaps_;  // per scene material
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;

@@ -28,8 +28,9 @@ void checkSize(int width, int height)
 
 }  // namespace
 
-Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height)
-    : gpuScene_(scene, lights)
+Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height,
+                   GBufferLayout gbufferLayout)
+    : gpuScene_(scene, lights), gbufferLayout_(gbufferLayout)
 {
     resize(width, height);
 }
@@ -38,7 +39,7 @@ void Renderer::resize(int width, int height)
 {
     checkSize(width, height);
     targets_.reset();  // free the old targets before allocating the new ones
-    targets_ = std::make_unique<FrameTargets>(width, height);
+    targets_ = std::make_unique<FrameTargets>(width, height, gbufferLayout_);
     gpuScene_.setViewport(width, height);
 }
 
@@ -69,7 +70,8 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         targets_->gbuffer.bindForReading();
         if (!viewProgram_)
             viewProgram_ = gl::Program("gbuffer view",
-                                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}});
+                                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}},
+                                       gbufferDefines(gbufferLayout_));
         viewProgram_.set(0, static_cast<int>(view));
         drawCoveredPixels(viewProgram_);
     }
@@ -116,7 +118,8 @@ void Renderer::countWork()
     targets_->depthStencil.bindUnit(5);
     glBindImageTexture(1, targets_->inRangeCounts.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     if (!inRangeProgram_)
-        inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}});
+        inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}},
+                                      gbufferDefines(gbufferLayout_));
     inRangeProgram_.use();
     constexpr int kGroupSize = 8;  // local_size of shaders/in_range.comp
     glDispatchCompute(static_cast<GLuint>((width() + kGroupSize - 1) / kGroupSize),

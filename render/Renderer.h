@@ -24,8 +24,11 @@ struct WorkCounts {
 
 class Renderer {
 public:
-    // Throws manylights::Error when the size exceeds what the GL implementation supports.
-    Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height);
+    // Throws manylights::Error when the size exceeds what the GL implementation supports, or a
+    // material's texture cannot be loaded. Techniques rendered with it must have been made with
+    // the same TechniqueOptions::gbufferLayout.
+    Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height,
+             GBufferLayout gbufferLayout = kDefaultGBufferLayout);
 
     // Rebuilds every size-dependent resource (the passes and programs stay).
     void resize(int width, int height);
@@ -52,6 +55,7 @@ public:
 
 private:
     GpuScene gpuScene_;
+    GBufferLayout gbufferLayout_;
     std::unique_ptr<FrameTargets> targets_;
     void countWork();
     void drawVolumeOverlay();

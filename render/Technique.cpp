@@ -9,13 +9,13 @@
 
 namespace manylights {
 
-FrameTargets::FrameTargets(int width_, int height_)
+FrameTargets::FrameTargets(int width_, int height_, GBufferLayout gbufferLayout)
     : width(width_),
       height(height_),
       depthStencil("depth stencil", kDepthStencilTarget.format, width_, height_),
       lit("lit colour", GL_RGBA32F, width_, height_),
       litFramebuffer("lit", {&lit}, &depthStencil),
-      gbuffer(width_, height_, depthStencil),
+      gbuffer(width_, height_, depthStencil, gbufferLayout),
       lightEvaluations("light evaluations", GL_R32UI, width_, height_),
       inRangeCounts("in-range lights", GL_R32UI, width_, height_)
 {
@@ -23,7 +23,7 @@ FrameTargets::FrameTargets(int width_, int height_)
 
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
-    gl::Defines defines;
+    gl::Defines defines = gbufferDefines(options.gbufferLayout);
     if (options.countWork)
         defines.emplace_back("COUNT_WORK", "1");
     return defines;

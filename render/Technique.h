@@ -18,7 +18,7 @@ class PassProfiler;
 
 // The size-dependent resources of a frame; rebuilt on resize, the techniques are not.
 struct FrameTargets {
-    FrameTargets(int width, int height);
+    FrameTargets(int width, int height, GBufferLayout gbufferLayout = kDefaultGBufferLayout);
 
     int width;
     int height;
@@ -36,6 +36,9 @@ struct TechniqueOptions {
     // FrameTargets::lightEvaluations (--count-work, --view light-count). Costs an atomic per
     // fragment, so timings taken with it are not the technique's own.
     bool countWork = false;
+    // The G-buffer the technique's shaders read; must be the layout of the FrameTargets it
+    // renders into (Renderer's).
+    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
 };
 
 // The shader #defines that realise `options`.

@@ -13,7 +13,7 @@ constexpr GLuint kVolumeLightsBinding = 1;
 }  // namespace
 
 VolumeDrawer::VolumeDrawer(const gl::Defines& defines)
-    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}}),
+    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}}, defines),
       lighting_("light volumes", {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume.frag"}}, defines),
       vertexArray_("light volume meshes")
 {

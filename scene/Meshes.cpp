@@ -16,6 +16,7 @@
 #include <tiny_obj_loader.h>
 
 #include "core/Error.h"
+#include "scene/Tangents.h"
 
 namespace manylights {
 
@@ -131,6 +132,7 @@ Mesh makePlane(float sizeX, float sizeZ)
     Mesh mesh;
     mesh.name = "plane " + formatNumber(sizeX) + "x" + formatNumber(sizeZ);
     addQuad(mesh, glm::vec3{0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, 0.5f * sizeX, 0.5f * sizeZ);
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 
@@ -157,6 +159,7 @@ Mesh makeBox(const glm::vec3& size)
         addQuad(mesh, normal * half, face.u, face.v, glm::dot(glm::abs(face.u), half),
                 glm::dot(glm::abs(face.v), half));
     }
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 
@@ -183,6 +186,7 @@ Mesh makeSphere(float radius, int slices, int stacks)
         }
     }
     addGridTriangles(mesh, 0, stacks, slices);
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 
@@ -217,6 +221,7 @@ Mesh makeCone(float radius, float height, int slices)
         addTriangle(mesh, base + offset, base + offset + 1, apex + offset);
     }
     addDisc(mesh, radius, bottom, false, slices);
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 
@@ -237,6 +242,7 @@ Mesh makeCylinder(float radius, float height, int slices)
     addGridTriangles(mesh, 0, 1, slices);
     addDisc(mesh, radius, half, true, slices);
     addDisc(mesh, radius, -half, false, slices);
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 
@@ -260,6 +266,7 @@ Mesh makeTorus(float radius, float tube, int rings, int sides)
         }
     }
     addGridTriangles(mesh, 0, sides, rings);
+    generateTangentsIfMissing(mesh);
     return mesh;
 }
 

@@ -88,6 +88,9 @@ struct Material {
     std::string diffuseMap;
     std::string specularMap;
     std::string normalMap;
+    // Scales the normal map's tangent-space x and y before renormalising (glTF
+    // normalTexture.scale): 0 flattens the map away, 1 uses it as it is.
+    float normalScale = 1.0f;
 };
 
 struct Vertex {

@@ -23,6 +23,7 @@
 #include "core/Error.h"
 #include "scene/Meshes.h"
 #include "scene/Transform.h"
+#include "scene/Tangents.h"
 
 namespace manylights {
 
@@ -847,7 +848,8 @@ private:
 
     Material readMaterial(const Node& node) const
     {
-        expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map"});
+        expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map",
+                           "normal_scale"});
         Material material;
         if (const auto diffuse = member(node, "diffuse"))
             material.diffuse = colour(*diffuse);
@@ -860,6 +862,8 @@ private:
         material.diffuseMap = texturePath(node, "diffuse_map");
         material.specularMap = texturePath(node, "specular_map");
         material.normalMap = texturePath(node, "normal_map");
+        if (const auto value = member(node, "normal_scale"))
+            material.normalScale = number(*value);
         return material;
     }
 
@@ -930,6 +934,7 @@ private:
     {
         if (mesh.name.empty())
             mesh.name = key;
+        generateTangentsIfMissing(mesh);
         meshCache_.emplace(key, scene_.meshes.size());
         scene_.meshes.push_back(std::move(mesh));
         return scene_.meshes.size() - 1;

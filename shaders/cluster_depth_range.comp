@@ -3,9 +3,9 @@
 // the slices then divide.
 #include "lib/frame.glsl"
 #include "lib/clusters.glsl"
+#include "lib/gbuffer_position.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D gPositionShininess;
 layout(binding = 5) uniform sampler2D sceneDepth;
 
 void main()
@@ -14,7 +14,7 @@ void main()
     if (any(greaterThanEqual(pixel, ivec2(frame.viewport.xy))) || texelFetch(sceneDepth, pixel, 0).r >= 1.0)
         return;
     // Positive floats order like their bits.
-    uint depthBits = floatBitsToUint(max(viewDepth(texelFetch(gPositionShininess, pixel, 0).xyz), 0.0));
+    uint depthBits = floatBitsToUint(max(viewDepth(gbufferPosition(pixel)), 0.0));
     atomicMin(sceneDepthBits[0], depthBits);
     atomicMax(sceneDepthBits[1], depthBits);
 }

@@ -17,7 +17,7 @@ void main()
         return;
     uint count = 0u;
     if (texelFetch(sceneDepth, pixel, 0).r < 1.0) {
-        vec3 position = texelFetch(gPositionShininess, pixel, 0).xyz;
+        vec3 position = gbufferPosition(pixel);
         for (uint i = 0u; i < frame.counts.x; ++i)
             if (lightReach(lights[i], position).w > 0.0)
                 ++count;

@@ -76,8 +76,8 @@ std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassResu
 BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const std::string& techniqueName,
                     ImageSize size, const BenchOptions& options)
 {
-    Renderer renderer(scene, lights, size.width, size.height);
-    std::unique_ptr<Technique> technique = makeTechnique(techniqueName);
+    Renderer renderer(scene, lights, size.width, size.height, options.gbufferLayout);
+    std::unique_ptr<Technique> technique = makeTechnique(techniqueName, {.gbufferLayout = options.gbufferLayout});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
     for (int i = 0; i < options.warmup; ++i)
         renderer.renderFrame(*technique, ViewMode::Final);
@@ -109,7 +109,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
-        std::unique_ptr<Technique> counting = makeTechnique(techniqueName, {.countWork = true});
+        std::unique_ptr<Technique> counting = makeTechnique(techniqueName, {.countWork = true, .gbufferLayout = options.gbufferLayout});
         renderer.setCountWork(true);
         renderer.renderFrame(*counting, ViewMode::Final);
         result.work = renderer.lastWorkCounts();
@@ -402,6 +402,11 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             return endsWith(path, ".svg") && path.size() > 4 ? std::string()
                                                               : "must end in .svg, got '" + path + "'";
         });
+    bench
+        ->add_option_function<std::string>(
+            "--gbuffer", [&options](const std::string& name) { options.gbufferLayout = *parseGBufferLayout(name); },
+            "G-buffer layout of the deferred techniques (seed or compact; default compact)")
+        ->check(CLI::IsMember({"seed", "compact"}));
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;

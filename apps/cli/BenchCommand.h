@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/cli/CommandSupport.h"
+#include "render/GBuffer.h"
 
 namespace CLI {
 class App;
@@ -23,6 +24,7 @@ struct BenchOptions {
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
     bool countWork = false;
+    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     // When a technique's median frame exceeds this at one light count, its later (larger)
     // counts at that size are skipped: a sweep to a million lights need not wait hours for
     // forward. 0: no budget.

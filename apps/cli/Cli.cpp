@@ -48,6 +48,7 @@ int runCli(int argc, const char* const* argv)
     RenderOptions render;
     std::string size = "1280x720";
     std::string view = "final";
+    std::string gbufferLayout(gbufferLayoutName(kDefaultGBufferLayout));
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to an image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON); the built-in default scene if absent");
     renderCommand->add_option("-o,--output", render.output, "Output image: .png or .pfm")->required();
@@ -64,6 +65,9 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_option("--frames", render.frames, "Frames to render and time (after one warm-up frame)")
         ->check(CLI::Range(1, 100000));
     renderCommand->add_option("--stats", render.statsPath, "Write timings and work counts as JSON");
+    renderCommand->add_option("--gbuffer", gbufferLayout, "G-buffer layout of the deferred techniques")
+        ->check(CLI::IsMember({"seed", "compact"}))
+        ->capture_default_str();
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 
@@ -96,6 +100,7 @@ int runCli(int argc, const char* const* argv)
         return kExitUsage;
     }
     render.view = *parseViewMode(view);
+    render.gbufferLayout = *parseGBufferLayout(gbufferLayout);
 
     return reportingErrors([&] { runRender(render); },
                            "rendering " + std::to_string(render.width) + "x" + std::to_string(render.height));

@@ -25,6 +25,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
+    stats["gbuffer"] = std::string(gbufferLayoutName(options.gbufferLayout));
     stats["view"] = std::string(viewModeName(options.view));
     stats["scene"] = scene.source;
     stats["device"] = device;
@@ -85,10 +86,10 @@ void runRender(const RenderOptions& options)
     const std::vector<Light> lights = expandLights(scene, options.lights);
 
     HeadlessContext context({.debug = defaultDebugContext()});
-    Renderer renderer(scene, lights, options.width, options.height);
+    Renderer renderer(scene, lights, options.width, options.height, options.gbufferLayout);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
-    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork});
+    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork, .gbufferLayout = options.gbufferLayout});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 
     const bool measuring = !options.statsPath.empty();

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "render/GBuffer.h"
 #include "render/Views.h"
 
 namespace manylights {
@@ -19,6 +20,7 @@ struct RenderOptions {
     int frames = 1;
     std::string statsPath;
     bool countWork = false;
+    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

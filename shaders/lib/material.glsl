@@ -1,12 +1,44 @@
-// Per-object material uniforms and the surface a mesh fragment describes.
+// Per-object material uniforms and the surface a mesh fragment describes. Both forward.frag and
+// gbuffer.frag call meshSurface(), so every technique shades the same surface: the same
+// triangles rasterised with the same uv derivatives choose the same mip levels (implicit LOD)
+// in both passes, so the texture lookups need no explicit LOD to agree.
 layout(location = 10) uniform vec3 materialDiffuse;
 layout(location = 11) uniform vec3 materialSpecular;
 layout(location = 12) uniform float materialShininess;
 layout(location = 13) uniform vec3 materialEmissive;
+// Which maps the material has (render/GpuScene.cpp: bindMaterial): bit 0 diffuse, bit 1
+// specular, bit 2 normal. A missing map leaves the constant as it is.
+layout(location = 14) uniform int materialMaps;
+layout(location = 15) uniform float materialNormalScale;  // glTF normalTexture.scale
+
+layout(binding = 6) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
+layout(binding = 7) uniform sampler2D specularMap;  // linear
+layout(binding = 8) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec2 uv;
+layout(location = 3) in vec4 worldTangent;  // xyz tangent, w handedness (scene/Tangents.h)
+
+const int kHasDiffuseMap = 1;
+const int kHasSpecularMap = 2;
+const int kHasNormalMap = 4;
+
+// The normal map's tangent-space normal, taken to world space: the interpolated tangent is
+// re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
+// as MikkTSpace-baked maps expect. A vertex without a tangent frame keeps the geometric normal.
+vec3 normalMapped(vec3 N)
+{
+    vec3 T = worldTangent.xyz - N * dot(N, worldTangent.xyz);
+    if (dot(T, T) <= 1e-20)
+        return N;
+    T = normalize(T);
+    vec3 B = (worldTangent.w < 0.0 ? -1.0 : 1.0) * cross(N, T);
+    vec3 t = texture(normalMap, uv).xyz * 2.0 - 1.0;
+    t.xy *= materialNormalScale;
+    vec3 mapped = T * t.x + B * t.y + N * t.z;
+    return dot(mapped, mapped) > 0.0 ? normalize(mapped) : N;
+}
 
 Surface meshSurface()
 {
@@ -15,6 +47,14 @@ Surface meshSurface()
     s.normal = normalize(worldNormal);
     s.diffuse = materialDiffuse;
     s.specular = materialSpecular;
+    // materialMaps is uniform, so these branches are uniform control flow and the implicit
+    // derivatives of texture() are defined.
+    if ((materialMaps & kHasDiffuseMap) != 0)
+        s.diffuse *= texture(diffuseMap, uv).rgb;
+    if ((materialMaps & kHasSpecularMap) != 0)
+        s.specular *= texture(specularMap, uv).rgb;
+    if ((materialMaps & kHasNormalMap) != 0)
+        s.normal = normalMapped(s.normal);
     s.shininess = materialShininess;
     s.emissive = materialEmissive;
     return s;

@@ -76,8 +76,13 @@ TEST_F(GlTest, ObjectLabelsAreVisibleToDebuggers)
 TEST_F(GlTest, GBufferFramebufferIsCompleteAndBudgetIsKnown)
 {
     gl::Texture2D depth("depth", kDepthStencilTarget.format, 8, 8);
-    GBuffer gbuffer(8, 8, depth);  // asserts completeness itself
-    EXPECT_EQ(gbufferBytesPerPixel(), 5 * 16 + 4);
+    // Each layout's geometry pass compiles and its framebuffer is complete (asserted inside).
+    GBuffer seed(8, 8, depth, GBufferLayout::Seed);
+    GBuffer compact(8, 8, depth, GBufferLayout::Compact);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferLayout::Seed), 5 * 16 + 4);
+    // The compact layout's budget (issue 5): at most half the seed layout's bytes per pixel.
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferLayout::Compact), 4 + 4 + 4 + 4 + 8 + 4);
+    EXPECT_LE(2 * gbufferBytesPerPixel(GBufferLayout::Compact), gbufferBytesPerPixel(GBufferLayout::Seed));
 }
 
 TEST_F(GlTest, IncludesAreResolvedOnceAndDefinesInjected)

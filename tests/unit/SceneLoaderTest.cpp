@@ -587,6 +587,8 @@ const std::vector<BadScene> kBadScenes = {
      ": /materials/m/specular_map: ", "not a regular file"},
     {"TextureEmptyPath", R"json({"materials": {"m": {"normal_map": ""}}})json", ": /materials/m/normal_map: ",
      "expected a file path, got an empty string"},
+    {"NormalScaleNotANumber", R"json({"materials": {"m": {"normal_scale": "2"}}})json",
+     ": /materials/m/normal_scale: ", "expected a number, got a string"},
 
     // Objects and meshes.
     {"ObjectsNotArray", R"json({"objects": {}})json", ": /objects: ", "expected an array, got an object"},
@@ -681,13 +683,21 @@ TEST(SceneLoader, BadSceneTableIsLargeAndNamesAreUnique)
 }
 
 // Two whole messages, exactly, as a user sees them.
+TEST(SceneLoader, NormalScaleDefaultsToOne)
+{
+    const Scene scene = parse(R"json({"materials": {"flat": {}, "half": {"normal_scale": 0.5}}})json");
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.materials[0].normalScale, 1.0f);
+    EXPECT_EQ(scene.materials[1].normalScale, 0.5f);
+}
+
 TEST(SceneLoader, ExactMessages)
 {
     EXPECT_EQ(errorOf("{\n  \"lights\": [\n    { \"type\": \"point\", }\n  ]\n}"),
               "scene.json:3:24: syntax error while parsing object key: unexpected '}'; expected string literal");
     EXPECT_EQ(errorOf(R"json({"materials": {"m": {"colour": [1, 0, 0]}}})json"),
               "scene.json: /materials/m/colour: unknown key 'colour' (expected one of: diffuse, specular, shininess, "
-              "emissive, diffuse_map, specular_map, normal_map)");
+              "emissive, diffuse_map, specular_map, normal_map, normal_scale)");
 }
 
 }  // namespace

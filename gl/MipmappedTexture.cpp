@@ -1,0 +1,59 @@
+#include "gl/MipmappedTexture.h"
+
+#include <algorithm>
+
+namespace manylights::gl {
+
+namespace {
+GLuint createTexture2D()
+{
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &name);
+    return name;
+}
+}  // namespace
+
+int fullMipmapLevels(int width, int height)
+{
+    int levels = 1;
+    for (int size = std::max(width, height); size > 1; size /= 2)
+        ++levels;
+    return levels;
+}
+
+float MipmappedTexture2D::anisotropy()
+{
+    // GL_TEXTURE_MAX_ANISOTROPY (0x84FE) is the same enum in GL 4.6 core, ARB and EXT.
+    const bool supported = epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+                           epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic");
+    if (!supported)
+        return 1.0f;
+    GLfloat maximum = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maximum);
+    return std::clamp(maximum, 1.0f, kMaxAnisotropy);
+}
+
+MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
+                                       std::span<const std::uint8_t> rgba8)
+    : GlObject(createTexture2D()),
+      width_(width),
+      height_(height),
+      levels_(fullMipmapLevels(width, height)),
+      format_(internalFormat)
+{
+    setLabel(GL_TEXTURE, id(), label);
+    glTextureStorage2D(id(), levels_, internalFormat, width, height);
+    // Rows of 4-byte texels: any width is aligned, whatever GL_UNPACK_ALIGNMENT says.
+    glTextureSubImage2D(id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba8.data());
+    // For sRGB storage GL recommends (but does not require) filtering the levels in linear
+    // space; Mesa and the vendor drivers do, so colour maps do not darken when minified.
+    glGenerateTextureMipmap(id());
+    glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    if (const float anisotropic = anisotropy(); anisotropic > 1.0f)
+        glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropic);
+}
+
+}  // namespace manylights::gl

@@ -1,0 +1,81 @@
+#include "render/TextureCache.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+// Debian's libstb ships stb_image compiled (-lstb): no STB_IMAGE_IMPLEMENTATION here.
+#include <stb/stb_image.h>
+
+#include "core/Error.h"
+
+namespace manylights {
+
+namespace {
+
+struct StbiFree {
+    void operator()(stbi_uc* pixels) const { stbi_image_free(pixels); }
+};
+
+struct FileClose {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem)
+{
+    throw Error(path + ": " + problem);
+}
+
+// One key per file however a scene spells its path.
+std::string canonicalKey(const std::string& path)
+{
+    std::error_code error;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+    return error ? path : canonical.string();
+}
+
+}  // namespace
+
+DecodedImage decodeImageFile(const std::string& path, int maxSide)
+{
+    const std::unique_ptr<std::FILE, FileClose> file(std::fopen(path.c_str(), "rb"));
+    if (!file)
+        fail(path, "cannot open texture");
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    // The header first: an absurd size is refused before anything is allocated for it.
+    if (!stbi_info_from_file(file.get(), &width, &height, &channels))
+        fail(path, std::string("not a texture image stb_image can read (") + stbi_failure_reason() + ")");
+    if (width < 1 || height < 1 || width > maxSide || height > maxSide)
+        fail(path, "texture is " + std::to_string(width) + "x" + std::to_string(height) + ", beyond the largest " +
+                       std::to_string(maxSide) + "x" + std::to_string(maxSide) + " supported");
+    const std::unique_ptr<stbi_uc, StbiFree> pixels(stbi_load_from_file(file.get(), &width, &height, &channels, 4));
+    if (!pixels)
+        fail(path, std::string("broken texture image (") + stbi_failure_reason() + ")");
+    DecodedImage image;
+    image.width = width;
+    image.height = height;
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    image.rgba.resize(row * static_cast<std::size_t>(height));
+    // stb_image's rows run top to bottom, GL's bottom to top.
+    for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y)
+        std::copy_n(pixels.get() + row * y, row, image.rgba.data() + row * (static_cast<std::size_t>(height) - 1 - y));
+    return image;
+}
+
+const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, TextureColourSpace space)
+{
+    const auto key = std::make_pair(canonicalKey(path), space);
+    if (const auto found = textures_.find(key); found != textures_.end())
+        return found->second;
+    GLint maxTextureSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
+    const DecodedImage image = decodeImageFile(path, std::min(maxTextureSize, kMaxTextureSide));
+    const GLenum format = space == TextureColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+    gl::MipmappedTexture2D texture("texture " + path, format, image.width, image.height, image.rgba);
+    return textures_.emplace(key, std::move(texture)).first->second;
+}
+
+}  // namespace manylights

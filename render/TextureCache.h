@@ -1,0 +1,51 @@
+// Material textures (SPEC.md §1 diffuse_map, specular_map, normal_map): decoded from PNG or
+// JPEG by stb_image, uploaded once per (file, colour space) however many materials use them,
+// with a full mipmap chain.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/MipmappedTexture.h"
+
+namespace manylights {
+
+// How a texture's 8-bit values are to be read.
+enum class TextureColourSpace {
+    Srgb,    // colour (diffuse, emissive): stored GL_SRGB8_ALPHA8, sampled as linear values
+    Linear,  // data (normal, specular): stored GL_RGBA8, sampled as they are
+};
+
+// The largest texture side accepted whatever the driver allows: a 16384² RGBA8 image is 1 GiB
+// already; beyond that a file is far more likely broken than meant.
+inline constexpr int kMaxTextureSide = 16384;
+
+// An image as 8-bit RGBA, rows bottom to top (GL's order, so uv (0, 0) is the image's lower
+// left corner and +v is up: the OpenGL normal-map convention of SPEC.md §1).
+struct DecodedImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// Decodes `path`; throws manylights::Error, one line naming the file, when it cannot be read,
+// is not an image stb_image decodes, is truncated, or has a side above `maxSide`.
+DecodedImage decodeImageFile(const std::string& path, int maxSide);
+
+class TextureCache {
+public:
+    // The texture of `path` in `space`, loaded on first request. Throws manylights::Error (see
+    // decodeImageFile) for a broken file or one beyond GL_MAX_TEXTURE_SIZE or kMaxTextureSide.
+    const gl::MipmappedTexture2D& get(const std::string& path, TextureColourSpace space);
+
+    // How many textures have been loaded (each file once per colour space).
+    std::size_t size() const { return textures_.size(); }
+
+private:
+    std::map<std::pair<std::string, TextureColourSpace>, gl::MipmappedTexture2D> textures_;
+};
+
+}  // namespace manylights

@@ -1,0 +1,33 @@
+// The world position of a G-buffer pixel, in either layout (render/GBuffer.h: GBufferLayout):
+// the only G-buffer value the culling compute shaders need. Needs lib/frame.glsl.
+#include "lib/frame.glsl"
+
+#ifdef GBUFFER_COMPACT
+// Compact layout: the view-space depth (distance along the view axis); the position is the
+// point at that depth on the ray through the pixel's centre, where the rasteriser evaluated
+// the forward shader's interpolated position too.
+layout(binding = 0) uniform sampler2D gViewDepth;
+
+// The world-space direction through the centre of `pixel` whose component along the view
+// axis is 1, built from the camera of lib/frame.glsl (frame.view is a rigid transform, so
+// its inverse rotation is its transpose).
+vec3 pixelRay(ivec2 pixel)
+{
+    vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
+    vec3 viewSpace = vec3(ndc * frame.projection.xy, -1.0);
+    return transpose(mat3(frame.view)) * viewSpace;
+}
+
+vec3 gbufferPosition(ivec2 pixel)
+{
+    return frame.eye.xyz + pixelRay(pixel) * texelFetch(gViewDepth, pixel, 0).r;
+}
+#else
+// Seed layout: the position is stored as it is.
+layout(binding = 0) uniform sampler2D gPositionShininess;
+
+vec3 gbufferPosition(ivec2 pixel)
+{
+    return texelFetch(gPositionShininess, pixel, 0).xyz;
+}
+#endif
