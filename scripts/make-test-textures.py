@@ -7,8 +7,9 @@ needs nothing but the build. Pure Python (zlib), so it runs anywhere the build d
   brick.png        64x64 sRGB colour: red-brown bricks in grey mortar (a diffuse map)
   bumps.png        64x64 tangent-space normal map of a bumpy surface (OpenGL convention, +Y up)
   speckle.png      64x64 specular map: bright bricks, dull mortar
-  tilt30.png       4x4 constant normal map: every texel the encoded unit vector
-                   (sin 30°, 0, cos 30°), for the analytic normal-mapping test
+  tilt30.png       4x4 constant normal map: every texel the encoded unit vector tilted 30° from
+                   +Z towards the (+X, +Y) diagonal, (sin 30°/√2, sin 30°/√2, cos 30°), for the
+                   analytic normal-mapping test (which checks the tangent and the bitangent)
 """
 import math
 import os
@@ -71,7 +72,7 @@ def speckle(x, y):
 
 def tilt30(x, y):
     a = math.radians(30)
-    return encode_normal((math.sin(a), 0.0, math.cos(a)))
+    return encode_normal((math.sin(a) / math.sqrt(2), math.sin(a) / math.sqrt(2), math.cos(a)))
 
 
 def main():

@@ -3,7 +3,10 @@
 // every covered pixel with the formula evaluated at that pixel's world position, written
 // here independently of the renderer's shaders, in double precision.
 //
-// Every test runs for every technique.
+// Every test runs for every technique, with the seed G-buffer layout: these tests check the
+// lighting formula to float precision, which the compact layout's 8-bit kd (e.g. 0.5 stored as
+// 128/255) would blur; the compact layout is held to forward by TechniqueAgreementTest and to
+// the hand-derived normal-mapping result below.
 //
 // Tolerance: 2e-5 absolute + 1e-4 relative. The renderer works in 32-bit floats: positions
 // of about 10 units carry ~1e-6 absolute error, and pow(), normalize() and the sum of a few
@@ -15,9 +18,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <optional>
 
 #include <glm/glm.hpp>
+#include <stb/stb_image.h>
 
 #include "TestSupport.h"
 #include "render/Technique.h"
@@ -29,6 +34,7 @@ using test::renderPfm;
 using test::scratchDirectory;
 using test::writeFile;
 
+constexpr double kPi = std::numbers::pi;
 constexpr double kAbsoluteTolerance = 2e-5;
 constexpr double kRelativeTolerance = 1e-4;
 
@@ -46,11 +52,11 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
     writeFile(dir / "scene.json", sceneJson);
     const std::string technique = ::testing::TestWithParam<std::string>::GetParam();
     const Image colour =
-        renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size, "--technique", technique});
+        renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size, "--technique", technique, "--gbuffer", "seed"});
     const Image position =
-        renderPfm((dir / "scene.json").string(), dir / "position.pfm", {"--size", size, "--view", "position"});
+        renderPfm((dir / "scene.json").string(), dir / "position.pfm", {"--size", size, "--view", "position", "--gbuffer", "seed"});
     const Image normal =
-        renderPfm((dir / "scene.json").string(), dir / "normal.pfm", {"--size", size, "--view", "normal"});
+        renderPfm((dir / "scene.json").string(), dir / "normal.pfm", {"--size", size, "--view", "normal", "--gbuffer", "seed"});
     int checked = 0;
     int failures = 0;
     for (int y = 0; y < colour.height; ++y)
@@ -100,7 +106,7 @@ TEST_P(Analytic, PointLightAboveDiffusePlane)
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", scene);
     const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
-                                  {"--size", "65x65", "--technique", GetParam()});
+                                  {"--size", "65x65", "--technique", GetParam(), "--gbuffer", "seed"});
     const float* centre = image.pixel(32, 32);
     EXPECT_NEAR(centre[0], 0.25, 1e-6);
     EXPECT_NEAR(centre[1], 0.25, 1e-6);
@@ -224,10 +230,61 @@ TEST_P(Analytic, EmissiveAndAmbientWithoutLights)
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", scene);
     const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
-                                  {"--size", "65x65", "--technique", GetParam()});
+                                  {"--size", "65x65", "--technique", GetParam(), "--gbuffer", "seed"});
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[0], 0.3f);
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[1], 0.6f);
     EXPECT_FLOAT_EQ(image.pixel(0, 0)[2], 0.9f);
+}
+
+TEST_P(Analytic, ConstantNormalMapTiltsTheShadingNormal)
+{
+    // A plane (normal +Y; uvs: u along +X, v along −Z, so T = +X, B = −Z, w = +1) with the
+    // constant normal map tests/scenes/textures/tilt30.png: every texel encodes the unit vector
+    // tilted 30° from +Z towards the uv diagonal, t = (sin 30°/√2, sin 30°/√2, cos 30°). In
+    // world space N' = normalize(t.x·T + t.y·B + t.z·N) = normalize(t.x, t.z, −t.y). A
+    // directional light travelling along (−1, −1, 1), L = (1, 1, −1)/√3, no other light:
+    //   colour = kd · (ambient + max(N'·L, 0)),   N'·L = (t.x + t.z + t.y) / (√3 |t|).
+    // Ideal t gives N'·L = (0.70711 + 0.86603) / √3 = 0.90825; the map holds t rounded to 8 bits
+    // per component (≤ 1/255 each after 2·byte/255 − 1), so the expected value is computed from
+    // the stored bytes: the only error left is the renderer's float rounding. A flipped tangent
+    // gives (−t.x + t.z + t.y)/√3 = 0.5, a flipped bitangent the same, no normal map 0.57735.
+    const std::string texture = MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/tilt30.png";
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    stbi_uc* texels = stbi_load(texture.c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(texels, nullptr);
+    const glm::dvec3 t = glm::dvec3(texels[0], texels[1], texels[2]) * (2.0 / 255.0) - 1.0;
+    for (int i = 0; i < width * height * 3; ++i)
+        ASSERT_EQ(texels[i], texels[i % 3]) << "the map must be constant";
+    stbi_image_free(texels);
+    const double ideal = (std::sin(kPi / 6) * std::sqrt(2.0) + std::cos(kPi / 6)) / std::sqrt(3.0);
+    const double NdotL = (t.x + t.y + t.z) / (std::sqrt(3.0) * glm::length(t));
+    EXPECT_NEAR(NdotL, ideal, 2.0 / 255.0);  // the stored map is the one described above
+
+    // kd = (0.8, 0.6, 0.4) are 204/255, 153/255, 102/255: exact in the compact layout's 8 bits.
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "ambient": [0.1, 0.1, 0.1],
+        "directional": {"direction": [-1, -1, 1], "intensity": [1, 1, 1]},
+        "materials": {"bumped": {"diffuse": [0.8, 0.6, 0.4], "normal_map": ")" + texture + R"("}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [40, 40]}, "material": "bumped"}]})";
+    const glm::dvec3 expected = glm::dvec3(0.8, 0.6, 0.4) * (0.1 + NdotL);
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", scene);
+    // Seed layout: float rounding only (the file's tolerance). Compact layout: the octahedral
+    // normal (RG16) moves N'·L by ≤ 5e-5 (docs/gbuffer.md), times kd ≤ 0.8: 4e-5 more.
+    for (const auto& [layout, extra] : {std::pair<std::string, double>{"seed", 0.0}, {"compact", 4e-5}}) {
+        const Image image = renderPfm((dir / "scene.json").string(), dir / (layout + ".pfm"),
+                                      {"--size", "65x65", "--technique", GetParam(), "--gbuffer", layout});
+        // The centre pixels (the map is constant, so every pixel agrees; the centre ones are
+        // far from any edge).
+        for (int y = 30; y <= 34; ++y)
+            for (int x = 30; x <= 34; ++x)
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(image.pixel(x, y)[c], expected[c],
+                                kAbsoluteTolerance + kRelativeTolerance * expected[c] + extra)
+                        << layout << " layout, pixel (" << x << ", " << y << ") channel " << c;
+    }
 }
 
 // Test names allow only letters, digits and '_': "tiled-quads" becomes tiled_quads.
