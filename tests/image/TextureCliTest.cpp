@@ -1,0 +1,71 @@
+// Broken material textures through the real executable: exit status 1, one line on stderr that
+// names the texture file, nothing written under the output name. And the --gbuffer option's
+// bad values (exit 2). Run as a child process, so a crash shows as one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "TestSupport.h"
+
+namespace manylights {
+namespace {
+
+using test::runExecutable;
+using test::scratchDirectory;
+using test::writeFile;
+
+std::string readBytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
+{
+    const std::string brick = readBytes(MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/brick.png");
+    ASSERT_GT(brick.size(), 100u);
+    // A PNG header claiming 17000 x 17000 texels: beyond kMaxTextureSide (and most drivers).
+    std::string huge = brick.substr(0, 33);
+    const char side[4] = {0x00, 0x00, 0x42, 0x68};
+    huge.replace(16, 4, side, 4);
+    huge.replace(20, 4, side, 4);
+    const std::pair<std::string, std::string> cases[] = {
+        {"not_an_image.png", "plain text, not a PNG\n"},
+        {"truncated.png", brick.substr(0, brick.size() / 2)},
+        {"absurd_size.png", huge},
+    };
+    for (const auto& [name, bytes] : cases) {
+        const auto dir = scratchDirectory() / name;
+        std::filesystem::create_directories(dir);
+        writeFile(dir / name, bytes);
+        writeFile(dir / "scene.json", R"({"materials": {"m": {"diffuse_map": ")" + name + R"("}},
+            "objects": [{"mesh": {"primitive": "plane", "size": [2, 2]}, "material": "m"}]})");
+        for (const char* technique : {"forward", "deferred"}) {
+            const test::ProcessResult result = runExecutable(
+                {"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string(), "--technique", technique});
+            EXPECT_EQ(result.exitCode, 1) << name << ": " << result.stderrText;
+            EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+            EXPECT_NE(result.stderrText.find((dir / name).string()), std::string::npos) << result.stderrText;
+            EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << name;
+        }
+    }
+}
+
+TEST(TextureCli, UnknownGBufferLayoutIsUsageError)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult render =
+        runExecutable({"render", "-o", (dir / "out.png").string(), "--gbuffer", "tiny"});
+    EXPECT_EQ(render.exitCode, 2);
+    EXPECT_NE(render.stderrText.find("--gbuffer"), std::string::npos) << render.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    const test::ProcessResult bench = runExecutable({"bench", "--gbuffer", "tiny", "--csv", (dir / "b.csv").string()});
+    EXPECT_EQ(bench.exitCode, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir / "b.csv"));
+}
+
+}  // namespace
+}  // namespace manylights
