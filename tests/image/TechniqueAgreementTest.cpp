@@ -19,6 +19,8 @@
 // far below what the kd term allows. The shininess code (16 bits) moves (N·H)^s by ≤ 3.1e-5 of
 // ks·I. So, with kd and ks of the pixel taken from the seed layout's --view diffuse/specular:
 //   |Δ| ≤ |forward| · (q/kd + q/ks + 2^-10 + 3e-4) + 1e-5 · |forward| + 1e-6.
+// Forward's image is the seed layout's to 1e-5 (the seed cases), so this also bounds the
+// compact layout against the seed layout.
 #include <gtest/gtest.h>
 
 #include <cmath>
