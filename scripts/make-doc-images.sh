@@ -15,6 +15,11 @@ for view in position normal diffuse specular emissive depth; do
   $ml render -o $out/gbuffer-$view.png --size 640x360 --view $view
 done
 
+# Textures and normal maps (docs/scene-format.md): the textured test scene, lit and its normals.
+$ml render tests/scenes/textured_normal_mapped.json -o $out/textured-normal-mapped.png --size 640x384
+$ml render tests/scenes/textured_normal_mapped.json -o $out/textured-normal-mapped-normals.png --size 640x384 \
+  --view normal
+
 # The techniques side by side (docs/techniques.md).
 for technique in forward deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
