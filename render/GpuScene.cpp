@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/Error.h"
 #include "scene/Falloff.h"
 #include "scene/Transform.h"
 
@@ -88,16 +89,22 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     vertexArray_.setFloatAttribute(3, 0, 4, offsetof(Vertex, tangent));
     vertexArray_.setIndexBuffer(indices_);
 
-    // Colour maps are sRGB-encoded 8-bit images; normal and specular maps hold data.
+    // Colour maps are sRGB-encoded 8-bit images; normal and specular maps hold data. A broken
+    // file's message (naming the file) is completed with the material and key that use it.
     for (const Material& material : scene.materials) {
-        MaterialMaps maps;
-        if (!material.diffuseMap.empty())
-            maps.diffuse = &textures_.get(material.diffuseMap, TextureColourSpace::Srgb);
-        if (!material.specularMap.empty())
-            maps.specular = &textures_.get(material.specularMap, TextureColourSpace::Linear);
-        if (!material.normalMap.empty())
-            maps.normal = &textures_.get(material.normalMap, TextureColourSpace::Linear);
-        materialMaps_.push_back(maps);
+        const auto load = [&](const std::string& path, TextureColourSpace space,
+                              const char* key) -> const gl::MipmappedTexture2D* {
+            if (path.empty())
+                return nullptr;
+            try {
+                return &textures_.get(path, space);
+            } catch (const Error& e) {
+                throw Error(std::string(e.what()) + " (" + key + " of material '" + material.name + "')");
+            }
+        };
+        materialMaps_.push_back({load(material.diffuseMap, TextureColourSpace::Srgb, "diffuse_map"),
+                                 load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
+                                 load(material.normalMap, TextureColourSpace::Linear, "normal_map")});
     }
 
     for (const Object& object : scene.objects)

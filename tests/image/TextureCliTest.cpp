@@ -49,6 +49,8 @@ TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
             EXPECT_EQ(result.exitCode, 1) << name << ": " << result.stderrText;
             EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
             EXPECT_NE(result.stderrText.find((dir / name).string()), std::string::npos) << result.stderrText;
+            EXPECT_NE(result.stderrText.find("(diffuse_map of material 'm')"), std::string::npos)
+                << result.stderrText;
             EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << name;
         }
     }
