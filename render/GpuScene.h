@@ -41,6 +41,7 @@ struct FrameUniforms {
     glm::uvec4 counts;
     glm::vec4 projection;  // tan(fovX / 2), tan(fovY / 2), near, far
     glm::vec4 viewport;    // width, height, 1 / width, 1 / height
+    glm::vec4 time;        // x: the scene time in seconds (GpuScene::setTime)
 };
 
 // The camera matrices for an image of the given size.
@@ -57,6 +58,12 @@ public:
     // shaders/lib/material.glsl.
     void drawObjects(const gl::Program& program) const;
     void setViewport(int width, int height);
+    // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
+    // update) and the frame uniforms' time. A pure function of t: no state carries over.
+    void setTime(double t);
+    double time() const { return time_; }
+    // Changes whenever the lights move, for passes that cache data derived from them.
+    std::uint64_t lightsVersion() const { return lightsVersion_; }
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
@@ -74,10 +81,21 @@ private:
         glm::mat4 model;
         glm::mat3 normalMatrix;
         MeshRange range;
-        std::size_t material;
+        const Material* material;
+        const Object* object;                   // the scene's object; none for a light marker
+        std::optional<std::size_t> markedLight;  // the light a marker follows
     };
 
+    void addLightMarkers(float radius);
+    void poseDraws();
+    void packLights();
+
     const Scene& scene_;
+    std::vector<Light> restLights_;     // the lights at rest; their animations move them
+    std::vector<Light> currentLights_;  // at time_
+    std::vector<Material> markerMaterials_;
+    double time_ = 0.0;
+    std::uint64_t lightsVersion_ = 0;
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;

@@ -29,6 +29,8 @@ public:
 
     // Rebuilds every size-dependent resource (the passes and programs stay).
     void resize(int width, int height);
+    // Poses the animated scene at time t in seconds (GpuScene::setTime); 0 until called.
+    void setTime(double t) { gpuScene_.setTime(t); }
 
     // With counting on, each frame also counts its work (lastWorkCounts). The technique must
     // have been made with TechniqueOptions::countWork.
