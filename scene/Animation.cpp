@@ -51,7 +51,7 @@ glm::mat4 bounce(const glm::mat4& rest, const BounceAnimation& a, double t)
     // Speed as a fraction of the fastest (at take-off and landing): |1 − 2s|.
     const float speed = std::abs(1.0f - 2.0f * s);
     const float thin = 1.0f - a.squash * speed;
-    const float tall = 1.0f / (thin * thin);
+    const float tall = 1.0f / thin;
     const glm::vec3 foot{rest[3].x, a.base, rest[3].z};
     glm::mat4 motion = glm::translate(glm::mat4{1.0f}, foot + glm::vec3{0.0f, lift, 0.0f});
     motion = glm::scale(motion, glm::vec3{thin, tall, thin});

@@ -35,9 +35,9 @@ struct SwayAnimation {
 
 // Hops of `height` every `period` seconds: the height above the rest pose is the parabola
 // 4·h·s·(1 − s), s the fraction of the period (a body under constant gravity). With `squash`
-// > 0 the object gets thinner in X and Z in proportion to its speed (squash · |v| / vmax at
-// most), and taller by the inverse square (its volume kept), both about the bottom of its rest
-// pose at `base`: it touches the floor at s = 0 and never goes below it.
+// > 0 the object gets thinner in X and Z in proportion to its speed (by the factor
+// 1 − squash · |v| / vmax) and taller by the inverse of that factor, both about the bottom of
+// its rest pose at `base`: it touches the floor at s = 0 and never goes below it.
 struct BounceAnimation {
     float height = 1.0f;
     float period = 1.0f;  // seconds, > 0

@@ -86,6 +86,7 @@ void runRender(const RenderOptions& options)
 
     HeadlessContext context({.debug = defaultDebugContext()});
     Renderer renderer(scene, lights, options.width, options.height);
+    renderer.setTime(options.time);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
     std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork});
