@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "apps/cli/Recording.h"
 #include "render/Views.h"
 
 namespace manylights {
@@ -19,6 +20,10 @@ struct RenderOptions {
     int frames = 1;
     std::string statsPath;
     bool countWork = false;
+    // Recording: with a time range, `output` is a pattern (apps/cli/Recording.h) and every
+    // frame of the range at `fps` is written.
+    std::optional<TimeRange> timeRange;
+    double fps = 30.0;
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.
