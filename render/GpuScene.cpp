@@ -61,6 +61,7 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
     frame.projection = glm::vec4(tanHalfFovY * aspect, tanHalfFovY, camera.nearPlane, camera.farPlane);
     frame.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width),
                                1.0f / static_cast<float>(height));
+    frame.terms = glm::vec4(1.0f, 1.0f, 1.0f, 0.0f);
     return frame;
 }
 
@@ -149,6 +150,14 @@ void GpuScene::setViewport(int width, int height)
 {
     frame_ = makeFrameUniforms(scene_, width, height, static_cast<std::uint32_t>(lightCount_));
     frame_.time = glm::vec4(static_cast<float>(time_), 0.0f, 0.0f, 0.0f);
+    frame_.terms = terms_;
+    frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+}
+
+void GpuScene::setLightingTerms(const glm::vec3& terms)
+{
+    terms_ = glm::vec4(terms, 0.0f);
+    frame_.terms = terms_;
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
 }
 

@@ -42,6 +42,7 @@ struct FrameUniforms {
     glm::vec4 projection;  // tan(fovX / 2), tan(fovY / 2), near, far
     glm::vec4 viewport;    // width, height, 1 / width, 1 / height
     glm::vec4 time;        // x: the scene time in seconds (GpuScene::setTime)
+    glm::vec4 terms;       // 1 or 0: ambient, diffuse, specular (the viewer's toggles), w unused
 };
 
 // The camera matrices for an image of the given size.
@@ -61,6 +62,8 @@ public:
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
     // update) and the frame uniforms' time. A pure function of t: no state carries over.
     void setTime(double t);
+    // Switches the ambient, diffuse and specular terms of the lighting on (1) or off (0).
+    void setLightingTerms(const glm::vec3& terms);
     double time() const { return time_; }
     // Changes whenever the lights move, for passes that cache data derived from them.
     std::uint64_t lightsVersion() const { return lightsVersion_; }
@@ -95,6 +98,7 @@ private:
     std::vector<Light> currentLights_;  // at time_
     std::vector<Material> markerMaterials_;
     double time_ = 0.0;
+    glm::vec4 terms_{1.0f, 1.0f, 1.0f, 0.0f};
     std::uint64_t lightsVersion_ = 0;
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;
