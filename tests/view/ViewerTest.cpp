@@ -7,6 +7,7 @@
 // conversion may differ by one step), where `render` rounds with round(255 · clamp(c, 0, 1)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -220,6 +221,26 @@ TEST(Viewer, ScreenshotsEqualHeadlessRendersForEveryTechniqueAndView)
     }
     // F12 wrote a numbered screenshot into the working directory.
     EXPECT_GT(readPng(dir / "manylights-000.png").width, 0);
+}
+
+TEST(Viewer, NoDisplayIsOneLineExitOne)
+{
+    const fs::path dir = scratch();
+    const int status = run("env -u DISPLAY -u WAYLAND_DISPLAY '" MANYLIGHTS_EXE "' view --size 64x36 2>'" +
+                           (dir / "stderr.txt").string() + "'");
+    EXPECT_EQ(status, 1);
+    std::ifstream log(dir / "stderr.txt");
+    std::stringstream stream;
+    stream << log.rdbuf();
+    const std::string text = stream.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+    EXPECT_NE(text.find("cannot open a window"), std::string::npos) << text;
+}
+
+TEST(Viewer, BadCommandLineIsExitTwo)
+{
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --technique fastest 2>/dev/null"), 2);
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --size 0x10 2>/dev/null"), 2);
 }
 
 TEST(Viewer, BadScriptIsOneLineExitOne)
