@@ -122,10 +122,13 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
             command.kind = ScriptCommand::Kind::Screenshot;
             if (args[0].size() < 5 || !args[0].ends_with(".png"))
                 fail("the screenshot must be a .png file, got '" + args[0] + "'");
+        } else if (name == "wait-for") {
+            expectArgs(1, "a file name");
+            command.kind = ScriptCommand::Kind::WaitFor;
         } else {
             fail("unknown command '" + name +
                  "' (expected one of: frames, resize, technique, view, time, pause, play, speed, toggle, key, "
-                 "screenshot, quit)");
+                 "screenshot, wait-for, quit)");
         }
         commands.push_back(std::move(command));
     }

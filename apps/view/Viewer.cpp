@@ -122,6 +122,7 @@ private:
     std::unique_ptr<Renderer> renderer_;
     std::map<std::string, std::unique_ptr<Technique>> techniques_;  // by name, "+count" when counting
     std::string techniqueName_;
+    std::string lastGoodTechnique_;  // the key in techniques_ of the last technique drawn with
     ViewMode view_ = ViewMode::Final;
 
     double time_ = 0.0;
@@ -239,14 +240,37 @@ Viewer::~Viewer()
     gl::setDefaultShaderReader(gl::embeddedShaderReader());
 }
 
+// The technique to draw with, made on first use. A technique whose shaders fail to compile
+// (edited under --shader-dir) is not switched to: the previous one stays, the error shows.
 Technique& Viewer::technique()
 {
     const bool counting = view_ == ViewMode::LightCount;
     const std::string name = effectiveTechnique();
     const std::string key = name + (counting ? "+count" : "");
     auto& slot = techniques_[key];
-    if (!slot)
-        slot = makeTechnique(name, {.countWork = counting});
+    if (!slot) {
+        try {
+            slot = makeTechnique(name, {.countWork = counting});
+            lastGoodTechnique_ = key;
+        } catch (const Error& error) {
+            techniques_.erase(key);
+            if (lastGoodTechnique_.empty())
+                throw;  // the first technique: nothing to fall back on
+            shaderError_ = error.what();
+            std::fprintf(stderr, "manylights view: cannot switch to %s: %s\n", name.c_str(), error.what());
+            // Back to the settings that made the last good technique.
+            const bool lastCounted = lastGoodTechnique_.ends_with("+count");
+            techniqueName_ = lastGoodTechnique_.substr(0, lastGoodTechnique_.find('+'));
+            wireframe_ = false;
+            if (lastCounted)
+                view_ = ViewMode::LightCount;
+            else if (view_ == ViewMode::LightCount)
+                view_ = ViewMode::Final;
+            renderer_->setCountWork(lastCounted);
+            return *techniques_.at(lastGoodTechnique_);
+        }
+    }
+    lastGoodTechnique_ = key;
     return *slot;
 }
 
@@ -338,6 +362,12 @@ void Viewer::runScript()
     while (scriptNext_ < script_.size() && !quit_) {
         const ScriptCommand& command = script_[scriptNext_++];
         switch (command.kind) {
+        case ScriptCommand::Kind::WaitFor:
+            if (!fs::exists(command.words[0])) {
+                --scriptNext_;  // again next frame
+                return;
+            }
+            break;
         case ScriptCommand::Kind::Frames:
             // This frame is the first of them.
             scriptFramesLeft_ = static_cast<long>(command.number) - 1;
@@ -405,7 +435,8 @@ void Viewer::reloadShaders()
         renderer->renderFrame(*fresh, view_);
         renderer_ = std::move(renderer);
         techniques_.clear();
-        techniques_[effectiveTechnique() + (counting ? "+count" : "")] = std::move(fresh);
+        lastGoodTechnique_ = effectiveTechnique() + (counting ? "+count" : "");
+        techniques_[lastGoodTechnique_] = std::move(fresh);
         shaderError_.clear();
         shaderStatus_ = "reloaded from " + shaderDirectory_;
         std::fprintf(stderr, "manylights view: shaders reloaded\n");

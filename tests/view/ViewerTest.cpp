@@ -223,6 +223,84 @@ TEST(Viewer, ScreenshotsEqualHeadlessRendersForEveryTechniqueAndView)
     EXPECT_GT(readPng(dir / "manylights-000.png").width, 0);
 }
 
+std::string readText(const fs::path& path)
+{
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// Polls until `done` holds, for at most two minutes (a loaded machine renders slowly).
+template <typename Condition>
+bool eventually(Condition done)
+{
+    for (int i = 0; i < 1200; ++i) {
+        if (done())
+            return true;
+        run("sleep 0.1");
+    }
+    return false;
+}
+
+TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    const fs::path shaders = dir / "shaders";
+    fs::copy(MANYLIGHTS_SOURCE_DIR "/shaders", shaders, fs::copy_options::recursive);
+    const fs::path forward = shaders / "forward.frag";
+    const std::string original = readText(forward);
+    // The script waits for the test at each step (wait-for), drawing frames meanwhile.
+    {
+        std::ofstream out(dir / "script.txt");
+        out << "technique forward\ntime 1\nframes 2\nscreenshot before.png\nwait-for step1\nframes 2\n"
+               "wait-for step2\nframes 2\nscreenshot after.png\nquit\n";
+    }
+    const std::string command = "cd '" + dir.string() +
+                                "' && xvfb-run -a -s '-screen 0 1024x768x24' '" MANYLIGHTS_EXE
+                                "' view --size 160x90 --shader-dir shaders --script script.txt >viewer.log 2>&1; "
+                                "echo $? > status.txt";
+    ASSERT_EQ(run("(" + command + ") &"), 0);
+    ASSERT_TRUE(eventually([&] { return fs::exists(dir / "before.png"); })) << readText(dir / "viewer.log");
+
+    // A syntax error: the viewer reports it with file and line, and keeps drawing.
+    {
+        std::ofstream out(forward);
+        out << original << "\nthis is not GLSL\n";
+    }
+    ASSERT_TRUE(eventually([&] { return readText(dir / "viewer.log").find("reload failed") != std::string::npos; }))
+        << readText(dir / "viewer.log");
+    EXPECT_NE(readText(dir / "viewer.log").find("forward.frag:"), std::string::npos) << readText(dir / "viewer.log");
+    run("touch '" + (dir / "step1").string() + "'");
+
+    // The fix, which also paints every object one flat colour, (51, 153, 255) in 8 bits: taken.
+    {
+        std::ofstream out(forward);
+        std::string painted = original;
+        const std::string output = "outColor = vec4(color, 1.0);";
+        ASSERT_NE(painted.find(output), std::string::npos) << "forward.frag changed; update this test";
+        painted.replace(painted.find(output), output.size(), "outColor = vec4(0.2, 0.6, 1.0, 1.0);");
+        out << painted;
+    }
+    ASSERT_TRUE(eventually([&] { return readText(dir / "viewer.log").find("shaders reloaded") != std::string::npos; }))
+        << readText(dir / "viewer.log");
+    run("touch '" + (dir / "step2").string() + "'");
+    ASSERT_TRUE(eventually([&] { return fs::exists(dir / "status.txt") && !readText(dir / "status.txt").empty(); }));
+    EXPECT_EQ(readText(dir / "status.txt"), "0\n") << readText(dir / "viewer.log");
+
+    const auto paintedPixels = [](const Png& png) {
+        int count = 0;
+        for (std::size_t i = 0; i + 2 < png.rgb.size(); i += 3)
+            count += png.rgb[i] == 51 && png.rgb[i + 1] == 153 && png.rgb[i + 2] == 255;
+        return count;
+    };
+    // The lit scene may hit that colour by chance at a pixel or two; painted, every object has it.
+    EXPECT_LT(paintedPixels(readPng(dir / "before.png")), 10);
+    EXPECT_GT(paintedPixels(readPng(dir / "after.png")), 160 * 90 / 4);
+}
+
 TEST(Viewer, NoDisplayIsOneLineExitOne)
 {
     const fs::path dir = scratch();
