@@ -27,7 +27,7 @@ public:
     // Throws manylights::Error with the driver's log, positions mapped to file:line, when a
     // stage fails to compile or the program fails to link.
     Program(std::string_view label, const std::vector<ShaderStage>& stages, const Defines& defines = {},
-            const ShaderFileReader& reader = embeddedShaderReader());
+            const ShaderFileReader& reader = defaultShaderReader());
 
     void use() const { glUseProgram(id()); }
     void set(GLint location, int value) const { glProgramUniform1i(id(), location, value); }

@@ -32,6 +32,18 @@ ShaderFileReader directoryShaderReader(std::string directory)
 }
 
 namespace {
+ShaderFileReader& defaultReaderSlot()
+{
+    static ShaderFileReader reader = embeddedShaderReader();
+    return reader;
+}
+}  // namespace
+
+const ShaderFileReader& defaultShaderReader() { return defaultReaderSlot(); }
+
+void setDefaultShaderReader(ShaderFileReader reader) { defaultReaderSlot() = std::move(reader); }
+
+namespace {
 
 class Resolver {
 public:

@@ -22,6 +22,11 @@ ShaderFileReader embeddedShaderReader();
 // Reads shaders from a directory on disk (the viewer uses it to reload edited shaders).
 ShaderFileReader directoryShaderReader(std::string directory);
 
+// The reader Programs use when given none: the embedded shaders unless the process replaced it
+// (the viewer's --shader-dir, so that its techniques compile the files being edited).
+const ShaderFileReader& defaultShaderReader();
+void setDefaultShaderReader(ShaderFileReader reader);
+
 using Defines = std::vector<std::pair<std::string, std::string>>;
 
 struct ResolvedShader {

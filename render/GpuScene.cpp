@@ -7,6 +7,7 @@
 
 #include "core/Error.h"
 #include "scene/Falloff.h"
+#include "scene/Meshes.h"
 #include "scene/Transform.h"
 
 namespace manylights {
@@ -17,6 +18,9 @@ constexpr GLuint kFrameBinding = 0;
 constexpr GLuint kLightsBinding = 0;
 // Point lights get cos(cutoff) = −2: every direction passes the spot test and S = 1.
 constexpr float kPointLightCosCutoff = -2.0f;
+// A light marker is small on screen: a coarse unit sphere is round enough.
+constexpr int kMarkerSlices = 16;
+constexpr int kMarkerStacks = 8;
 }  // namespace
 
 GpuLight packLight(const Light& light, float attenuationThreshold)
@@ -58,15 +62,27 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
     frame.projection = glm::vec4(tanHalfFovY * aspect, tanHalfFovY, camera.nearPlane, camera.farPlane);
     frame.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width),
                                1.0f / static_cast<float>(height));
+    frame.terms = glm::vec4(1.0f, 1.0f, 1.0f, 0.0f);
     return frame;
 }
 
 GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
-    : scene_(scene), lightCount_(lights.size()), vertexArray_("scene vertices")
+    : scene_(scene), restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
+      vertexArray_("scene vertices")
 {
     std::vector<Vertex> allVertices;
     std::vector<std::uint32_t> allIndices;
-    for (const Mesh& mesh : scene.meshes) {
+    // The light markers' sphere is one more mesh after the scene's (made once, drawn per light).
+    std::vector<const Mesh*> meshes;
+    for (const Mesh& mesh : scene.meshes)
+        meshes.push_back(&mesh);
+    Mesh markerSphere;
+    if (scene.lightMarkerRadius) {
+        markerSphere = makeSphere(1.0f, kMarkerSlices, kMarkerStacks);
+        meshes.push_back(&markerSphere);
+    }
+    for (const Mesh* meshPointer : meshes) {
+        const Mesh& mesh = *meshPointer;
         const auto baseVertex = static_cast<GLint>(allVertices.size());
         if (mesh.subMeshes.empty())
             meshRanges_.push_back({{baseVertex, allIndices.size(), static_cast<GLsizei>(mesh.indices.size()), {}}});
@@ -111,21 +127,93 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         for (const MeshRange& range : meshRanges_[object.mesh]) {
             const std::size_t material =
                 object.materialOverridesMesh || !range.material ? object.material : *range.material;
-            draws_.push_back({object.transform, normalMatrix(object.transform), range, material});
+            draws_.push_back({object.transform, normalMatrix(object.transform), range,
+                              &scene.materials[material], &materialMaps_[material], &object, std::nullopt});
         }
+    if (scene.lightMarkerRadius)
+        addLightMarkers(*scene.lightMarkerRadius);
 
     packedLights_.reserve(lights.size());
     for (const Light& light : lights)
         packedLights_.push_back(packLight(light, scene.attenuationThreshold));
-    lightBuffer_ = gl::Buffer::fromSpan<GpuLight>("lights", packedLights_);
+    // Dynamic storage: setTime rewrites it every frame of an animation.
+    lightBuffer_ = gl::Buffer("lights", std::max<std::size_t>(1, packedLights_.size()) * sizeof(GpuLight), nullptr,
+                              GL_DYNAMIC_STORAGE_BIT);
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
+    setTime(0.0);
     setViewport(1, 1);
+}
+
+void GpuScene::addLightMarkers(float radius)
+{
+    // Emissive in the light's own colour at full brightness (intensities are often well
+    // below 1), and no diffuse or specular term: every technique shades it as forward does,
+    // from the emissive term alone.
+    markerMaterials_.reserve(restLights_.size());  // draws keep pointers into it
+    const MeshRange sphere = meshRanges_.back().front();
+    for (std::size_t i = 0; i < restLights_.size(); ++i) {
+        Material material;
+        material.name = "marker of " + restLights_[i].name;
+        material.diffuse = glm::vec3{0.0f};
+        material.specular = glm::vec3{0.0f};
+        const glm::vec3 intensity = restLights_[i].intensity;
+        const float brightest = std::max(intensity.r, std::max(intensity.g, intensity.b));
+        material.emissive = brightest > 0.0f ? intensity / brightest : glm::vec3{0.0f};
+        markerMaterials_.push_back(material);
+        const glm::mat4 model = glm::scale(glm::mat4{1.0f}, glm::vec3{radius});
+        draws_.push_back({model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i});
+    }
 }
 
 void GpuScene::setViewport(int width, int height)
 {
     frame_ = makeFrameUniforms(scene_, width, height, static_cast<std::uint32_t>(lightCount_));
+    frame_.time = glm::vec4(static_cast<float>(time_), 0.0f, 0.0f, 0.0f);
+    frame_.terms = terms_;
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+}
+
+void GpuScene::setLightingTerms(const glm::vec3& terms)
+{
+    terms_ = glm::vec4(terms, 0.0f);
+    frame_.terms = terms_;
+    frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+}
+
+void GpuScene::setTime(double t)
+{
+    time_ = t;
+    for (std::size_t i = 0; i < restLights_.size(); ++i)
+        currentLights_[i].position = animatedPosition(restLights_[i].position, restLights_[i].animation, t);
+    packLights();
+    poseDraws();
+    frame_.time = glm::vec4(static_cast<float>(t), 0.0f, 0.0f, 0.0f);
+    frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+}
+
+void GpuScene::packLights()
+{
+    for (std::size_t i = 0; i < currentLights_.size(); ++i)
+        packedLights_[i] = packLight(currentLights_[i], scene_.attenuationThreshold);
+    if (!packedLights_.empty())
+        lightBuffer_.update(0, packedLights_.size() * sizeof(GpuLight), packedLights_.data());
+    ++lightsVersion_;
+}
+
+void GpuScene::poseDraws()
+{
+    const float markerRadius = scene_.lightMarkerRadius.value_or(0.0f);
+    for (DrawItem& draw : draws_) {
+        if (draw.markedLight) {
+            draw.model = glm::translate(glm::mat4{1.0f}, currentLights_[*draw.markedLight].position);
+            draw.model = glm::scale(draw.model, glm::vec3{markerRadius});
+        } else if (draw.object->animation) {
+            draw.model = animatedTransform(draw.object->transform, draw.object->animation, time_);
+        } else {
+            continue;
+        }
+        draw.normalMatrix = normalMatrix(draw.model);
+    }
 }
 
 void GpuScene::bind() const
@@ -139,11 +227,21 @@ void GpuScene::drawObjects(const gl::Program& program) const
 {
     // Locations of shaders/mesh.vert.
     enum : GLint { kModel = 0, kNormalMatrix = 1 };
+    // shaders/lib/revolution.glsl.
+    enum : GLint { kRevolutionEnabled = 30, kRevolutionShape = 31, kRevolutionSpeed = 32 };
     program.use();
     for (const DrawItem& draw : draws_) {
         program.set(kModel, draw.model);
         program.set(kNormalMatrix, draw.normalMatrix);
-        bindMaterial(program, draw.material);
+        const RevolutionProfile* revolution =
+            draw.object && draw.object->revolution ? &*draw.object->revolution : nullptr;
+        program.set(kRevolutionEnabled, revolution ? 1 : 0);
+        if (revolution) {
+            program.set(kRevolutionShape,
+                        glm::vec4(revolution->radius, revolution->height, revolution->amplitude, revolution->waves));
+            program.set(kRevolutionSpeed, revolution->speed);
+        }
+        bindMaterial(program, *draw.material, *draw.maps);
         const MeshRange& range = draw.range;
         glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
@@ -151,7 +249,7 @@ void GpuScene::drawObjects(const gl::Program& program) const
     }
 }
 
-void GpuScene::bindMaterial(const gl::Program& program, std::size_t materialIndex) const
+void GpuScene::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const
 {
     // Locations and units of shaders/lib/material.glsl.
     enum : GLint {
@@ -164,8 +262,6 @@ void GpuScene::bindMaterial(const gl::Program& program, std::size_t materialInde
     };
     enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8 };
     enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4 };
-    const Material& material = scene_.materials[materialIndex];
-    const MaterialMaps& maps = materialMaps_[materialIndex];
     program.set(kDiffuse, material.diffuse);
     program.set(kSpecular, material.specular);
     program.set(kShininess, material.shininess);

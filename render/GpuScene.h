@@ -42,6 +42,8 @@ struct FrameUniforms {
     glm::uvec4 counts;
     glm::vec4 projection;  // tan(fovX / 2), tan(fovY / 2), near, far
     glm::vec4 viewport;    // width, height, 1 / width, 1 / height
+    glm::vec4 time;        // x: the scene time in seconds (GpuScene::setTime)
+    glm::vec4 terms;       // 1 or 0: ambient, diffuse, specular (the viewer's toggles), w unused
 };
 
 // The camera matrices for an image of the given size.
@@ -59,6 +61,14 @@ public:
     // shaders/lib/material.glsl and binding the material's maps (texture units 6-8).
     void drawObjects(const gl::Program& program) const;
     void setViewport(int width, int height);
+    // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
+    // update) and the frame uniforms' time. A pure function of t: no state carries over.
+    void setTime(double t);
+    // Switches the ambient, diffuse and specular terms of the lighting on (1) or off (0).
+    void setLightingTerms(const glm::vec3& terms);
+    double time() const { return time_; }
+    // Changes whenever the lights move, for passes that cache data derived from them.
+    std::uint64_t lightsVersion() const { return lightsVersion_; }
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
@@ -73,24 +83,37 @@ private:
         GLsizei indexCount;
         std::optional<std::size_t> material;  // the mesh file's own, if any
     };
-    struct DrawItem {
-        glm::mat4 model;
-        glm::mat3 normalMatrix;
-        MeshRange range;
-        std::size_t material;
-    };
-
     // A material's maps in the texture cache; null where the material has none.
     struct MaterialMaps {
         const gl::MipmappedTexture2D* diffuse = nullptr;
         const gl::MipmappedTexture2D* specular = nullptr;
         const gl::MipmappedTexture2D* normal = nullptr;
     };
-    void bindMaterial(const gl::Program& program, std::size_t material) const;
+    struct DrawItem {
+        glm::mat4 model;
+        glm::mat3 normalMatrix;
+        MeshRange range;
+        const Material* material;
+        const MaterialMaps* maps;               // the material's textures
+        const Object* object;                   // the scene's object; none for a light marker
+        std::optional<std::size_t> markedLight;  // the light a marker follows
+    };
+
+    void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
+    void addLightMarkers(float radius);
+    void poseDraws();
+    void packLights();
 
     const Scene& scene_;
     TextureCache textures_;
     std::vector<MaterialMaps> materialMaps_;  // per scene material
+    MaterialMaps noMaps_;                     // light markers' materials have no textures
+    std::vector<Light> restLights_;     // the lights at rest; their animations move them
+    std::vector<Light> currentLights_;  // at time_
+    std::vector<Material> markerMaterials_;
+    double time_ = 0.0;
+    glm::vec4 terms_{1.0f, 1.0f, 1.0f, 0.0f};
+    std::uint64_t lightsVersion_ = 0;
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;

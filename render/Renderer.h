@@ -32,6 +32,13 @@ public:
 
     // Rebuilds every size-dependent resource (the passes and programs stay).
     void resize(int width, int height);
+    // Poses the animated scene at time t in seconds (GpuScene::setTime); 0 until called.
+    void setTime(double t) { gpuScene_.setTime(t); }
+    // Recomputes the camera matrices after the scene's camera changed (the viewer moves it).
+    void refreshCamera() { gpuScene_.setViewport(width(), height()); }
+    void setLightingTerms(const glm::vec3& terms) { gpuScene_.setLightingTerms(terms); }
+    // The lit image and the G-buffer of the last frame (the viewer shows the lit image).
+    const FrameTargets& targets() const { return *targets_; }
 
     // With counting on, each frame also counts its work (lastWorkCounts). The technique must
     // have been made with TechniqueOptions::countWork.

@@ -40,9 +40,11 @@ VolumeDrawer::VolumeDrawer(const gl::Defines& defines)
 
 void VolumeDrawer::prepare(const GpuScene& scene)
 {
-    if (preparedFor_ == &scene)
+    // Moving lights regroup: a light's volume shape depends on where the camera is.
+    if (preparedFor_ == &scene && preparedVersion_ == scene.lightsVersion())
         return;
     preparedFor_ = &scene;
+    preparedVersion_ = scene.lightsVersion();
     groups_ = groupLightVolumes(scene.packedLights());
     std::vector<std::uint32_t> lists = groups_.spheres;
     lists.insert(lists.end(), groups_.cones.begin(), groups_.cones.end());

@@ -48,6 +48,7 @@ private:
     LightVolumeGroups groups_;
     gl::Buffer lightLists_;  // spheres, then cones, then full-screen lights
     const GpuScene* preparedFor_ = nullptr;
+    std::uint64_t preparedVersion_ = 0;
 };
 
 }  // namespace manylights

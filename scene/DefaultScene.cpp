@@ -1,6 +1,10 @@
 #include "scene/DefaultScene.h"
 
 #include <algorithm>
+#include <optional>
+#include <variant>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -9,6 +13,7 @@
 #include "core/EmbeddedFiles.h"
 #include "core/Error.h"
 #include "scene/Meshes.h"
+#include "scene/Revolution.h"
 #include "scene/Transform.h"
 
 namespace manylights {
@@ -81,6 +86,7 @@ struct Item {
     glm::vec3 rotateDegrees;
     glm::vec3 scale;
     Material material;
+    std::optional<ObjectAnimation> animation{};  // its pivot or base filled in once placed
 };
 
 constexpr float kHalfExtent = 16.0f;   // objects stay within ±16 in X and Z
@@ -89,6 +95,49 @@ constexpr int kPrimitiveCount = 128;
 constexpr int kModelCount = 6;         // bunnies, and as many teapots
 constexpr std::uint32_t kSceneSeed = 20240601u;
 constexpr std::uint32_t kLightSeed = 7u;
+constexpr std::uint32_t kDriftingLightSeed = 8u;
+constexpr float kLightMarkerRadius = 0.08f;
+// Teapots sway by this shear factor at most: the top of a 1.5-high teapot moves 0.2 sideways.
+constexpr float kSwayAmplitude = 0.13f;
+constexpr float kModelHeight = 1.5f;
+// The two surfaces of revolution stand in the front row, left and right of the centre.
+constexpr glm::vec2 kStaticVaseSpot{-3.0f, 9.0f};
+constexpr glm::vec2 kDynamicVaseSpot{3.0f, 9.0f};
+
+// Two vases of the same profile: one built on the CPU (frozen at t = 0), one whose surface the
+// vertex shader moves with time (scene/Revolution.h). Placed before the crowd, which avoids them.
+template <typename Placed>
+void addSurfacesOfRevolution(Scene& scene, std::vector<Placed>& placed)
+{
+    RevolutionProfile profile;
+    profile.radius = 0.45f;
+    profile.height = 1.4f;
+    profile.amplitude = 0.12f;
+    profile.waves = 1.5f;
+    profile.speed = 0.4f;
+    const auto addVase = [&](const char* name, glm::vec2 spot, bool dynamic, glm::vec3 colour) {
+        Mesh mesh = makeRevolutionMesh(profile, 0.0);
+        mesh.name = name;
+        scene.meshes.push_back(std::move(mesh));
+        Material material;
+        material.name = name;
+        material.diffuse = colour;
+        material.specular = glm::vec3{0.5f};
+        material.shininess = 64.0f;
+        scene.materials.push_back(material);
+        Object object;
+        object.name = name;
+        object.mesh = scene.meshes.size() - 1;
+        object.material = scene.materials.size() - 1;
+        object.transform = glm::translate(glm::mat4{1.0f}, glm::vec3{spot.x, 0.0f, spot.y});
+        if (dynamic)
+            object.revolution = profile;
+        scene.objects.push_back(std::move(object));
+        placed.push_back({spot, profile.radius + profile.amplitude});
+    };
+    addVase("vase-static", kStaticVaseSpot, false, {0.85f, 0.75f, 0.55f});
+    addVase("vase-dynamic", kDynamicVaseSpot, true, {0.55f, 0.75f, 0.85f});
+}
 
 }  // namespace
 
@@ -108,16 +157,25 @@ Scene makeDefaultScene()
     scene.ambient = glm::vec3{0.06f};
     scene.directional = DirectionalLight{{-1.0f, -2.0f, -1.0f}, glm::vec3{0.25f}, false};
 
-    // The lights are a light set, not explicit lights, so that `--lights N` scales this scene.
+    // The lights are light sets, not explicit lights, so that `--lights N` scales this scene.
+    // Three quarters circle their spot, the rest drift about it; each light has a small
+    // emissive sphere in its own colour that follows it.
     LightSet lights;
-    lights.count = 256;
+    lights.count = 192;
     lights.seed = kLightSeed;
     lights.type = LightType::Point;
     lights.boxMin = {-17.0f, 0.4f, -17.0f};
     lights.boxMax = {17.0f, 1.0f, 17.0f};
     lights.range = {3.5f, 5.0f};
     lights.intensity = {0.2f, 0.45f};
+    lights.animation = OrbitAnimation{1.2f, 40.0f, 0.0f};
     scene.lightSets.push_back(lights);
+    lights.count = 64;
+    lights.seed = kDriftingLightSeed;
+    // Up and down by 0.3 at most: the lights stay between 0.1 and 1.3 above the floor.
+    lights.animation = DriftAnimation{{2.0f, 0.3f, 2.0f}, {9.0f, 4.0f, 13.0f}, 0.0f};
+    scene.lightSets.push_back(lights);
+    scene.lightMarkerRadius = kLightMarkerRadius;
 
     Mesh floorMesh = makePlane(40.0f, 40.0f);
     floorMesh.name = "floor";
@@ -166,11 +224,21 @@ Scene makeDefaultScene()
         const bool bunny = i % 2 == 0;
         const std::size_t mesh = bunny ? bunnyMesh : teapotMesh;
         const Bounds bounds = scene.meshes[mesh].bounds();
-        const float scale = 1.5f / (bounds.max.y - bounds.min.y);
+        const float scale = kModelHeight / (bounds.max.y - bounds.min.y);
         // Teapots are glazed: always shiny.
         Material material = randomMaterial(bunny ? 0.3f : 1.0f);
         items.push_back({bunny ? Shape::Bunny : Shape::Teapot, mesh, {0.0f, random.between(0.0f, 360.0f), 0.0f},
                          glm::vec3{scale}, material});
+        // Bunnies turn about their vertical axis, one way or the other; teapots sway from side
+        // to side, each in its own direction and rhythm.
+        if (bunny) {
+            const float speed = random.between(20.0f, 50.0f) * (random.chance(0.5f) ? 1.0f : -1.0f);
+            items.back().animation = SpinAnimation{{0.0f, 1.0f, 0.0f}, std::nullopt, speed, 0.0f};
+        } else {
+            const float heading = glm::radians(random.between(0.0f, 360.0f));
+            items.back().animation = SwayAnimation{{std::cos(heading), 0.0f, std::sin(heading)}, kSwayAmplitude,
+                                                   random.between(0.3f, 0.7f), random.between(0.0f, 360.0f), 0.0f};
+        }
     }
     for (int i = 0; i < kPrimitiveCount; ++i) {
         Item item{};
@@ -183,8 +251,12 @@ Scene makeDefaultScene()
             item.scale = {random.between(0.4f, 1.4f), height, random.between(0.4f, 1.4f)};
             break;
         case Shape::Sphere:
+            // Spheres bounce, squashed thin in X and Z while fast; their hop is at most about
+            // twice their size.
             item.mesh = sphereMesh;
             item.scale = glm::vec3{height};
+            item.animation = BounceAnimation{random.between(0.6f, 1.8f) * height, random.between(0.8f, 1.6f),
+                                             random.unit(), 0.25f, 0.0f};
             break;
         case Shape::Cylinder: {
             item.mesh = cylinderMesh;
@@ -219,13 +291,17 @@ Scene makeDefaultScene()
         float radius;
     };
     std::vector<Placed> placed;
+    addSurfacesOfRevolution(scene, placed);
     int counters[7] = {};
     for (Item& item : items) {
         const Mesh& mesh = scene.meshes[item.mesh];
         const glm::mat4 unplaced = composeTransform(glm::vec3{0.0f}, item.rotateDegrees, item.scale);
         const Bounds bounds = transformedBounds(mesh, unplaced);
         const glm::vec2 halfSize = 0.5f * glm::vec2{bounds.max.x - bounds.min.x, bounds.max.z - bounds.min.z};
-        const float radius = glm::length(halfSize);
+        float radius = glm::length(halfSize);
+        // A swaying object leans out of its footprint by the shear at its top.
+        if (item.animation && std::holds_alternative<SwayAnimation>(*item.animation))
+            radius += kSwayAmplitude * (bounds.max.y - bounds.min.y);
         const float limit = kHalfExtent - std::max(halfSize.x, halfSize.y);
         glm::vec2 spot{0.0f};
         bool found = false;
@@ -247,8 +323,17 @@ Scene makeDefaultScene()
             shapeName(item.shape) + std::to_string(counters[static_cast<int>(item.shape)]++);
         item.material.name = name;
         scene.materials.push_back(item.material);
-        scene.objects.push_back({name, item.mesh, scene.materials.size() - 1,
-                                 composeTransform(translate, item.rotateDegrees, item.scale)});
+        Object object;
+        object.name = name;
+        object.mesh = item.mesh;
+        object.material = scene.materials.size() - 1;
+        object.transform = composeTransform(translate, item.rotateDegrees, item.scale);
+        // Spinning about the footprint's centre keeps the object inside its footprint circle.
+        if (item.animation)
+            if (auto* spin = std::get_if<SpinAnimation>(&*item.animation))
+                spin->pivot = glm::vec3{spot.x, 0.0f, spot.y};
+        object.animation = item.animation;
+        scene.objects.push_back(std::move(object));
     }
     return scene;
 }

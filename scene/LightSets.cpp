@@ -47,6 +47,8 @@ glm::vec3 hueToRgb(float hue)
 
 constexpr float kMaxSpotTiltDegrees = 30.0f;
 
+constexpr double kGoldenAngleDegrees = 137.50776405003785;
+
 // Appends `count` lights of `set`. Every light draws the same number of values in the same
 // order, so light i depends only on the seed and i: growing the count appends lights and
 // never changes the ones before.
@@ -80,6 +82,12 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
             light.cutoffDegrees = random.in(set.cutoffDegrees);
             light.exponent = random.in(set.exponent);
         }
+        // Spread over the circle by the golden angle, so that no two lights of a set move in
+        // lockstep whatever the count; drawn from no random number, so the lights above keep
+        // their values.
+        if (set.animation)
+            light.animation = withExtraPhase(*set.animation,
+                                             static_cast<float>(std::fmod(kGoldenAngleDegrees * i, 360.0)));
         out.push_back(std::move(light));
     }
 }

@@ -10,6 +10,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/Animation.h"
+#include "scene/Revolution.h"
+
 namespace manylights {
 
 struct Camera {
@@ -53,6 +56,8 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};
     float cutoffDegrees = 45.0f;  // half-angle, 0 < cutoff ≤ 180
     float exponent = 0.0f;
+    // Motion over time around `position` (scene/Animation.h); none: the light stands still.
+    std::optional<LightAnimation> animation{};
 };
 
 // A closed interval [lo, hi] from which a light set draws a value uniformly.
@@ -76,6 +81,8 @@ struct LightSet {
     // being the set's count after --lights: the lights' total covered area stays that of
     // `range` at the reference count, so lights per pixel stay about constant in a sweep.
     std::optional<int> rangeReferenceCount;
+    // Given to every generated light, light i's phase advanced by i times the golden angle.
+    std::optional<LightAnimation> animation{};
 };
 
 struct Material {
@@ -142,6 +149,11 @@ struct Object {
     // True when the object names its material: it then replaces the mesh file's own materials
     // (SPEC.md §1: a file's materials are used only when the object names none).
     bool materialOverridesMesh = true;
+    // Motion over time; `transform` is the rest pose (scene/Animation.h).
+    std::optional<ObjectAnimation> animation{};
+    // A surface of revolution whose positions and normals the vertex shader computes from the
+    // mesh's uvs and the time (scene/Revolution.h); the mesh is its grid (makeRevolutionGrid).
+    std::optional<RevolutionProfile> revolution{};
 };
 
 // Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
@@ -159,6 +171,9 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
+    // When set, every rendered light also gets a small emissive sphere of this radius in its
+    // own colour that follows it (drawn by the render layer as an ordinary object).
+    std::optional<float> lightMarkerRadius;
 
     // World-space bounds of every object.
     Bounds worldBounds() const;

@@ -22,6 +22,7 @@
 
 #include "core/Error.h"
 #include "scene/Meshes.h"
+#include "scene/Revolution.h"
 #include "scene/Transform.h"
 #include "scene/Tangents.h"
 
@@ -380,7 +381,7 @@ public:
         if (!root.is_object())
             fail(top, "the top level must be a JSON object, got " + describeType(root));
         expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights",
-                         "light_sets", "materials", "objects"});
+                         "light_sets", "materials", "objects", "light_markers"});
         if (const auto node = member(top, "camera"))
             readCamera(*node);
         if (const auto node = member(top, "background"))
@@ -404,6 +405,10 @@ public:
             expectArray(*node, kMaxObjects, "objects");
             for (std::size_t i = 0; i < node->json->size(); ++i)
                 scene_.objects.push_back(readObject(element(*node, i), i));
+        }
+        if (const auto node = member(top, "light_markers")) {
+            expectKeys(*node, {"radius"});
+            scene_.lightMarkerRadius = positive(required(*node, "radius"));
         }
         return std::move(scene_);
     }
@@ -727,11 +732,13 @@ private:
         light.type = lightType(required(node, "type"), "light");
         if (light.type == LightType::Point) {
             rejectSpotKeys(node, {"direction", "cutoff", "exponent"}, "lights");
-            expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range"});
+            expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "animation"});
         } else {
-            expectKeys(node,
-                       {"type", "name", "pos", "intensity", "attenuation", "range", "direction", "cutoff", "exponent"});
+            expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "direction", "cutoff",
+                              "exponent", "animation"});
         }
+        if (const auto animation = member(node, "animation"))
+            light.animation = readLightAnimation(*animation);
         if (const auto name = member(node, "name"))
             light.name = string(*name);
         else
@@ -800,11 +807,14 @@ private:
             set.type = lightType(*type, "light set");
         if (set.type == LightType::Point) {
             rejectSpotKeys(node, {"cutoff", "exponent"}, "light sets");
-            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity"});
+            expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
+                              "animation"});
         } else {
             expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
-                              "cutoff", "exponent"});
+                              "cutoff", "exponent", "animation"});
         }
+        if (const auto animation = member(node, "animation"))
+            set.animation = readLightAnimation(*animation);
         set.count = static_cast<int>(integer(required(node, "count"), 0, kMaxSetLights));
         if (const auto seed = member(node, "seed"))
             set.seed = static_cast<std::uint32_t>(integer(*seed, 0, 4294967295));
@@ -880,18 +890,114 @@ private:
 
     Object readObject(const Node& node, std::size_t index)
     {
-        expectKeys(node, {"name", "mesh", "material", "transform"});
+        expectKeys(node, {"name", "mesh", "material", "transform", "animation"});
         Object object;
         if (const auto name = member(node, "name"))
             object.name = string(*name);
         else
             object.name = "objects[" + std::to_string(index) + "]";
+        dynamicRevolution_.reset();
         object.mesh = readMesh(required(node, "mesh"));
+        object.revolution = dynamicRevolution_;
         object.material = objectMaterial(node);
         object.materialOverridesMesh = member(node, "material").has_value();
         if (const auto transform = member(node, "transform"))
             object.transform = readTransform(*transform);
+        if (const auto animation = member(node, "animation"))
+            object.animation = readObjectAnimation(*animation);
         return object;
+    }
+
+    // --- animation (docs/scene-format.md) ----------------------------------------------------
+
+    // An animation is an object with exactly one key, the kind, whose value holds its settings.
+    std::pair<std::string, Node> animationKind(const Node& node, const std::vector<std::string>& kinds) const
+    {
+        expectObject(node);
+        if (node.json->size() != 1)
+            fail(node, "expected exactly one animation kind (one of: " + joinNames(kinds) + "), got " +
+                           std::to_string(node.json->size()) + " keys");
+        const std::string kind = node.json->begin().key();
+        const Node settings{&node.json->begin().value(), node.path + "/" + escapePointerToken(kind)};
+        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+            const auto guess = closest(kind, kinds);
+            fail(settings, "unknown animation " + quote(kind) +
+                               (guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")"));
+        }
+        return {kind, settings};
+    }
+
+    float optionalNumber(const Node& node, std::string_view key, float fallback, NumberReader reader) const
+    {
+        const auto found = member(node, key);
+        return found ? (this->*reader)(*found) : fallback;
+    }
+
+    float fraction(const Node& node) const
+    {
+        const float value = number(node);
+        if (!(value >= 0.0f && value < 1.0f))
+            fail(node, "must be in [0, 1), got " + describeValue(*node.json));
+        return value;
+    }
+
+    ObjectAnimation readObjectAnimation(const Node& node) const
+    {
+        const auto [kind, settings] = animationKind(node, {"spin", "sway", "bounce"});
+        if (kind == "spin") {
+            expectKeys(settings, {"axis", "speed", "phase", "pivot"});
+            SpinAnimation spin;
+            if (const auto axis = member(settings, "axis"))
+                spin.axis = direction(*axis);
+            spin.degreesPerSecond = optionalNumber(settings, "speed", spin.degreesPerSecond, &Loader::number);
+            spin.phaseDegrees = optionalNumber(settings, "phase", spin.phaseDegrees, &Loader::number);
+            if (const auto pivot = member(settings, "pivot"))
+                spin.pivot = vec3(*pivot);
+            return spin;
+        }
+        if (kind == "sway") {
+            expectKeys(settings, {"direction", "amplitude", "frequency", "phase", "base"});
+            SwayAnimation sway;
+            if (const auto directionNode = member(settings, "direction")) {
+                sway.direction = vec3(*directionNode);
+                if (sway.direction.y != 0.0f || (sway.direction.x == 0.0f && sway.direction.z == 0.0f))
+                    fail(*directionNode, "must be a non-zero horizontal vector [x, 0, z]");
+            }
+            sway.amplitude = optionalNumber(settings, "amplitude", sway.amplitude, &Loader::nonNegative);
+            sway.frequency = optionalNumber(settings, "frequency", sway.frequency, &Loader::nonNegative);
+            sway.phaseDegrees = optionalNumber(settings, "phase", sway.phaseDegrees, &Loader::number);
+            sway.base = optionalNumber(settings, "base", sway.base, &Loader::number);
+            return sway;
+        }
+        expectKeys(settings, {"height", "period", "phase", "squash", "base"});
+        BounceAnimation bounce;
+        bounce.height = optionalNumber(settings, "height", bounce.height, &Loader::nonNegative);
+        bounce.period = optionalNumber(settings, "period", bounce.period, &Loader::positive);
+        bounce.phase = optionalNumber(settings, "phase", bounce.phase, &Loader::fraction);
+        bounce.squash = optionalNumber(settings, "squash", bounce.squash, &Loader::fraction);
+        bounce.base = optionalNumber(settings, "base", bounce.base, &Loader::number);
+        return bounce;
+    }
+
+    LightAnimation readLightAnimation(const Node& node) const
+    {
+        const auto [kind, settings] = animationKind(node, {"orbit", "drift"});
+        if (kind == "orbit") {
+            expectKeys(settings, {"radius", "speed", "phase"});
+            OrbitAnimation orbit;
+            orbit.radius = optionalNumber(settings, "radius", orbit.radius, &Loader::nonNegative);
+            orbit.degreesPerSecond = optionalNumber(settings, "speed", orbit.degreesPerSecond, &Loader::number);
+            orbit.phaseDegrees = optionalNumber(settings, "phase", orbit.phaseDegrees, &Loader::number);
+            return orbit;
+        }
+        expectKeys(settings, {"amplitude", "period", "phase"});
+        DriftAnimation drift;
+        if (const auto amplitude = member(settings, "amplitude"))
+            drift.amplitude = vec3(*amplitude, &Loader::nonNegative);
+        if (const auto period = member(settings, "period"))
+            drift.period = vec3(*period, &Loader::positive);
+        drift.phaseDegrees = optionalNumber(settings, "phase", drift.phaseDegrees, &Loader::number);
+        return drift;
     }
 
     std::size_t objectMaterial(const Node& object)
@@ -1028,11 +1134,42 @@ private:
             return cached("torus(radius=" + formatFloat(radius) + ", tube=" + formatFloat(tube) + ")",
                           [&] { return makeTorus(radius, tube); });
         }
-        const std::vector<std::string> kinds{"plane", "box", "sphere", "cone", "cylinder", "torus"};
+        if (kind == "revolution")
+            return revolution(node);
+        const std::vector<std::string> kinds{"plane", "box", "sphere", "cone", "cylinder", "torus", "revolution"};
         const auto guess = closest(kind, kinds);
         const std::string hint =
             guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")";
         fail(kindNode, "unknown primitive " + quote(kind) + hint);
+    }
+
+    // A surface of revolution (scene/Revolution.h): frozen at `time` on the CPU, or with
+    // "dynamic": true computed by the vertex shader at every frame's time.
+    std::size_t revolution(const Node& node)
+    {
+        expectKeys(node, {"primitive", "radius", "height", "amplitude", "waves", "speed", "time", "dynamic"});
+        RevolutionProfile profile;
+        profile.radius = optionalNumber(node, "radius", profile.radius, &Loader::positive);
+        profile.height = optionalNumber(node, "height", profile.height, &Loader::positive);
+        profile.amplitude = optionalNumber(node, "amplitude", profile.amplitude, &Loader::nonNegative);
+        profile.waves = optionalNumber(node, "waves", profile.waves, &Loader::nonNegative);
+        profile.speed = optionalNumber(node, "speed", profile.speed, &Loader::number);
+        if (profile.amplitude >= profile.radius)
+            fail(*member(node, "amplitude"), "must be less than radius (" + formatFloat(profile.radius) +
+                                                 ") or the surface pinches through its axis");
+        const auto dynamic = member(node, "dynamic");
+        const bool isDynamic = dynamic && boolean(*dynamic);
+        const auto time = member(node, "time");
+        if (time && isDynamic)
+            fail(*time, "applies only to a static surface (this one has \"dynamic\": true)");
+        const float frozenAt = time ? number(*time) : 0.0f;
+        if (isDynamic)
+            dynamicRevolution_ = profile;
+        // Not cached: two surfaces with the same profile are rare, and the key would be long.
+        Mesh mesh = makeRevolutionMesh(profile, isDynamic ? 0.0 : frozenAt);
+        mesh.name = isDynamic ? "revolution(dynamic)" : "revolution";
+        scene_.meshes.push_back(std::move(mesh));
+        return scene_.meshes.size() - 1;
     }
 
     glm::mat4 readTransform(const Node& node) const
@@ -1086,6 +1223,7 @@ private:
     std::map<std::string, std::size_t> namedMaterials_;
     std::optional<std::size_t> defaultMaterial_;
     std::map<std::string, std::size_t> meshCache_;
+    std::optional<RevolutionProfile> dynamicRevolution_;  // set by the mesh of the object being read
 };
 
 }  // namespace

@@ -29,6 +29,15 @@ for technique in deferred volumes stencil tiled-quads tiled clustered; do
 done
 # A few lights, so that the scene shows between the wireframes.
 $ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes --lights 24
+# The animation (README): a strip of four moments and a looping GIF, recorded with
+# --time-range and put together with ImageMagick.
+frames=$(mktemp -d)
+trap 'rm -rf "$frames"' EXIT
+$ml render --time-range 0:3 --fps 10 --size 320x180 -o "$frames/%03d.png"
+convert -delay 10 -loop 0 "$frames"/*.png -colors 128 -layers Optimize $out/animation.gif
+$ml render --time-range 0:3 --fps 1 --size 480x270 -o "$frames/strip-%d.png"
+montage "$frames"/strip-0.png "$frames"/strip-1.png "$frames"/strip-2.png -tile 3x1 -geometry +4+0 \
+  -background black $out/animation-strip.png
 # The benchmark scene of docs/performance.md at its reference light count.
 $ml render bench/courtyard.json -o $out/courtyard.png --size 640x360 --lights 1024
 echo "docs images written to $out"

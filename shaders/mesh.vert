@@ -2,6 +2,7 @@
 // Shared by the forward pass and the G-buffer pass, so both see bit-identical positions and
 // normals (a technique may only differ in which lights it visits).
 #include "lib/frame.glsl"
+#include "lib/revolution.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -18,11 +19,16 @@ layout(location = 3) out vec4 worldTangent;
 
 void main()
 {
-    vec4 world = model * vec4(inPosition, 1.0);
+    vec3 position = inPosition;
+    vec3 normal = inNormal;
+    vec4 tangent = inTangent;
+    if (revolutionEnabled != 0)
+        revolutionSurface(inUv, position, normal, tangent);
+    vec4 world = model * vec4(position, 1.0);
     worldPosition = world.xyz;
-    worldNormal = normalMatrix * inNormal;
+    worldNormal = normalMatrix * normal;
     uv = inUv;
     // Tangents transform with the model matrix (they lie in the surface), not the normal matrix.
-    worldTangent = vec4(mat3(model) * inTangent.xyz, inTangent.w);
+    worldTangent = vec4(mat3(model) * tangent.xyz, tangent.w);
     gl_Position = frame.viewProjection * world;
 }

@@ -59,7 +59,19 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_option("--view", view, "What to show")
         ->check(CLI::IsMember(viewModeNames()))
         ->capture_default_str();
-    renderCommand->add_option("--time", render.time, "Scene time in seconds")->check(CLI::NonNegativeNumber);
+    CLI::Option* timeOption =
+        renderCommand->add_option("--time", render.time, "Scene time in seconds")->check(CLI::NonNegativeNumber);
+    std::string timeRange;
+    CLI::Option* timeRangeOption =
+        renderCommand
+            ->add_option("--time-range", timeRange,
+                         "Record frames from START to END seconds (START:END, END excluded); -o is then a "
+                         "pattern such as frames/%04d.png")
+            ->excludes(timeOption);
+    CLI::Option* fpsOption =
+        renderCommand->add_option("--fps", render.fps, "Frames per second of a --time-range recording")
+            ->check(CLI::Range(0.001, 1000.0))
+            ->capture_default_str();
     renderCommand->add_option("--lights", render.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));
     renderCommand->add_option("--frames", render.frames, "Frames to render and time (after one warm-up frame)")
@@ -93,6 +105,23 @@ int runCli(int argc, const char* const* argv)
     }
     render.width = renderSize.width;
     render.height = renderSize.height;
+    if (fpsOption->count() > 0 && timeRangeOption->count() == 0) {
+        std::fprintf(stderr, "manylights: --fps applies only to a --time-range recording\n");
+        return kExitUsage;
+    }
+    if (timeRangeOption->count() > 0) {
+        TimeRange range;
+        std::string problem = parseTimeRange(timeRange, range);
+        if (problem.empty())
+            problem = checkFramePattern(render.output);
+        if (problem.empty() && !render.statsPath.empty())
+            problem = "--stats measures one image; it does not combine with --time-range";
+        if (!problem.empty()) {
+            std::fprintf(stderr, "manylights: %s\n", problem.c_str());
+            return kExitUsage;
+        }
+        render.timeRange = range;
+    }
     const bool pfm = render.output.size() > 4 && render.output.ends_with(".pfm");
     const bool png = render.output.size() > 4 && render.output.ends_with(".png");
     if (!pfm && !png) {

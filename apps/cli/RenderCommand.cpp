@@ -76,6 +76,36 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     return stats;
 }
 
+// The renderer's last frame to `path` (.pfm as floats, .png displayable), atomically.
+void writeLastFrame(const Renderer& renderer, ViewMode view, const std::string& path)
+{
+    Image image = renderer.readColour();
+    if (endsWith(path, ".pfm")) {
+        writePfm(image, path);
+    } else {
+        if (view != ViewMode::Final && view != ViewMode::Volumes)
+            image = displayableView(image, view, renderer.readCoverage());
+        writePng(image, path);
+    }
+}
+
+// Every frame of the time range, each written atomically under its own name as soon as it is
+// rendered: an interrupted recording leaves whole frames only.
+void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions& options)
+{
+    const TimeRange& range = *options.timeRange;
+    const int count = recordingFrameCount(range, options.fps);
+    // Fail before the first frame, not after many, when the folder cannot be written.
+    checkWritable(formatFramePath(options.output, 0), "image");
+    printRecordingProgress(0, count);
+    for (int frame = 0; frame < count; ++frame) {
+        renderer.setTime(recordingFrameTime(range, options.fps, frame));
+        renderer.renderFrame(technique, options.view);
+        writeLastFrame(renderer, options.view, formatFramePath(options.output, frame));
+        printRecordingProgress(frame + 1, count);
+    }
+}
+
 }  // namespace
 
 void runRender(const RenderOptions& options)
@@ -87,10 +117,16 @@ void runRender(const RenderOptions& options)
 
     HeadlessContext context({.debug = defaultDebugContext()});
     Renderer renderer(scene, lights, options.width, options.height, options.gbufferLayout);
+    renderer.setTime(options.time);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
     std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork, .gbufferLayout = options.gbufferLayout});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
+
+    if (options.timeRange) {
+        recordFrames(renderer, *technique, options);
+        return;
+    }
 
     const bool measuring = !options.statsPath.empty();
     for (int i = 0; measuring && i < kWarmupFrames; ++i)
@@ -99,14 +135,7 @@ void runRender(const RenderOptions& options)
     for (int i = 0; i < options.frames; ++i)
         frames.push_back(renderer.renderFrame(*technique, options.view));
 
-    Image image = renderer.readColour();
-    if (endsWith(options.output, ".pfm")) {
-        writePfm(image, options.output);
-    } else {
-        if (options.view != ViewMode::Final && options.view != ViewMode::Volumes)
-            image = displayableView(image, options.view, renderer.readCoverage());
-        writePng(image, options.output);
-    }
+    writeLastFrame(renderer, options.view, options.output);
     if (measuring) {
         const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
         const nlohmann::json stats =

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render/GBuffer.h"
+#include "apps/cli/Recording.h"
 #include "render/Views.h"
 
 namespace manylights {
@@ -21,6 +22,10 @@ struct RenderOptions {
     std::string statsPath;
     bool countWork = false;
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    // Recording: with a time range, `output` is a pattern (apps/cli/Recording.h) and every
+    // frame of the range at `fps` is written.
+    std::optional<TimeRange> timeRange;
+    double fps = 30.0;
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

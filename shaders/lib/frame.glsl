@@ -12,6 +12,8 @@ layout(std140, binding = 0) uniform Frame {
     uvec4 counts;               // x: number of local lights
     vec4 projection;            // x: tan(horizontal fov / 2), y: tan(vertical fov / 2), z: near, w: far
     vec4 viewport;              // x: width, y: height in pixels; z, w: their reciprocals
+    vec4 time;                  // x: the scene time in seconds
+    vec4 terms;                 // 1 or 0: ambient, diffuse, specular terms on (the viewer's toggles)
 } frame;
 
 // Distance from the eye along the view axis (the depth the techniques cull with).

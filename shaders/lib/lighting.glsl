@@ -20,13 +20,13 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
     if (NdotL <= 0.0)
         return vec3(0.0);
     vec3 H = normalize(L + V);
-    return s.diffuse * NdotL + s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+    return frame.terms.y * s.diffuse * NdotL + frame.terms.z * s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
 }
 
 // The light-independent terms: ke + ambient ⊙ kd + the directional light.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
-    vec3 color = s.emissive + frame.ambient.rgb * s.diffuse;
+    vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * s.diffuse;
     color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V);
     return color;
 }

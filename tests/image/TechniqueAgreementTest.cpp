@@ -141,6 +141,9 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, TechniqueAgreement,
     ::testing::Values(AgreementCase{"default_scene", "", {"--size", "320x180"}},
                       AgreementCase{"default_scene_1024_lights", "", {"--size", "192x108", "--lights", "1024"}},
+                      // Mid-animation: lights, markers and objects moved, the dynamic surface of
+                      // revolution computed in the vertex shader at this time.
+                      AgreementCase{"default_scene_at_time_2_7", "", {"--size", "192x108", "--time", "2.7"}},
                       AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json",
                                     {"--size", "240x160"}},
                       AgreementCase{"spots_points_300_set_lights", kScenes + "spots_and_points.json",

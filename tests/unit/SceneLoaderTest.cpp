@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/Error.h"
+#include "scene/Revolution.h"
 #include "scene/SceneLoader.h"
 #include "scene/Transform.h"
 
@@ -376,6 +377,73 @@ TEST(SceneLoader, ErrorsInAFileNameTheFile)
     fs::remove_all(dir);
 }
 
+TEST(SceneLoader, AnimationsAreRead)
+{
+    const Scene scene = parse(R"json({
+        "light_markers": {"radius": 0.1},
+        "lights": [
+            {"type": "point", "pos": [1, 2, 3], "intensity": [1, 1, 1], "range": 2,
+             "animation": {"orbit": {"radius": 1.5, "speed": -20, "phase": 90}}},
+            {"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 2,
+             "animation": {"drift": {"amplitude": [1, 0.5, 2], "period": [3, 4, 5], "phase": 10}}}
+        ],
+        "light_sets": [ {"count": 3, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [1, 1],
+                         "animation": {"orbit": {}}} ],
+        "objects": [
+            {"mesh": {"primitive": "sphere", "radius": 1},
+             "animation": {"bounce": {"height": 2, "period": 1.5, "phase": 0.25, "squash": 0.3, "base": -1}}},
+            {"mesh": {"primitive": "box", "size": [1, 1, 1]},
+             "animation": {"spin": {"axis": [0, 2, 0], "speed": 30, "phase": 45, "pivot": [1, 0, 1]}}},
+            {"mesh": {"primitive": "box", "size": [1, 2, 1]},
+             "animation": {"sway": {"direction": [0, 0, 1], "amplitude": 0.1, "frequency": 2, "phase": 30}}},
+            {"mesh": {"primitive": "revolution", "radius": 0.6, "height": 2, "amplitude": 0.1, "waves": 2,
+                      "speed": 0.25, "dynamic": true}},
+            {"mesh": {"primitive": "revolution", "time": 0.5}}
+        ]
+    })json");
+    ASSERT_TRUE(scene.lightMarkerRadius.has_value());
+    EXPECT_FLOAT_EQ(*scene.lightMarkerRadius, 0.1f);
+    const auto& orbit = std::get<OrbitAnimation>(*scene.lights[0].animation);
+    EXPECT_FLOAT_EQ(orbit.radius, 1.5f);
+    EXPECT_FLOAT_EQ(orbit.degreesPerSecond, -20.0f);
+    EXPECT_FLOAT_EQ(orbit.phaseDegrees, 90.0f);
+    const auto& drift = std::get<DriftAnimation>(*scene.lights[1].animation);
+    expectVec3(drift.amplitude, {1.0f, 0.5f, 2.0f});
+    expectVec3(drift.period, {3.0f, 4.0f, 5.0f});
+    EXPECT_FLOAT_EQ(drift.phaseDegrees, 10.0f);
+    ASSERT_TRUE(scene.lightSets[0].animation.has_value());
+    EXPECT_FLOAT_EQ(std::get<OrbitAnimation>(*scene.lightSets[0].animation).radius, OrbitAnimation{}.radius);
+
+    const auto& bounce = std::get<BounceAnimation>(*scene.objects[0].animation);
+    EXPECT_FLOAT_EQ(bounce.height, 2.0f);
+    EXPECT_FLOAT_EQ(bounce.period, 1.5f);
+    EXPECT_FLOAT_EQ(bounce.phase, 0.25f);
+    EXPECT_FLOAT_EQ(bounce.squash, 0.3f);
+    EXPECT_FLOAT_EQ(bounce.base, -1.0f);
+    const auto& spin = std::get<SpinAnimation>(*scene.objects[1].animation);
+    expectVec3(spin.axis, {0.0f, 2.0f, 0.0f});
+    EXPECT_FLOAT_EQ(spin.degreesPerSecond, 30.0f);
+    EXPECT_FLOAT_EQ(spin.phaseDegrees, 45.0f);
+    ASSERT_TRUE(spin.pivot.has_value());
+    expectVec3(*spin.pivot, {1.0f, 0.0f, 1.0f});
+    const auto& sway = std::get<SwayAnimation>(*scene.objects[2].animation);
+    expectVec3(sway.direction, {0.0f, 0.0f, 1.0f});
+    EXPECT_FLOAT_EQ(sway.amplitude, 0.1f);
+    EXPECT_FLOAT_EQ(sway.frequency, 2.0f);
+    EXPECT_FLOAT_EQ(sway.phaseDegrees, 30.0f);
+
+    ASSERT_TRUE(scene.objects[3].revolution.has_value());
+    EXPECT_FLOAT_EQ(scene.objects[3].revolution->radius, 0.6f);
+    EXPECT_FLOAT_EQ(scene.objects[3].revolution->height, 2.0f);
+    EXPECT_FLOAT_EQ(scene.objects[3].revolution->waves, 2.0f);
+    EXPECT_FLOAT_EQ(scene.objects[3].revolution->speed, 0.25f);
+    // The static surface is frozen at its time: its vertices are the CPU surface at t = 0.5.
+    EXPECT_FALSE(scene.objects[4].revolution.has_value());
+    const Mesh& frozen = scene.meshes[scene.objects[4].mesh];
+    const Vertex& vertex = frozen.vertices[30];
+    expectVec3(vertex.position, revolutionPosition(RevolutionProfile{}, vertex.uv.x, vertex.uv.y, 0.5));
+}
+
 // ---------------------------------------------------------------------------------------
 // Bad scenes: each must fail with a one-line message that starts with the exact position
 // (FILE:LINE:COLUMN for syntax, FILE: /json/pointer for everything else) and says what is wrong.
@@ -654,6 +722,57 @@ const std::vector<BadScene> kBadScenes = {
      ": /objects/0/transform/rotation: ", "(did you mean 'rotate'?)"},
     {"TransformTranslateHuge", sphereObject(R"json(, "transform": {"translate": [0, 1e300, 0]})json"),
      ": /objects/0/transform/translate/1: ", "number out of range"},
+    // Animation (docs/scene-format.md "Animation").
+    {"AnimationNotAnObject", sphereObject(R"json(, "animation": "spin")json"), ": /objects/0/animation: ",
+     "expected an object, got a string"},
+    {"AnimationTwoKinds", sphereObject(R"json(, "animation": {"spin": {}, "sway": {}})json"),
+     ": /objects/0/animation: ", "expected exactly one animation kind (one of: spin, sway, bounce), got 2 keys"},
+    {"AnimationUnknownKind", sphereObject(R"json(, "animation": {"spinn": {}})json"), ": /objects/0/animation/spinn: ",
+     "unknown animation 'spinn' (did you mean 'spin'?)"},
+    {"AnimationLightKindOnObject", sphereObject(R"json(, "animation": {"orbit": {}})json"),
+     ": /objects/0/animation/orbit: ", "unknown animation 'orbit'"},
+    {"AnimationUnknownKey", sphereObject(R"json(, "animation": {"spin": {"sped": 3}})json"),
+     ": /objects/0/animation/spin/sped: ", "(did you mean 'speed'?)"},
+    {"AnimationSpinSpeedString", sphereObject(R"json(, "animation": {"spin": {"speed": "fast"}})json"),
+     ": /objects/0/animation/spin/speed: ", "expected a number, got a string"},
+    {"AnimationSpinAxisZero", sphereObject(R"json(, "animation": {"spin": {"axis": [0, 0, 0]}})json"),
+     ": /objects/0/animation/spin/axis: ", "must be a non-zero vector"},
+    {"AnimationBouncePeriodNegative", sphereObject(R"json(, "animation": {"bounce": {"period": -1}})json"),
+     ": /objects/0/animation/bounce/period: ", "must be > 0, got -1"},
+    {"AnimationBouncePeriodZero", sphereObject(R"json(, "animation": {"bounce": {"period": 0}})json"),
+     ": /objects/0/animation/bounce/period: ", "must be > 0, got 0"},
+    {"AnimationBounceSquashOne", sphereObject(R"json(, "animation": {"bounce": {"squash": 1}})json"),
+     ": /objects/0/animation/bounce/squash: ", "must be in [0, 1), got 1"},
+    {"AnimationBounceHeightNegative", sphereObject(R"json(, "animation": {"bounce": {"height": -2}})json"),
+     ": /objects/0/animation/bounce/height: ", "must be >= 0, got -2"},
+    {"AnimationSwayVertical", sphereObject(R"json(, "animation": {"sway": {"direction": [0, 1, 0]}})json"),
+     ": /objects/0/animation/sway/direction: ", "must be a non-zero horizontal vector"},
+    {"AnimationSwayFrequencyNegative", sphereObject(R"json(, "animation": {"sway": {"frequency": -0.5}})json"),
+     ": /objects/0/animation/sway/frequency: ", "must be >= 0, got -0.5"},
+    {"LightAnimationObjectKind",
+     withLight(R"json({"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 2,
+                       "animation": {"bounce": {}}})json"),
+     ": /lights/0/animation/bounce: ", "unknown animation 'bounce' (expected one of: orbit, drift)"},
+    {"LightOrbitRadiusNegative",
+     withLight(R"json({"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 2,
+                       "animation": {"orbit": {"radius": -1}}})json"),
+     ": /lights/0/animation/orbit/radius: ", "must be >= 0, got -1"},
+    {"LightDriftPeriodZero",
+     withLight(R"json({"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 2,
+                       "animation": {"drift": {"period": [1, 0, 1]}}})json"),
+     ": /lights/0/animation/drift/period/1: ", "must be > 0, got 0"},
+    {"SetAnimationTypo",
+     withSet(R"json({"count": 2, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [1, 1],
+                     "animation": {"orbit": {"phse": 3}}})json"),
+     ": /light_sets/0/animation/orbit/phse: ", "(did you mean 'phase'?)"},
+    {"LightMarkersRadiusZero", R"json({"light_markers": {"radius": 0}})json", ": /light_markers/radius: ",
+     "must be > 0, got 0"},
+    {"LightMarkersNoRadius", R"json({"light_markers": {}})json", ": /light_markers: ",
+     "missing required key 'radius'"},
+    {"RevolutionAmplitudeTooLarge", withMesh(R"json({"primitive": "revolution", "radius": 0.5, "amplitude": 0.5})json"),
+     ": /objects/0/mesh/amplitude: ", "must be less than radius (0.5)"},
+    {"RevolutionDynamicWithTime", withMesh(R"json({"primitive": "revolution", "dynamic": true, "time": 1})json"),
+     ": /objects/0/mesh/time: ", "applies only to a static surface"},
 };
 
 class BadSceneTest : public ::testing::TestWithParam<BadScene> {};

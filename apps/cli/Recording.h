@@ -1,0 +1,33 @@
+// Recording an animation as an image sequence: `render --time-range START:END --fps N -o
+// frames/%04d.png`. The parsing here is pure (tested without GL); RenderCommand drives it.
+#pragma once
+
+#include <string>
+
+namespace manylights {
+
+struct TimeRange {
+    double start = 0.0;
+    double end = 0.0;
+};
+
+// "START:END" in seconds, 0 ≤ START < END, both finite. Returns the problem as one line
+// (naming --time-range), or an empty string when `text` is a range; then `range` holds it.
+std::string parseTimeRange(const std::string& text, TimeRange& range);
+
+// The frames of [start, end) at `fps`: t_k = start + k / fps for k = 0 .. count − 1, the end
+// excluded (so that a looping animation does not show its first frame twice).
+int recordingFrameCount(const TimeRange& range, double fps);
+double recordingFrameTime(const TimeRange& range, double fps, int frame);
+
+// An output pattern holds exactly one frame-number conversion, %d or %0Nd (N ≤ 9), and may
+// hold %% for a literal percent sign. Returns the problem as one line, or an empty string.
+std::string checkFramePattern(const std::string& pattern);
+
+// The pattern with its conversion replaced by `frame` (zero-padded to N digits for %0Nd).
+std::string formatFramePath(const std::string& pattern, int frame);
+
+// "\r[=======>      ]  12/48 frames" on stderr, and a newline after the last frame.
+void printRecordingProgress(int done, int total);
+
+}  // namespace manylights

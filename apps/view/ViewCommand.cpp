@@ -1,0 +1,72 @@
+// The `view` subcommand's command line; main.cpp hands `manylights view ...` here so that the
+// CLI library (and the tests linking it) need no GLFW or ImGui.
+#include <cstdio>
+#include <filesystem>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/cli/CommandSupport.h"
+#include "apps/view/Viewer.h"
+#include "core/Error.h"
+#include "render/Technique.h"
+#include "render/Views.h"
+
+namespace manylights {
+
+namespace {
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+}  // namespace
+
+int runViewCommand(int argc, const char* const* argv)
+{
+    CLI::App app{"manylights view: the scene in a window (docs/viewer.md)", "manylights view"};
+    ViewOptions options;
+    std::string size = "1280x720";
+    // The source tree's shaders, when the binary runs where it was built: editing them reloads.
+    options.shaderDirectory = MANYLIGHTS_SOURCE_DIR "/shaders";
+    app.add_option("scene", options.scenePath, "Scene file (JSON); the built-in default scene if absent");
+    app.add_option("--size", size, "Window size WxH")->capture_default_str();
+    app.add_option("--technique", options.technique, "Lighting technique")
+        ->check(CLI::IsMember(techniqueNames()))
+        ->capture_default_str();
+    app.add_option("--view", options.view, "What to show")->check(CLI::IsMember(viewModeNames()))->capture_default_str();
+    app.add_option("--time", options.time, "Animation start time in seconds")->check(CLI::NonNegativeNumber);
+    app.add_option("--lights", options.lights, "Replace the total count of the scene's light sets")
+        ->check(CLI::Range(0, 16777216));
+    app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
+    app.add_option("--shader-dir", options.shaderDirectory,
+                   "Compile shaders from this directory and reload them when they change ('' for the embedded ones)")
+        ->capture_default_str();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return kExitUsage;
+    }
+    ImageSize windowSize;
+    if (std::string problem = parseSize(size, windowSize); !problem.empty()) {
+        std::fprintf(stderr, "manylights: %s\n", problem.c_str());
+        return kExitUsage;
+    }
+    options.width = windowSize.width;
+    options.height = windowSize.height;
+    try {
+        runView(options);
+    } catch (const Error& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "manylights: out of memory in the viewer\n");
+        return kExitFailure;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    }
+    return 0;
+}
+
+}  // namespace manylights

@@ -1,0 +1,656 @@
+#include "apps/view/Viewer.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "apps/view/CameraControls.h"
+#include "apps/view/ViewScript.h"
+#include "core/Error.h"
+#include "gl/ShaderSource.h"
+#include "gl/VertexArray.h"
+#include "platform/HeadlessContext.h"
+#include "platform/window/WindowContext.h"
+#include "render/Renderer.h"
+#include "scene/DefaultScene.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Camera speeds, per second of wall time with a key held.
+constexpr float kOrbitDegreesPerSecond = 60.0f;
+constexpr float kDollyPerSecond = 1.5f;      // distance factor per second
+constexpr float kFlyFractionPerSecond = 0.4f;  // of the distance to the look-at point
+constexpr float kMouseDegreesPerPixel = 0.2f;
+// A scripted `key` press acts as the key held for this long.
+constexpr double kScriptKeySeconds = 1.0 / 30.0;
+constexpr std::size_t kFrameHistory = 240;
+constexpr double kShaderCheckSeconds = 0.5;
+
+std::string readTextFile(const std::string& path, const char* what)
+{
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        throw Error(path + ": cannot open " + what);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// Every shader file under `directory` with its modification time.
+std::map<std::string, fs::file_time_type> shaderTimes(const std::string& directory)
+{
+    std::map<std::string, fs::file_time_type> times;
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+        std::error_code statError;
+        if (it->is_regular_file(statError))
+            times[it->path().string()] = it->last_write_time(statError);
+    }
+    return times;
+}
+
+// The keys the viewer acts on, by the names scripts use.
+struct KeyBinding {
+    const char* name;
+    int key;
+};
+constexpr KeyBinding kKeys[] = {
+    {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},   {"down", GLFW_KEY_DOWN},
+    {"plus", GLFW_KEY_EQUAL}, {"minus", GLFW_KEY_MINUS}, {"w", GLFW_KEY_W},     {"a", GLFW_KEY_A},
+    {"s", GLFW_KEY_S},       {"d", GLFW_KEY_D},         {"x", GLFW_KEY_X},     {"l", GLFW_KEY_L},
+    {"m", GLFW_KEY_M},       {"t", GLFW_KEY_T},         {"v", GLFW_KEY_V},     {"p", GLFW_KEY_P},
+    {"f12", GLFW_KEY_F12},   {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
+};
+
+int keyByName(const std::string& name)
+{
+    for (const KeyBinding& binding : kKeys)
+        if (name == binding.name)
+            return binding.key;
+    ML_ASSERT(false);  // the script parser accepts only these names
+    return GLFW_KEY_UNKNOWN;
+}
+
+class Viewer {
+public:
+    explicit Viewer(const ViewOptions& options);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    void run();
+
+private:
+    static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+
+    Technique& technique();
+    void onKeyPressed(int key);
+    void applyHeldKeys(const std::vector<int>& keys, double seconds);
+    std::vector<int> heldKeys() const;
+    void runScript();
+    void checkShaders();
+    void reloadShaders();
+    void resizeIfNeeded();
+    void renderScene();
+    void showImage();
+    void drawAxes();
+    void writeScreenshot(const std::string& path);
+    void drawPanel();
+    std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
+
+    ViewOptions options_;
+    Scene scene_;
+    std::vector<Light> lights_;
+    WindowContext window_;
+    std::unique_ptr<Renderer> renderer_;
+    std::map<std::string, std::unique_ptr<Technique>> techniques_;  // by name, "+count" when counting
+    std::string techniqueName_;
+    std::string lastGoodTechnique_;  // the key in techniques_ of the last technique drawn with
+    ViewMode view_ = ViewMode::Final;
+
+    double time_ = 0.0;
+    bool paused_ = false;
+    float speed_ = 1.0f;
+    bool ambient_ = true;
+    bool diffuse_ = true;
+    bool specular_ = true;
+    bool axes_ = false;
+    bool wireframe_ = false;
+    bool panel_ = true;
+    bool quit_ = false;
+
+    std::deque<float> frameMs_;
+    FrameSample lastSample_;
+
+    gl::Texture2D displayTexture_;
+    gl::Framebuffer displayFramebuffer_;
+    gl::Program axesProgram_;
+    gl::VertexArray emptyVertexArray_{"axes (no attributes)"};
+
+    bool dragging_ = false;
+    double dragX_ = 0.0;
+    double dragY_ = 0.0;
+
+    std::string shaderDirectory_;
+    std::map<std::string, fs::file_time_type> shaderTimes_;
+    double lastShaderCheck_ = 0.0;
+    std::string shaderStatus_;
+    std::string shaderError_;
+
+    std::vector<ScriptCommand> script_;
+    std::size_t scriptNext_ = 0;
+    long scriptFramesLeft_ = 0;
+    std::string pendingScreenshot_;
+    std::vector<int> scriptKeys_;  // keys a script holds for this frame
+    std::string lastMessage_;
+};
+
+Scene loadScene(const ViewOptions& options)
+{
+    return options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+}
+
+Viewer::Viewer(const ViewOptions& options)
+    : options_(options), scene_(loadScene(options)),
+      window_({options.width, options.height, "manylights — " + scene_.source, defaultDebugContext()}),
+      techniqueName_(options.technique), view_(*parseViewMode(options.view)), time_(options.time)
+{
+    if (options.lights && scene_.lightSets.empty())
+        throw Error(scene_.source + ": --lights needs a scene with light_sets to scale");
+    lights_ = expandLights(scene_, options.lights);
+    if (!options.scriptPath.empty())
+        script_ = parseViewScript(readTextFile(options.scriptPath, "script"), options.scriptPath);
+
+    if (!options.shaderDirectory.empty() && fs::is_directory(options.shaderDirectory)) {
+        shaderDirectory_ = options.shaderDirectory;
+        // Files on disk first; a file missing there (a partial copy) comes from the binary.
+        gl::ShaderFileReader disk = gl::directoryShaderReader(shaderDirectory_);
+        gl::ShaderFileReader embedded = gl::embeddedShaderReader();
+        gl::setDefaultShaderReader([disk, embedded](const std::string& name) {
+            if (auto text = disk(name))
+                return text;
+            return embedded(name);
+        });
+        shaderTimes_ = shaderTimes(shaderDirectory_);
+        shaderStatus_ = "watching " + shaderDirectory_;
+    } else {
+        shaderStatus_ = "embedded shaders (no --shader-dir): no reload";
+    }
+
+    int width = 0;
+    int height = 0;
+    glfwGetFramebufferSize(window_.window(), &width, &height);
+    renderer_ = std::make_unique<Renderer>(scene_, lights_, std::max(width, 1), std::max(height, 1));
+    axesProgram_ = gl::Program("axes", {{GL_VERTEX_SHADER, "axes.vert"}, {GL_FRAGMENT_SHADER, "axes.frag"}});
+
+    GLFWwindow* window = window_.window();
+    glfwSetWindowUserPointer(window, this);
+    // Installed before ImGui's, which chains to them.
+    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+        if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard)
+            of(w).onKeyPressed(key);
+    });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+        Viewer& viewer = of(w);
+        if (button != GLFW_MOUSE_BUTTON_LEFT)
+            return;
+        viewer.dragging_ = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
+        glfwGetCursorPos(w, &viewer.dragX_, &viewer.dragY_);
+    });
+    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+        Viewer& viewer = of(w);
+        if (!viewer.dragging_)
+            return;
+        lookCamera(viewer.scene_.camera, -kMouseDegreesPerPixel * static_cast<float>(x - viewer.dragX_),
+                   -kMouseDegreesPerPixel * static_cast<float>(y - viewer.dragY_));
+        viewer.dragX_ = x;
+        viewer.dragY_ = y;
+    });
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+Viewer::~Viewer()
+{
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    gl::setDefaultShaderReader(gl::embeddedShaderReader());
+}
+
+// The technique to draw with, made on first use. A technique whose shaders fail to compile
+// (edited under --shader-dir) is not switched to: the previous one stays, the error shows.
+Technique& Viewer::technique()
+{
+    const bool counting = view_ == ViewMode::LightCount;
+    const std::string name = effectiveTechnique();
+    const std::string key = name + (counting ? "+count" : "");
+    auto& slot = techniques_[key];
+    if (!slot) {
+        try {
+            slot = makeTechnique(name, {.countWork = counting});
+            lastGoodTechnique_ = key;
+        } catch (const Error& error) {
+            techniques_.erase(key);
+            if (lastGoodTechnique_.empty())
+                throw;  // the first technique: nothing to fall back on
+            shaderError_ = error.what();
+            std::fprintf(stderr, "manylights view: cannot switch to %s: %s\n", name.c_str(), error.what());
+            // Back to the settings that made the last good technique.
+            const bool lastCounted = lastGoodTechnique_.ends_with("+count");
+            techniqueName_ = lastGoodTechnique_.substr(0, lastGoodTechnique_.find('+'));
+            wireframe_ = false;
+            if (lastCounted)
+                view_ = ViewMode::LightCount;
+            else if (view_ == ViewMode::LightCount)
+                view_ = ViewMode::Final;
+            renderer_->setCountWork(lastCounted);
+            return *techniques_.at(lastGoodTechnique_);
+        }
+    }
+    lastGoodTechnique_ = key;
+    return *slot;
+}
+
+void Viewer::onKeyPressed(int key)
+{
+    const std::vector<std::string>& names = techniqueNames();
+    switch (key) {
+    case GLFW_KEY_ESCAPE:
+    case GLFW_KEY_Q: quit_ = true; break;
+    case GLFW_KEY_X: axes_ = !axes_; break;
+    case GLFW_KEY_L: wireframe_ = !wireframe_; break;
+    case GLFW_KEY_M: techniqueName_ = techniqueName_ == "forward" ? "deferred" : "forward"; break;
+    case GLFW_KEY_T: {
+        auto it = std::find(names.begin(), names.end(), techniqueName_);
+        techniqueName_ = (it == names.end() || it + 1 == names.end()) ? names.front() : *(it + 1);
+        break;
+    }
+    case GLFW_KEY_V: {
+        const std::vector<std::string>& views = viewModeNames();
+        auto it = std::find(views.begin(), views.end(), std::string(viewModeName(view_)));
+        view_ = *parseViewMode((it == views.end() || it + 1 == views.end()) ? views.front() : *(it + 1));
+        break;
+    }
+    case GLFW_KEY_P:
+    case GLFW_KEY_SPACE: paused_ = !paused_; break;
+    case GLFW_KEY_F12:
+    case GLFW_KEY_PRINT_SCREEN: {
+        // Numbered so that repeated presses never overwrite an earlier picture.
+        for (int n = 0;; ++n) {
+            char name[64];
+            std::snprintf(name, sizeof name, "manylights-%03d.png", n);
+            if (!fs::exists(name)) {
+                pendingScreenshot_ = name;
+                break;
+            }
+        }
+        break;
+    }
+    case GLFW_KEY_F1: panel_ = !panel_; break;
+    default: break;
+    }
+}
+
+std::vector<int> Viewer::heldKeys() const
+{
+    std::vector<int> keys;
+    if (ImGui::GetIO().WantCaptureKeyboard)
+        return keys;
+    for (int key : {GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_UP, GLFW_KEY_DOWN, GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD,
+                    GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT, GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D})
+        if (glfwGetKey(window_.window(), key) == GLFW_PRESS)
+            keys.push_back(key);
+    return keys;
+}
+
+void Viewer::applyHeldKeys(const std::vector<int>& keys, double seconds)
+{
+    Camera& camera = scene_.camera;
+    const auto dt = static_cast<float>(seconds);
+    const float orbit = kOrbitDegreesPerSecond * dt;
+    const float fly = kFlyFractionPerSecond * dt * glm::distance(camera.eye, camera.lookAt);
+    for (int key : keys) {
+        switch (key) {
+        case GLFW_KEY_LEFT: orbitCamera(camera, -orbit, 0.0f); break;
+        case GLFW_KEY_RIGHT: orbitCamera(camera, orbit, 0.0f); break;
+        case GLFW_KEY_UP: orbitCamera(camera, 0.0f, orbit); break;
+        case GLFW_KEY_DOWN: orbitCamera(camera, 0.0f, -orbit); break;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD: dollyCamera(camera, std::pow(1.0f / kDollyPerSecond, dt)); break;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT: dollyCamera(camera, std::pow(kDollyPerSecond, dt)); break;
+        case GLFW_KEY_W: flyCamera(camera, {0.0f, 0.0f, fly}); break;
+        case GLFW_KEY_S: flyCamera(camera, {0.0f, 0.0f, -fly}); break;
+        case GLFW_KEY_A: flyCamera(camera, {-fly, 0.0f, 0.0f}); break;
+        case GLFW_KEY_D: flyCamera(camera, {fly, 0.0f, 0.0f}); break;
+        default: break;
+        }
+    }
+}
+
+// Runs script commands until one needs frames drawn (frames, screenshot) or the script ends.
+void Viewer::runScript()
+{
+    scriptKeys_.clear();
+    if (scriptFramesLeft_ > 0) {
+        --scriptFramesLeft_;
+        return;
+    }
+    while (scriptNext_ < script_.size() && !quit_) {
+        const ScriptCommand& command = script_[scriptNext_++];
+        switch (command.kind) {
+        case ScriptCommand::Kind::WaitFor:
+            if (!fs::exists(command.words[0])) {
+                --scriptNext_;  // again next frame
+                return;
+            }
+            break;
+        case ScriptCommand::Kind::Frames:
+            // This frame is the first of them.
+            scriptFramesLeft_ = static_cast<long>(command.number) - 1;
+            return;
+        case ScriptCommand::Kind::Resize:
+            glfwSetWindowSize(window_.window(), command.width, command.height);
+            break;
+        case ScriptCommand::Kind::Technique: techniqueName_ = command.words[0]; break;
+        case ScriptCommand::Kind::View: view_ = *parseViewMode(command.words[0]); break;
+        case ScriptCommand::Kind::Time:
+            time_ = command.number;
+            paused_ = true;
+            break;
+        case ScriptCommand::Kind::Pause: paused_ = true; break;
+        case ScriptCommand::Kind::Play: paused_ = false; break;
+        case ScriptCommand::Kind::Speed: speed_ = static_cast<float>(command.number); break;
+        case ScriptCommand::Kind::Toggle: {
+            const std::string& what = command.words[0];
+            bool& flag = what == "ambient"    ? ambient_
+                         : what == "diffuse"  ? diffuse_
+                         : what == "specular" ? specular_
+                         : what == "axes"     ? axes_
+                         : what == "wireframe" ? wireframe_
+                                               : panel_;
+            flag = !flag;
+            break;
+        }
+        case ScriptCommand::Kind::Key: {
+            const int key = keyByName(command.words[0]);
+            scriptKeys_.push_back(key);
+            onKeyPressed(key);
+            return;  // one key per frame, as a person would press them
+        }
+        case ScriptCommand::Kind::Screenshot:
+            pendingScreenshot_ = command.words[0];
+            return;
+        case ScriptCommand::Kind::Quit: quit_ = true; return;
+        }
+    }
+    // A script that ends without `quit` leaves the window open for a person.
+}
+
+void Viewer::checkShaders()
+{
+    if (shaderDirectory_.empty() || glfwGetTime() - lastShaderCheck_ < kShaderCheckSeconds)
+        return;
+    lastShaderCheck_ = glfwGetTime();
+    auto times = shaderTimes(shaderDirectory_);
+    if (times == shaderTimes_)
+        return;
+    shaderTimes_ = std::move(times);
+    reloadShaders();
+}
+
+// A new renderer and technique from the edited files, swapped in only once they have drawn a
+// frame: a shader that fails to compile or link leaves the old programs running.
+void Viewer::reloadShaders()
+{
+    try {
+        auto renderer = std::make_unique<Renderer>(scene_, lights_, renderer_->width(), renderer_->height());
+        const bool counting = view_ == ViewMode::LightCount;
+        auto fresh = makeTechnique(effectiveTechnique(), {.countWork = counting});
+        renderer->setCountWork(counting);
+        renderer->setTime(time_);
+        renderer->renderFrame(*fresh, view_);
+        renderer_ = std::move(renderer);
+        techniques_.clear();
+        lastGoodTechnique_ = effectiveTechnique() + (counting ? "+count" : "");
+        techniques_[lastGoodTechnique_] = std::move(fresh);
+        shaderError_.clear();
+        shaderStatus_ = "reloaded from " + shaderDirectory_;
+        std::fprintf(stderr, "manylights view: shaders reloaded\n");
+    } catch (const Error& error) {
+        shaderError_ = error.what();
+        std::fprintf(stderr, "manylights view: shader reload failed, keeping the old programs: %s\n", error.what());
+    }
+}
+
+void Viewer::resizeIfNeeded()
+{
+    int width = 0;
+    int height = 0;
+    glfwGetFramebufferSize(window_.window(), &width, &height);
+    if (width <= 0 || height <= 0)  // minimised
+        return;
+    if (width != renderer_->width() || height != renderer_->height())
+        renderer_->resize(width, height);  // the G-buffer and every size-dependent target
+}
+
+void Viewer::renderScene()
+{
+    renderer_->refreshCamera();
+    renderer_->setTime(time_);
+    renderer_->setLightingTerms({ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f});
+    renderer_->setCountWork(view_ == ViewMode::LightCount);
+    Technique& current = technique();
+    // Only the final image: the G-buffer views draw full-screen triangles that must stay filled.
+    if (wireframe_ && view_ == ViewMode::Final)
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    lastSample_ = renderer_->renderFrame(current, view_);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    frameMs_.push_back(static_cast<float>(lastSample_.wallMs));
+    if (frameMs_.size() > kFrameHistory)
+        frameMs_.pop_front();
+}
+
+// The frame into the window: the lit image as it is (the 8-bit window clamps it exactly as
+// the PNG writer does), or the view's displayable image as `render --view` writes it.
+void Viewer::showImage()
+{
+    const int width = renderer_->width();
+    const int height = renderer_->height();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    if (view_ == ViewMode::Final || view_ == ViewMode::Volumes) {
+        glBlitNamedFramebuffer(renderer_->targets().litFramebuffer.id(), 0, 0, 0, width, height, 0, 0, width, height,
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        return;
+    }
+    const Image shown = displayableView(renderer_->readColour(), view_, renderer_->readCoverage());
+    if (displayTexture_.width() != width || displayTexture_.height() != height) {
+        displayTexture_ = gl::Texture2D("viewer display", GL_RGBA8, width, height);
+        displayFramebuffer_ = gl::Framebuffer("viewer display", {&displayTexture_}, nullptr);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(displayTexture_.id(), 0, 0, 0, width, height, GL_RGB, GL_FLOAT, shown.rgb.data());
+    // Image rows run top to bottom, GL's bottom to top: the blit flips them.
+    glBlitNamedFramebuffer(displayFramebuffer_.id(), 0, 0, 0, width, height, 0, height, width, 0,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void Viewer::drawAxes()
+{
+    if (!axes_)
+        return;
+    renderer_->gpuScene().bind();
+    glDisable(GL_DEPTH_TEST);
+    axesProgram_.set(0, 0.25f * glm::distance(scene_.camera.eye, scene_.camera.lookAt));
+    axesProgram_.use();
+    emptyVertexArray_.bind();
+    glDrawArrays(GL_LINES, 0, 6);
+    glEnable(GL_DEPTH_TEST);
+}
+
+// The window's back buffer as drawn so far (the scene and the axes; the panel comes after).
+void Viewer::writeScreenshot(const std::string& path)
+{
+    const int width = renderer_->width();
+    const int height = renderer_->height();
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(width) * height * 3);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgb.resize(bytes.size());
+    const std::size_t row = static_cast<std::size_t>(width) * 3;
+    for (int y = 0; y < height; ++y)
+        for (std::size_t i = 0; i < row; ++i)
+            image.rgb[static_cast<std::size_t>(y) * row + i] =
+                static_cast<float>(bytes[static_cast<std::size_t>(height - 1 - y) * row + i]) / 255.0f;
+    writePng(image, path);
+    lastMessage_ = "wrote " + path;
+    std::fprintf(stderr, "manylights view: wrote %s\n", path.c_str());
+}
+
+void Viewer::drawPanel()
+{
+    ImGui::SetNextWindowPos({10, 10}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({330, 0}, ImGuiCond_FirstUseEver);
+    ImGui::Begin("manylights (F1 hides)");
+    ImGui::Text("%s", scene_.source.c_str());
+    ImGui::Text("%dx%d, %zu lights, %zu objects", renderer_->width(), renderer_->height(), lights_.size(),
+                scene_.objects.size());
+
+    const std::vector<std::string>& names = techniqueNames();
+    if (ImGui::BeginCombo("technique", techniqueName_.c_str())) {
+        for (const std::string& name : names)
+            if (ImGui::Selectable(name.c_str(), name == techniqueName_))
+                techniqueName_ = name;
+        ImGui::EndCombo();
+    }
+    const std::string viewName(viewModeName(view_));
+    if (ImGui::BeginCombo("view", viewName.c_str())) {
+        for (const std::string& name : viewModeNames())
+            if (ImGui::Selectable(name.c_str(), name == viewName))
+                view_ = *parseViewMode(name);
+        ImGui::EndCombo();
+    }
+    ImGui::Checkbox("ambient", &ambient_);
+    ImGui::SameLine();
+    ImGui::Checkbox("diffuse", &diffuse_);
+    ImGui::SameLine();
+    ImGui::Checkbox("specular", &specular_);
+    ImGui::Checkbox("axes (X)", &axes_);
+    ImGui::SameLine();
+    ImGui::Checkbox("wireframe (L)", &wireframe_);
+
+    ImGui::Separator();
+    ImGui::Checkbox("pause (P)", &paused_);
+    ImGui::SameLine();
+    ImGui::Text("t = %.2f s", time_);
+    ImGui::SliderFloat("speed", &speed_, 0.0f, 4.0f, "%.2fx");
+
+    ImGui::Separator();
+    std::vector<float> history(frameMs_.begin(), frameMs_.end());
+    const float latest = history.empty() ? 0.0f : history.back();
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%.2f ms (%.0f fps)", latest, latest > 0.0f ? 1000.0f / latest : 0.0f);
+    ImGui::PlotLines("frame ms", history.data(), static_cast<int>(history.size()), 0, overlay, 0.0f, FLT_MAX,
+                     {0, 60});
+    if (ImGui::BeginTable("passes", 3)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableSetupColumn("wall ms");
+        ImGui::TableHeadersRow();
+        for (const PassSample& pass : lastSample_.passes) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(pass.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", pass.gpuMs);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", pass.wallMs);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::TextWrapped("shaders: %s", shaderStatus_.c_str());
+    if (!shaderError_.empty())
+        ImGui::TextColored({1.0f, 0.4f, 0.4f, 1.0f}, "%s", shaderError_.c_str());
+    if (!lastMessage_.empty())
+        ImGui::TextUnformatted(lastMessage_.c_str());
+    ImGui::End();
+}
+
+void Viewer::run()
+{
+    double last = glfwGetTime();
+    while (!quit_ && !glfwWindowShouldClose(window_.window())) {
+        glfwPollEvents();
+        const double now = glfwGetTime();
+        const double elapsed = now - last;
+        last = now;
+        runScript();
+        if (quit_)
+            break;
+        applyHeldKeys(heldKeys(), elapsed);
+        applyHeldKeys(scriptKeys_, kScriptKeySeconds);
+        checkShaders();
+        resizeIfNeeded();
+        if (!paused_)
+            time_ += elapsed * speed_;
+
+        renderScene();
+        showImage();
+        drawAxes();
+        if (!pendingScreenshot_.empty()) {
+            writeScreenshot(pendingScreenshot_);
+            pendingScreenshot_.clear();
+        }
+        if (panel_) {
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            drawPanel();
+            ImGui::Render();
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
+        glfwSwapBuffers(window_.window());
+    }
+}
+
+}  // namespace
+
+void runView(const ViewOptions& options)
+{
+    Viewer viewer(options);
+    viewer.run();
+}
+
+}  // namespace manylights

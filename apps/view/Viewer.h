@@ -1,0 +1,31 @@
+// `manylights view`: the animated scene in a GLFW window, driven through the same Renderer as
+// the CLI, with camera controls, the seeds' keys, a Dear ImGui panel, screenshots, shader hot
+// reload and scripted input. docs/viewer.md describes every control.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace manylights {
+
+struct ViewOptions {
+    std::string scenePath;  // empty: the built-in default scene
+    int width = 1280;
+    int height = 720;
+    std::string technique = "clustered";
+    std::string view = "final";
+    std::optional<int> lights;
+    double time = 0.0;       // the animation's start time
+    std::string scriptPath;  // commands to run (apps/view/ViewScript.h); empty: interactive
+    // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
+    std::string shaderDirectory;
+};
+
+// Runs the viewer until the window closes, Escape/Q, or the script's `quit`. Throws
+// manylights::Error on a bad scene or script, or when no window can be opened.
+void runView(const ViewOptions& options);
+
+// The `view` subcommand's command line (argv[0] is "view"): returns the exit status.
+int runViewCommand(int argc, const char* const* argv);
+
+}  // namespace manylights

@@ -1,0 +1,337 @@
+// The viewer: its camera moves and script parser without a window, and the whole viewer under
+// Xvfb driven by --script: it starts, renders, resizes, switches every technique and view,
+// and its screenshots equal the headless `render` of the same frame.
+//
+// Screenshot tolerance: 1 level of 255 per channel. The window's framebuffer is 8-bit; GL
+// converts the renderer's float colour to it (round-to-nearest is the spec's rule, but the
+// conversion may differ by one step), where `render` rounds with round(255 · clamp(c, 0, 1)).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <stb/stb_image.h>
+#include <sys/wait.h>
+
+#include "apps/view/CameraControls.h"
+#include "apps/view/ViewScript.h"
+#include "core/Error.h"
+#include "render/Technique.h"
+#include "render/Views.h"
+
+namespace manylights {
+namespace {
+
+namespace fs = std::filesystem;
+
+// --- camera ------------------------------------------------------------------------------
+
+Camera testCamera()
+{
+    Camera camera;
+    camera.eye = {0.0f, 0.0f, 10.0f};
+    camera.lookAt = {0.0f, 0.0f, 0.0f};
+    return camera;
+}
+
+TEST(CameraControls, OrbitKeepsTheDistanceAndTheLookAt)
+{
+    Camera camera = testCamera();
+    orbitCamera(camera, 90.0f, 0.0f);
+    EXPECT_NEAR(glm::distance(camera.eye, camera.lookAt), 10.0f, 1e-4f);
+    EXPECT_NEAR(camera.eye.x, 10.0f, 1e-4f);  // a quarter turn about +Y takes +Z to +X
+    EXPECT_NEAR(camera.eye.z, 0.0f, 1e-4f);
+    orbitCamera(camera, 0.0f, 30.0f);
+    EXPECT_NEAR(camera.eye.y, 10.0f * std::sin(glm::radians(30.0f)), 1e-4f);
+    // Pitching far over the pole stops 5 degrees short of it.
+    orbitCamera(camera, 0.0f, 170.0f);
+    EXPECT_NEAR(glm::degrees(std::acos(camera.eye.y / 10.0f)), 5.0f, 1e-2f);
+    EXPECT_EQ(camera.lookAt, glm::vec3(0.0f));
+}
+
+TEST(CameraControls, DollyFlyAndLook)
+{
+    Camera camera = testCamera();
+    dollyCamera(camera, 0.5f);
+    EXPECT_NEAR(camera.eye.z, 5.0f, 1e-5f);
+    dollyCamera(camera, 0.0f);
+    EXPECT_NEAR(camera.eye.z, 0.05f, 1e-5f);  // never onto the look-at point
+
+    camera = testCamera();
+    flyCamera(camera, {1.0f, 0.0f, 2.0f});  // right 1, forward 2 (towards −Z)
+    EXPECT_NEAR(camera.eye.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(camera.eye.z, 8.0f, 1e-5f);
+    EXPECT_NEAR(camera.lookAt.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(camera.lookAt.z, -2.0f, 1e-5f);
+
+    camera = testCamera();
+    lookCamera(camera, 90.0f, 0.0f);  // turn left: look towards −X
+    EXPECT_EQ(camera.eye, glm::vec3(0.0f, 0.0f, 10.0f));
+    EXPECT_NEAR(camera.lookAt.x, -10.0f, 1e-4f);
+    EXPECT_NEAR(camera.lookAt.z, 10.0f, 1e-4f);
+}
+
+// --- script ------------------------------------------------------------------------------
+
+TEST(ViewScript, ParsesEveryCommand)
+{
+    const auto commands = parseViewScript(
+        "# a comment\nframes 3\n\nresize 320 200\ntechnique tiled\nview normal\ntime 1.5\npause\nplay\n"
+        "speed 2\ntoggle specular\nkey left\nscreenshot out.png\nquit\n",
+        "s.txt");
+    ASSERT_EQ(commands.size(), 12u);
+    EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Frames);
+    EXPECT_EQ(commands[0].number, 3.0);
+    EXPECT_EQ(commands[0].line, 2);
+    EXPECT_EQ(commands[1].width, 320);
+    EXPECT_EQ(commands[1].height, 200);
+    EXPECT_EQ(commands[2].words[0], "tiled");
+    EXPECT_EQ(commands[4].number, 1.5);
+    EXPECT_EQ(commands[9].kind, ScriptCommand::Kind::Key);
+    EXPECT_EQ(commands[10].words[0], "out.png");
+    EXPECT_EQ(commands[11].kind, ScriptCommand::Kind::Quit);
+}
+
+TEST(ViewScript, BadLinesNameFileAndLine)
+{
+    const auto errorOf = [](const std::string& text) -> std::string {
+        try {
+            parseViewScript(text, "s.txt");
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    EXPECT_EQ(errorOf("frames 1\njump 3\n").rfind("s.txt:2: unknown command 'jump'", 0), 0u);
+    EXPECT_EQ(errorOf("technique tiledd").rfind("s.txt:1: unknown technique 'tiledd'", 0), 0u);
+    EXPECT_EQ(errorOf("view normals").rfind("s.txt:1: unknown view 'normals'", 0), 0u);
+    EXPECT_EQ(errorOf("frames 0").rfind("s.txt:1: the frame count", 0), 0u);
+    EXPECT_EQ(errorOf("frames 1.5").rfind("s.txt:1: the frame count", 0), 0u);
+    EXPECT_EQ(errorOf("resize 10").rfind("s.txt:1: 'resize' takes a width and a height", 0), 0u);
+    EXPECT_EQ(errorOf("time -1").rfind("s.txt:1: the time must be", 0), 0u);
+    EXPECT_EQ(errorOf("toggle colour").rfind("s.txt:1: cannot toggle 'colour'", 0), 0u);
+    EXPECT_EQ(errorOf("key f13").rfind("s.txt:1: unknown key 'f13'", 0), 0u);
+    EXPECT_EQ(errorOf("screenshot out.jpg").rfind("s.txt:1: the screenshot must be a .png", 0), 0u);
+}
+
+// --- the viewer under Xvfb ---------------------------------------------------------------------
+
+struct Png {
+    int width = 0;
+    int height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+Png readPng(const fs::path& path)
+{
+    Png png;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+    if (!data)
+        return png;
+    png.rgb.assign(data, data + static_cast<std::size_t>(png.width) * png.height * 3);
+    stbi_image_free(data);
+    return png;
+}
+
+int run(const std::string& command) { return WEXITSTATUS(std::system(command.c_str())); }
+
+bool haveXvfb() { return run("command -v xvfb-run >/dev/null 2>&1 && command -v Xvfb >/dev/null 2>&1") == 0; }
+
+fs::path scratch()
+{
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path dir = fs::path(MANYLIGHTS_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Runs the viewer under a fresh Xvfb with `script`, in `dir` (where its F12 screenshots land).
+int runViewer(const fs::path& dir, const std::string& script, const std::string& args = "")
+{
+    {
+        std::ofstream out(dir / "script.txt");
+        out << script;
+    }
+    const std::string command = "cd '" + dir.string() +
+                                "' && xvfb-run -a -s '-screen 0 1024x768x24' '" MANYLIGHTS_EXE
+                                "' view --shader-dir '' --size 160x90 --script script.txt " +
+                                args + " >viewer.log 2>&1";
+    return run(command);
+}
+
+void expectEqualWithinOneLevel(const Png& shot, const Png& reference, const std::string& what)
+{
+    ASSERT_EQ(shot.width, reference.width) << what;
+    ASSERT_EQ(shot.height, reference.height) << what;
+    int worst = 0;
+    for (std::size_t i = 0; i < shot.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(static_cast<int>(shot.rgb[i]) - static_cast<int>(reference.rgb[i])));
+    EXPECT_LE(worst, 1) << what;
+}
+
+TEST(Viewer, ScreenshotsEqualHeadlessRendersForEveryTechniqueAndView)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    struct Shot {
+        std::string file;
+        std::string technique;
+        std::string view;
+        std::string size;
+    };
+    std::vector<Shot> shots;
+    std::string script = "frames 2\ntime 1.5\n";
+    for (const std::string& technique : techniqueNames()) {
+        shots.push_back({"technique-" + technique + ".png", technique, "final", "160x90"});
+        script += "technique " + technique + "\nframes 2\nscreenshot " + shots.back().file + "\n";
+    }
+    // A resize rebuilds the G-buffer and every size-dependent target; the views after it use them.
+    script += "resize 200 120\nframes 3\ntechnique deferred\n";
+    for (const std::string& view : viewModeNames()) {
+        shots.push_back({"view-" + view + ".png", "deferred", view, "200x120"});
+        script += "view " + view + "\nframes 2\nscreenshot " + shots.back().file + "\n";
+    }
+    // The seeds' keys, pressed as a person would: they must not crash or stop the viewer.
+    script += "view final\nkey x\nkey l\nframes 2\nkey l\nkey m\nkey t\nkey v\nkey p\nkey left\nkey up\nkey plus\n"
+              "key minus\nkey w\nkey a\nkey s\nkey d\nframes 2\nkey f12\nframes 2\nquit\n";
+    ASSERT_EQ(runViewer(dir, script), 0) << "see " << (dir / "viewer.log");
+
+    for (const Shot& shot : shots) {
+        const Png picture = readPng(dir / shot.file);
+        ASSERT_GT(picture.width, 0) << shot.file << " was not written";
+        int lit = 0;
+        for (unsigned char value : picture.rgb)
+            lit += value > 8;
+        // Only the light markers are emissive: a few small dots.
+        const int least = shot.view == "emissive" ? 30 : static_cast<int>(picture.rgb.size() / 20);
+        EXPECT_GT(lit, least) << shot.file << " is (nearly) black";
+        const fs::path reference = dir / ("reference-" + shot.file);
+        ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size " + shot.size + " --time 1.5 --technique " + shot.technique +
+                      " --view " + shot.view + " -o '" + reference.string() + "' 2>/dev/null"),
+                  0);
+        expectEqualWithinOneLevel(picture, readPng(reference), shot.file);
+    }
+    // F12 wrote a numbered screenshot into the working directory.
+    EXPECT_GT(readPng(dir / "manylights-000.png").width, 0);
+}
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// Polls until `done` holds, for at most two minutes (a loaded machine renders slowly).
+template <typename Condition>
+bool eventually(Condition done)
+{
+    for (int i = 0; i < 1200; ++i) {
+        if (done())
+            return true;
+        run("sleep 0.1");
+    }
+    return false;
+}
+
+TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    const fs::path shaders = dir / "shaders";
+    fs::copy(MANYLIGHTS_SOURCE_DIR "/shaders", shaders, fs::copy_options::recursive);
+    const fs::path forward = shaders / "forward.frag";
+    const std::string original = readText(forward);
+    // The script waits for the test at each step (wait-for), drawing frames meanwhile.
+    {
+        std::ofstream out(dir / "script.txt");
+        out << "technique forward\ntime 1\nframes 2\nscreenshot before.png\nwait-for step1\nframes 2\n"
+               "wait-for step2\nframes 2\nscreenshot after.png\nquit\n";
+    }
+    const std::string command = "cd '" + dir.string() +
+                                "' && xvfb-run -a -s '-screen 0 1024x768x24' '" MANYLIGHTS_EXE
+                                "' view --size 160x90 --shader-dir shaders --script script.txt >viewer.log 2>&1; "
+                                "echo $? > status.txt";
+    ASSERT_EQ(run("(" + command + ") &"), 0);
+    ASSERT_TRUE(eventually([&] { return fs::exists(dir / "before.png"); })) << readText(dir / "viewer.log");
+
+    // A syntax error: the viewer reports it with file and line, and keeps drawing.
+    {
+        std::ofstream out(forward);
+        out << original << "\nthis is not GLSL\n";
+    }
+    ASSERT_TRUE(eventually([&] { return readText(dir / "viewer.log").find("reload failed") != std::string::npos; }))
+        << readText(dir / "viewer.log");
+    EXPECT_NE(readText(dir / "viewer.log").find("forward.frag:"), std::string::npos) << readText(dir / "viewer.log");
+    run("touch '" + (dir / "step1").string() + "'");
+
+    // The fix, which also paints every object one flat colour, (51, 153, 255) in 8 bits: taken.
+    {
+        std::ofstream out(forward);
+        std::string painted = original;
+        const std::string output = "outColor = vec4(color, 1.0);";
+        ASSERT_NE(painted.find(output), std::string::npos) << "forward.frag changed; update this test";
+        painted.replace(painted.find(output), output.size(), "outColor = vec4(0.2, 0.6, 1.0, 1.0);");
+        out << painted;
+    }
+    ASSERT_TRUE(eventually([&] { return readText(dir / "viewer.log").find("shaders reloaded") != std::string::npos; }))
+        << readText(dir / "viewer.log");
+    run("touch '" + (dir / "step2").string() + "'");
+    ASSERT_TRUE(eventually([&] { return fs::exists(dir / "status.txt") && !readText(dir / "status.txt").empty(); }));
+    EXPECT_EQ(readText(dir / "status.txt"), "0\n") << readText(dir / "viewer.log");
+
+    const auto paintedPixels = [](const Png& png) {
+        int count = 0;
+        for (std::size_t i = 0; i + 2 < png.rgb.size(); i += 3)
+            count += png.rgb[i] == 51 && png.rgb[i + 1] == 153 && png.rgb[i + 2] == 255;
+        return count;
+    };
+    // The lit scene may hit that colour by chance at a pixel or two; painted, every object has it.
+    EXPECT_LT(paintedPixels(readPng(dir / "before.png")), 10);
+    EXPECT_GT(paintedPixels(readPng(dir / "after.png")), 160 * 90 / 4);
+}
+
+TEST(Viewer, NoDisplayIsOneLineExitOne)
+{
+    const fs::path dir = scratch();
+    const int status = run("env -u DISPLAY -u WAYLAND_DISPLAY '" MANYLIGHTS_EXE "' view --size 64x36 2>'" +
+                           (dir / "stderr.txt").string() + "'");
+    EXPECT_EQ(status, 1);
+    std::ifstream log(dir / "stderr.txt");
+    std::stringstream stream;
+    stream << log.rdbuf();
+    const std::string text = stream.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+    EXPECT_NE(text.find("cannot open a window"), std::string::npos) << text;
+}
+
+TEST(Viewer, BadCommandLineIsExitTwo)
+{
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --technique fastest 2>/dev/null"), 2);
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --size 0x10 2>/dev/null"), 2);
+}
+
+TEST(Viewer, BadScriptIsOneLineExitOne)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    EXPECT_EQ(runViewer(dir, "frames 1\ntechnique fastest\n"), 1);
+    std::ifstream log(dir / "viewer.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    EXPECT_NE(text.str().find("script.txt:2: unknown technique 'fastest'"), std::string::npos) << text.str();
+}
+
+}  // namespace
+}  // namespace manylights
