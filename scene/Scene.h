@@ -88,6 +88,12 @@ struct Material {
     std::string diffuseMap;
     std::string specularMap;
     std::string normalMap;
+    // Added for model files (docs/scene-format.md, "Model files"): the strength of the normal
+    // map (glTF normalTexture.scale, MTL `-bm`), and an emissive map (glTF emissiveTexture,
+    // MTL map_Ke) that multiplies `emissive`. A map path may also name an entry of
+    // Scene::encodedImages (an image embedded in a glTF file) instead of a file.
+    float normalScale = 1.0f;
+    std::string emissiveMap;
 };
 
 struct Vertex {
@@ -141,6 +147,15 @@ struct Object {
     bool materialOverridesMesh = true;
 };
 
+// An image embedded in a model file (a glTF data: URI or buffer view), still encoded (PNG or
+// JPEG bytes). A material's map path equal to `key` means this image; keys have the form
+// "<model file>#images[<index>]", which no texture file on disk is looked up by.
+struct EncodedImage {
+    std::string key;
+    std::string mimeType;  // as the file declares it; may be empty
+    std::vector<unsigned char> bytes;
+};
+
 // Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
 inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
 
@@ -156,6 +171,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
+    std::vector<EncodedImage> encodedImages;  // images embedded in model files (see EncodedImage)
 
     // World-space bounds of every object.
     Bounds worldBounds() const;
