@@ -507,6 +507,8 @@ private:
             for (std::size_t i = 0; i < vertexCount; ++i)
                 corners[i] = static_cast<std::uint32_t>(i);
         }
+        if (mode == TINYGLTF_MODE_TRIANGLES && corners.size() % 3 != 0)
+            fail(where + ": " + std::to_string(corners.size()) + " corners are not whole triangles (not a multiple of 3)");
         const std::vector<std::uint32_t> triangles = triangleList(corners, mode);
 
         // glTF asks for flat normals when a primitive has none, so such a primitive gets three
@@ -578,7 +580,7 @@ private:
     static std::vector<std::uint32_t> triangleList(const std::vector<std::uint32_t>& corners, int mode)
     {
         if (mode == TINYGLTF_MODE_TRIANGLES)
-            return std::vector<std::uint32_t>(corners.begin(), corners.end() - static_cast<std::ptrdiff_t>(corners.size() % 3));
+            return corners;
         std::vector<std::uint32_t> list;
         for (std::size_t i = 2; i < corners.size(); ++i) {
             if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
