@@ -108,6 +108,7 @@ public:
         meshOf_.assign(gltf_.meshes.size(), std::nullopt);
         materialOf_.assign(gltf_.materials.size(), std::nullopt);
         imagePathOf_.assign(gltf_.images.size(), std::nullopt);
+        onPath_.assign(gltf_.nodes.size(), false);
         checkHierarchy();
         for (const int root : rootNodes())
             visit(root, glm::mat4{1.0f}, 0);
@@ -206,8 +207,9 @@ private:
     {
         const auto index = static_cast<std::size_t>(nodeIndex);
         if (depth > kMaxNodeDepth)
-            fail(element("nodes", index) + ": the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) +
-                 " (or has a cycle)");
+            fail(element("nodes", index) + ": the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+        if (onPath_[index])
+            fail(element("nodes", index) + " is its own ancestor (the node hierarchy has a cycle)");
         const tinygltf::Node& node = gltf_.nodes[index];
         const glm::mat4 world = parent * localMatrix(index);
         const std::string name = node.name.empty() ? element("nodes", index) : node.name;
@@ -224,8 +226,10 @@ private:
         }
         if (const auto light = punctualLight(node))
             addLight(*light, world, index);
+        onPath_[index] = true;
         for (const int child : node.children)
             visit(child, world, depth + 1);
+        onPath_[index] = false;
     }
 
     // --- lights --------------------------------------------------------------------------
@@ -712,6 +716,7 @@ private:
     std::vector<std::optional<std::size_t>> meshOf_;      // glTF mesh → Model::meshes
     std::vector<std::optional<std::size_t>> materialOf_;  // glTF material → Model::materials
     std::vector<std::optional<std::string>> imagePathOf_;
+    std::vector<bool> onPath_;  // nodes between the root and the node being visited
 };
 
 bool isBinaryGltf(const std::vector<unsigned char>& bytes)
