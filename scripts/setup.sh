@@ -9,6 +9,7 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libglfw3-dev libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev
   libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libtinygltf-dev assimp-testmodels clang libclang-rt-dev
 )
 
 missing=()
