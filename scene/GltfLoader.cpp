@@ -275,6 +275,8 @@ private:
         light.name = gltf_.nodes[nodeIndex].name.empty() ? element("nodes", nodeIndex) : gltf_.nodes[nodeIndex].name;
         light.intensity = intensity;
         light.falloff = Falloff::Range;
+        if (source.range < 0.0 || !std::isfinite(source.range))
+            fail(where + ": range must be a positive finite number");
         if (source.range > 0.0) {
             light.range = static_cast<float>(source.range);
             if (!std::isfinite(light.range) || light.range <= 0.0f)
