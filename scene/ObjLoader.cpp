@@ -10,7 +10,7 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <tuple>
+#include <unordered_map>
 
 #include <tiny_obj_loader.h>
 
@@ -105,6 +105,21 @@ const std::map<std::string, std::pair<const char*, int>> kObjNumberKeywords{
 
 const std::map<std::string, std::pair<const char*, int>> kMtlNumberKeywords{
     {"Kd", {"Kd", 3}}, {"Ks", {"Ks", 3}}, {"Ke", {"Ke", 3}}, {"Ka", {"Ka", 3}}, {"Ns", {"Ns", 1}}};
+
+// A face corner's (position, normal, texture coordinate) indices: one vertex per distinct key.
+struct CornerKey {
+    int position, normal, uv;
+    bool operator==(const CornerKey&) const = default;
+};
+
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& key) const
+    {
+        std::size_t hash = static_cast<std::uint32_t>(key.position);
+        hash = hash * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.normal);
+        return hash * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.uv);
+    }
+};
 
 // One material library as it was read: its name (for messages), its directory (for its maps)
 // and its text (for line numbers).
@@ -276,10 +291,11 @@ Model loadObjModelText(const std::string& text, const std::string& displayName, 
 
     Mesh mesh;
     mesh.name = displayName;
-    std::map<std::tuple<int, int, int>, std::uint32_t> vertexOf;
+    // Hashed, not ordered: loading time stays linear in the file's size.
+    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertexOf;
     std::vector<bool> needsNormal;
     const auto vertexFor = [&](const tinyobj::index_t& index) {
-        const auto key = std::make_tuple(index.vertex_index, index.normal_index, index.texcoord_index);
+        const CornerKey key{index.vertex_index, index.normal_index, index.texcoord_index};
         const auto [it, inserted] = vertexOf.try_emplace(key, static_cast<std::uint32_t>(mesh.vertices.size()));
         if (inserted) {
             if (mesh.vertices.size() >= std::numeric_limits<std::uint32_t>::max())
