@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "TestSupport.h"
+#include "render/Technique.h"
 
 namespace manylights {
 namespace {
@@ -45,23 +47,32 @@ TEST(ModelFile, ObjMaterialsReachTheImage)
     }
 }
 
-TEST(ModelFile, GltfEngineRendersEveryTechniqueAlike)
+// The glTF scene (engine, boxes in all three containers, lanterns with punctual lights) in
+// every technique against forward, with TechniqueAgreementTest's tolerance: 1e-5 · |forward|
+// + 1e-6 per channel (bit-identical on llvmpipe; the margin is for a GPU compiler's fused
+// multiply-adds).
+TEST(ModelFile, GltfScenesEveryTechniqueMatchesForward)
 {
     if (!fs::is_directory(kAssimpGltf))
         GTEST_SKIP() << "assimp-testmodels is not installed (scripts/setup.sh installs it)";
     const auto dir = scratchDirectory();
-    const fs::path scene = fs::path(MANYLIGHTS_SOURCE_DIR) / "scenes/gltf-models.json";
-    const Image forward = renderPfm(scene.string(), dir / "forward.pfm", {"--size", "48x32"});
-    const Image tiled = renderPfm(scene.string(), dir / "tiled.pfm", {"--size", "48x32", "--technique", "clustered"});
+    const std::string scene = (fs::path(MANYLIGHTS_SOURCE_DIR) / "scenes/gltf-models.json").string();
+    const Image forward = renderPfm(scene, dir / "forward.pfm", {"--size", "64x36", "--technique", "forward"});
     float brightest = 0.0f;
-    float largestDifference = 0.0f;
-    for (std::size_t i = 0; i < forward.rgb.size(); ++i) {
-        brightest = std::max(brightest, forward.rgb[i]);
-        largestDifference = std::max(largestDifference, std::abs(forward.rgb[i] - tiled.rgb[i]));
-    }
+    for (const float value : forward.rgb)
+        brightest = std::max(brightest, value);
     EXPECT_GT(brightest, 0.05f);  // the models are there and lit
-    // Same lighting function, same order of summation within float rounding (docs/testing.md).
-    EXPECT_LT(largestDifference, 1e-3f);
+    for (const std::string& technique : techniqueNames()) {
+        if (technique == "forward")
+            continue;
+        const Image image = renderPfm(scene, dir / (technique + ".pfm"), {"--size", "64x36", "--technique", technique});
+        ASSERT_EQ(image.rgb.size(), forward.rgb.size());
+        int failures = 0;
+        for (std::size_t i = 0; i < forward.rgb.size(); ++i)
+            if (std::abs(image.rgb[i] - forward.rgb[i]) > 1e-5f * std::abs(forward.rgb[i]) + 1e-6f)
+                ++failures;
+        EXPECT_EQ(failures, 0) << technique;
+    }
 }
 
 struct BrokenModel {

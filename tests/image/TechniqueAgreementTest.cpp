@@ -90,7 +90,10 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
                       AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
                       AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json",
-                                    {"--size", "160x90"}}),
+                                    {"--size", "160x90"}},
+                      // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
+                      AgreementCase{"bunny_teapot_models", MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
+                                    {"--size", "160x90", "--lights", "512"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace
