@@ -5,13 +5,14 @@
 #   make test    build with warnings as errors and run every test
 #   make sanitize  Debug build (synchronous GL error callback) under ASan + UBSan, all tests
 #   make ci      both of the above: what .ci/run does
+#   make fuzz    libFuzzer targets of the loaders, FUZZ_SECONDS (default 20) each (scripts/fuzz.sh)
 
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all setup build run test sanitize ci clean
+.PHONY: all setup build run test sanitize ci clean fuzz
 
 all: build
 
@@ -50,5 +51,9 @@ sanitize: setup $(SANITIZE_DIR)/build.ninja
 
 ci: test sanitize
 
+FUZZ_SECONDS ?= 20
+fuzz:
+	./scripts/fuzz.sh $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR)
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) build-fuzz

@@ -67,7 +67,7 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
 }
 
 GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
-    : scene_(scene), restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
+    : scene_(scene), textures_(scene.encodedImages), restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
       vertexArray_("scene vertices")
 {
     std::vector<Vertex> allVertices;
@@ -120,7 +120,8 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         };
         materialMaps_.push_back({load(material.diffuseMap, TextureColourSpace::Srgb, "diffuse_map"),
                                  load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
-                                 load(material.normalMap, TextureColourSpace::Linear, "normal_map")});
+                                 load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
+                                 load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map")});
     }
 
     for (const Object& object : scene.objects)
@@ -260,8 +261,8 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
         kMaps = 14,
         kNormalScale = 15,
     };
-    enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8 };
-    enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4 };
+    enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
+    enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4, kHasEmissiveMap = 8 };
     program.set(kDiffuse, material.diffuse);
     program.set(kSpecular, material.specular);
     program.set(kShininess, material.shininess);
@@ -278,6 +279,10 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
     if (maps.normal) {
         maps.normal->bindUnit(kNormalUnit);
         present |= kHasNormalMap;
+    }
+    if (maps.emissive) {
+        maps.emissive->bindUnit(kEmissiveUnit);
+        present |= kHasEmissiveMap;
     }
     program.set(kMaps, present);
     program.set(kNormalScale, material.normalScale);

@@ -88,6 +88,7 @@ private:
         const gl::MipmappedTexture2D* diffuse = nullptr;
         const gl::MipmappedTexture2D* specular = nullptr;
         const gl::MipmappedTexture2D* normal = nullptr;
+        const gl::MipmappedTexture2D* emissive = nullptr;
     };
     struct DrawItem {
         glm::mat4 model;

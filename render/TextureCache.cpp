@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 // Debian's libstb ships stb_image compiled (-lstb): no STB_IMAGE_IMPLEMENTATION here.
@@ -42,18 +43,34 @@ DecodedImage decodeImageFile(const std::string& path, int maxSide)
     const std::unique_ptr<std::FILE, FileClose> file(std::fopen(path.c_str(), "rb"));
     if (!file)
         fail(path, "cannot open texture");
+    std::vector<unsigned char> bytes;
+    unsigned char buffer[1 << 16];
+    for (std::size_t read; (read = std::fread(buffer, 1, sizeof buffer, file.get())) > 0;)
+        bytes.insert(bytes.end(), buffer, buffer + read);
+    if (std::ferror(file.get()))
+        fail(path, "cannot read texture");
+    return decodeImageMemory(path, bytes, maxSide);
+}
+
+DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide)
+{
+    // stb_image takes an int length: anything larger is no texture we would accept anyway.
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        fail(name, "texture file too large");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int length = static_cast<int>(bytes.size());
     int width = 0;
     int height = 0;
     int channels = 0;
     // The header first: an absurd size is refused before anything is allocated for it.
-    if (!stbi_info_from_file(file.get(), &width, &height, &channels))
-        fail(path, std::string("not a texture image stb_image can read (") + stbi_failure_reason() + ")");
+    if (!stbi_info_from_memory(data, length, &width, &height, &channels))
+        fail(name, std::string("not a texture image stb_image can read (") + stbi_failure_reason() + ")");
     if (width < 1 || height < 1 || width > maxSide || height > maxSide)
-        fail(path, "texture is " + std::to_string(width) + "x" + std::to_string(height) + ", beyond the largest " +
+        fail(name, "texture is " + std::to_string(width) + "x" + std::to_string(height) + ", beyond the largest " +
                        std::to_string(maxSide) + "x" + std::to_string(maxSide) + " supported");
-    const std::unique_ptr<stbi_uc, StbiFree> pixels(stbi_load_from_file(file.get(), &width, &height, &channels, 4));
+    const std::unique_ptr<stbi_uc, StbiFree> pixels(stbi_load_from_memory(data, length, &width, &height, &channels, 4));
     if (!pixels)
-        fail(path, std::string("broken texture image (") + stbi_failure_reason() + ")");
+        fail(name, std::string("broken texture image (") + stbi_failure_reason() + ")");
     DecodedImage image;
     image.width = width;
     image.height = height;
@@ -67,12 +84,17 @@ DecodedImage decodeImageFile(const std::string& path, int maxSide)
 
 const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, TextureColourSpace space)
 {
-    const auto key = std::make_pair(canonicalKey(path), space);
+    const auto embedded = std::find_if(embedded_.begin(), embedded_.end(),
+                                       [&](const EncodedImage& image) { return image.key == path; });
+    const bool isEmbedded = embedded != embedded_.end();
+    const auto key = std::make_pair(isEmbedded ? path : canonicalKey(path), space);
     if (const auto found = textures_.find(key); found != textures_.end())
         return found->second;
     GLint maxTextureSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
-    const DecodedImage image = decodeImageFile(path, std::min(maxTextureSize, kMaxTextureSide));
+    const int maxSide = std::min(maxTextureSize, kMaxTextureSide);
+    const DecodedImage image =
+        isEmbedded ? decodeImageMemory(path, embedded->bytes, maxSide) : decodeImageFile(path, maxSide);
     const GLenum format = space == TextureColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
     gl::MipmappedTexture2D texture("texture " + path, format, image.width, image.height, image.rgba);
     return textures_.emplace(key, std::move(texture)).first->second;

@@ -5,11 +5,13 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "gl/MipmappedTexture.h"
+#include "scene/Scene.h"
 
 namespace manylights {
 
@@ -34,9 +36,16 @@ struct DecodedImage {
 // Decodes `path`; throws manylights::Error, one line naming the file, when it cannot be read,
 // is not an image stb_image decodes, is truncated, or has a side above `maxSide`.
 DecodedImage decodeImageFile(const std::string& path, int maxSide);
+// The same for an image already in memory (an image embedded in a model file); `name` is what
+// the messages call it.
+DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide);
 
 class TextureCache {
 public:
+    // `embedded`: images carried in the scene (Scene::encodedImages); a path equal to one's key
+    // is that image, not a file. They must outlive the cache.
+    explicit TextureCache(std::span<const EncodedImage> embedded = {}) : embedded_(embedded) {}
+
     // The texture of `path` in `space`, loaded on first request. Throws manylights::Error (see
     // decodeImageFile) for a broken file or one beyond GL_MAX_TEXTURE_SIZE or kMaxTextureSide.
     const gl::MipmappedTexture2D& get(const std::string& path, TextureColourSpace space);
@@ -45,6 +54,7 @@ public:
     std::size_t size() const { return textures_.size(); }
 
 private:
+    std::span<const EncodedImage> embedded_;
     std::map<std::pair<std::string, TextureColourSpace>, gl::MipmappedTexture2D> textures_;
 };
 

@@ -13,10 +13,9 @@
 #include <tuple>
 #include <unordered_map>
 
-#include <tiny_obj_loader.h>
-
 #include "core/Error.h"
 #include "scene/Tangents.h"
+#include "scene/ObjLoader.h"
 
 namespace manylights {
 
@@ -324,62 +323,11 @@ void smoothNormals(Mesh& mesh, const std::vector<bool>& replace)
     }
 }
 
-[[noreturn]] void fail(const std::string& displayName, const std::string& what)
-{
-    throw Error(displayName + ": " + what);
-}
-
-std::string firstLine(const std::string& text)
-{
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == '.' || line.back() == ' '))
-        line.pop_back();
-    return line;
-}
-
-// tinyobjloader reads "nan", "inf" and other malformed numbers as 0 without a word, so the
-// numbers of the attribute lines are checked here first (and with the line number).
-void checkAttributeNumbers(const std::string& text, const std::string& displayName)
-{
-    std::size_t lineNumber = 0;
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-        std::size_t end = text.find('\n', begin);
-        if (end == std::string::npos)
-            end = text.size();
-        ++lineNumber;
-        std::istringstream line(text.substr(begin, end - begin));
-        begin = end + 1;
-        std::string keyword;
-        line >> keyword;
-        const char* what = keyword == "v" ? "vertex position" : keyword == "vn" ? "normal"
-                                                            : keyword == "vt" ? "texture coordinate"
-                                                                              : nullptr;
-        if (what == nullptr)
-            continue;
-        int count = 0;
-        for (std::string token; line >> token;) {
-            if (token.front() == '#')
-                break;
-            float value = 0.0f;
-            const char* first = token.data();
-            const char* last = first + token.size();
-            const auto [next, error] = std::from_chars(first, last, value);
-            if (error != std::errc{} || next != last || !std::isfinite(value))
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what +
-                                      " has a non-finite or malformed number '" + token + "'");
-            ++count;
-        }
-        const int needed = keyword == "vt" ? 1 : 3;
-        if (count < needed)
-            fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " needs " +
-                                  std::to_string(needed) + " numbers, has " + std::to_string(count));
-    }
-}
+}  // namespace
 
 // Twice the triangle's area is |e1 × e2|; a triangle is degenerate when that is zero
 // relative to its edges (the sine of its angle at a), which would make its normal NaN.
-bool degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
+bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
 {
     const glm::dvec3 e1 = glm::dvec3{b} - glm::dvec3{a};
     const glm::dvec3 e2 = glm::dvec3{c} - glm::dvec3{a};
@@ -387,119 +335,24 @@ bool degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
     return !(crossLength > 1e-12 * glm::length(e1) * glm::length(e2));
 }
 
-}  // namespace
-
 void computeSmoothNormals(Mesh& mesh)
 {
     smoothNormals(mesh, std::vector<bool>(mesh.vertices.size(), true));
+}
+
+void computeSmoothNormals(Mesh& mesh, const std::vector<bool>& replace)
+{
+    ML_ASSERT(replace.size() == mesh.vertices.size());
+    smoothNormals(mesh, replace);
 }
 
 Mesh loadObjStream(std::istream& stream, const std::string& displayName)
 {
     const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
     if (stream.bad())
-        fail(displayName, "cannot read the file");
-    checkAttributeNumbers(text, displayName);
-
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warning;
-    std::string error;
-    std::istringstream textStream(text);
-    // No triangulation by tinyobjloader: it reads vertex arrays through unchecked indices
-    // while doing so. Polygons are fanned below, after the indices are checked.
-    // No material reader: materials are not used yet, and a stream has no directory to find them in.
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &textStream, nullptr,
-                                     /*triangulate=*/false, /*default_vcols_fallback=*/false);
-    if (!ok || !error.empty())
-        fail(displayName, firstLine(error.empty() ? std::string("cannot parse the file") : error));
-
-    const auto positionCount = static_cast<long long>(attrib.vertices.size() / 3);
-    const auto normalCount = static_cast<long long>(attrib.normals.size() / 3);
-    const auto uvCount = static_cast<long long>(attrib.texcoords.size() / 2);
-    const auto checkIndex = [&](int index, long long count, bool optional, const char* what) {
-        if (optional && index == -1)
-            return;
-        // tinyobjloader has already turned a negative (relative) index into an absolute one,
-        // so a negative result here means it reached before the first element.
-        if (index < 0)
-            fail(displayName, std::string("a negative ") + what + " index reaches before the first one");
-        if (index >= count)
-            fail(displayName, std::string(what) + " index " + std::to_string(index + 1) +
-                                  " is out of range (the file has " + std::to_string(count) + ")");
-    };
-    const auto position = [&](int index) {
-        const auto i = static_cast<std::size_t>(index) * 3;
-        return glm::vec3{attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]};
-    };
-
-    Mesh mesh;
-    mesh.name = displayName;
-    std::map<std::tuple<int, int, int>, std::uint32_t> vertexOf;
-    std::vector<bool> needsNormal;
-    const auto vertexFor = [&](const tinyobj::index_t& index) {
-        const auto key = std::make_tuple(index.vertex_index, index.normal_index, index.texcoord_index);
-        const auto [it, inserted] = vertexOf.try_emplace(key, vertexIndex(mesh));
-        if (inserted) {
-            Vertex vertex{position(index.vertex_index), glm::vec3{0.0f, 1.0f, 0.0f}, glm::vec2{0.0f}};
-            bool hasNormal = false;
-            if (index.normal_index >= 0) {
-                const auto n = static_cast<std::size_t>(index.normal_index) * 3;
-                vertex.normal = {attrib.normals[n], attrib.normals[n + 1], attrib.normals[n + 2]};
-                const float length = glm::length(vertex.normal);
-                // A file's zero normal cannot be normalised; it is replaced like a missing one.
-                hasNormal = length > 0.0f && std::isfinite(length);
-                if (hasNormal)
-                    vertex.normal /= length;
-            }
-            if (index.texcoord_index >= 0) {
-                const auto t = static_cast<std::size_t>(index.texcoord_index) * 2;
-                vertex.uv = {attrib.texcoords[t], attrib.texcoords[t + 1]};
-            }
-            needsNormal.push_back(!hasNormal);
-            mesh.vertices.push_back(vertex);
-        }
-        return it->second;
-    };
-
-    std::size_t faceCount = 0;
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t offset = 0;
-        for (const unsigned char corners : shape.mesh.num_face_vertices) {
-            const tinyobj::index_t* face = shape.mesh.indices.data() + offset;
-            offset += corners;
-            for (unsigned char k = 0; k < corners; ++k) {
-                checkIndex(face[k].vertex_index, positionCount, false, "vertex");
-                checkIndex(face[k].normal_index, normalCount, true, "normal");
-                checkIndex(face[k].texcoord_index, uvCount, true, "texture coordinate");
-            }
-            if (corners < 3)
-                continue;
-            ++faceCount;
-            // Fan triangulation: exact for the convex polygons OBJ exporters write.
-            for (unsigned char k = 1; k + 1 < corners; ++k) {
-                const tinyobj::index_t& a = face[0];
-                const tinyobj::index_t& b = face[k];
-                const tinyobj::index_t& c = face[k + 1];
-                if (degenerate(position(a.vertex_index), position(b.vertex_index), position(c.vertex_index)))
-                    continue;
-                addTriangle(mesh, vertexFor(a), vertexFor(b), vertexFor(c));
-            }
-        }
-    }
-    if (faceCount == 0)
-        fail(displayName, "has no faces");
-    if (mesh.indices.empty())
-        fail(displayName, "every triangle has zero area");
-    // Checked again after conversion: a finite number in the text can still overflow a float.
-    for (const Vertex& vertex : mesh.vertices)
-        if (!std::isfinite(vertex.position.x + vertex.position.y + vertex.position.z) ||
-            !std::isfinite(vertex.uv.x + vertex.uv.y))
-            fail(displayName, "has a non-finite vertex position or texture coordinate");
-
-    smoothNormals(mesh, needsNormal);
-    return mesh;
+        throw Error(displayName + ": cannot read the file");
+    Model model = loadObjModelText(text, displayName, {}, MtlSource{});
+    return std::move(model.meshes.front());
 }
 
 Mesh loadObjFile(const std::filesystem::path& path)
@@ -507,10 +360,10 @@ Mesh loadObjFile(const std::filesystem::path& path)
     const std::string displayName = path.string();
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
-        fail(displayName, "cannot open the file: it is a directory");
+        throw Error(displayName + ": cannot open the file: it is a directory");
     std::ifstream stream(path, std::ios::binary);
     if (!stream)
-        fail(displayName, std::string("cannot open the file: ") + std::strerror(errno));
+        throw Error(displayName + ": cannot open the file: " + std::strerror(errno));
     return loadObjStream(stream, displayName);
 }
 

@@ -95,9 +95,12 @@ struct Material {
     std::string diffuseMap;
     std::string specularMap;
     std::string normalMap;
-    // Scales the normal map's tangent-space x and y before renormalising (glTF
-    // normalTexture.scale): 0 flattens the map away, 1 uses it as it is.
+    // Added for model files (docs/scene-format.md, "Model files"): the strength of the normal
+    // map (glTF normalTexture.scale, MTL `-bm`), and an emissive map (glTF emissiveTexture,
+    // MTL map_Ke) that multiplies `emissive`. A map path may also name an entry of
+    // Scene::encodedImages (an image embedded in a glTF file) instead of a file.
     float normalScale = 1.0f;
+    std::string emissiveMap;
 };
 
 struct Vertex {
@@ -156,6 +159,15 @@ struct Object {
     std::optional<RevolutionProfile> revolution{};
 };
 
+// An image embedded in a model file (a glTF data: URI or buffer view), still encoded (PNG or
+// JPEG bytes). A material's map path equal to `key` means this image; keys have the form
+// "<model file>#images[<index>]", which no texture file on disk is looked up by.
+struct EncodedImage {
+    std::string key;
+    std::string mimeType;  // as the file declares it; may be empty
+    std::vector<unsigned char> bytes;
+};
+
 // Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
 inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
 
@@ -174,6 +186,7 @@ struct Scene {
     // When set, every rendered light also gets a small emissive sphere of this radius in its
     // own colour that follows it (drawn by the render layer as an ordinary object).
     std::optional<float> lightMarkerRadius;
+    std::vector<EncodedImage> encodedImages;  // images embedded in model files (see EncodedImage)
 
     // World-space bounds of every object.
     Bounds worldBounds() const;

@@ -21,8 +21,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "scene/GltfLoader.h"
 #include "scene/Meshes.h"
 #include "scene/Revolution.h"
+#include "scene/ObjLoader.h"
 #include "scene/Transform.h"
 #include "scene/Tangents.h"
 
@@ -404,7 +406,7 @@ public:
         if (const auto node = member(top, "objects")) {
             expectArray(*node, kMaxObjects, "objects");
             for (std::size_t i = 0; i < node->json->size(); ++i)
-                scene_.objects.push_back(readObject(element(*node, i), i));
+                readObject(element(*node, i), i);
         }
         if (const auto node = member(top, "light_markers")) {
             expectKeys(*node, {"radius"});
@@ -888,7 +890,9 @@ private:
         return path.string();
     }
 
-    Object readObject(const Node& node, std::size_t index)
+    // Appends the object; an object with a glTF mesh becomes one object per mesh instance of
+    // the file ("object/node") and adds the file's lights.
+    void readObject(const Node& node, std::size_t index)
     {
         expectKeys(node, {"name", "mesh", "material", "transform", "animation"});
         Object object;
@@ -896,8 +900,13 @@ private:
             object.name = string(*name);
         else
             object.name = "objects[" + std::to_string(index) + "]";
+        const Node meshNode = required(node, "mesh");
+        const LoadedModel* model = nullptr;
         dynamicRevolution_.reset();
-        object.mesh = readMesh(required(node, "mesh"));
+        if (meshNode.json->is_string())
+            model = &modelFile(meshNode);
+        else
+            object.mesh = readMesh(meshNode);
         object.revolution = dynamicRevolution_;
         object.material = objectMaterial(node);
         object.materialOverridesMesh = member(node, "material").has_value();
@@ -905,7 +914,32 @@ private:
             object.transform = readTransform(*transform);
         if (const auto animation = member(node, "animation"))
             object.animation = readObjectAnimation(*animation);
-        return object;
+        if (!model) {
+            scene_.objects.push_back(object);
+            return;
+        }
+        if (!model->namesInstances) {
+            object.mesh = model->instances.front().mesh;
+            scene_.objects.push_back(object);
+            return;
+        }
+        if (scene_.objects.size() + model->instances.size() > kMaxObjects)
+            fail(meshNode, "too many objects (at most " + std::to_string(kMaxObjects) + ")");
+        for (const ModelInstance& instance : model->instances) {
+            Object part = object;
+            part.name = object.name + "/" + instance.name;
+            part.mesh = instance.mesh;
+            part.transform = object.transform * instance.transform;
+            scene_.objects.push_back(std::move(part));
+        }
+        if (scene_.lights.size() + model->lights.size() > kMaxLights)
+            fail(meshNode, "too many lights (at most " + std::to_string(kMaxLights) + ")");
+        for (Light light : model->lights) {
+            light.name = object.name + "/" + light.name;
+            light.position = glm::vec3(object.transform * glm::vec4(light.position, 1.0f));
+            light.direction = glm::normalize(glm::mat3(object.transform) * light.direction);
+            scene_.lights.push_back(std::move(light));
+        }
     }
 
     // --- animation (docs/scene-format.md) ----------------------------------------------------
@@ -1048,42 +1082,71 @@ private:
 
     std::size_t readMesh(const Node& node)
     {
-        if (node.json->is_string())
-            return meshFile(node);
         if (node.json->is_object())
             return primitive(node);
         fail(node, "expected a mesh file path or a primitive object, got " + describeType(*node.json));
     }
 
-    std::size_t meshFile(const Node& node)
+    // A model file's meshes, materials and images, appended to the scene once (scene/Model.h).
+    struct LoadedModel {
+        std::vector<ModelInstance> instances;  // mesh indices into Scene::meshes
+        std::vector<Light> lights;
+        bool namesInstances = false;  // glTF: one object per instance, named "object/node"
+    };
+
+    const LoadedModel& modelFile(const Node& node)
     {
         const fs::path path = resolve(node);
         const std::string extension = toLower(path.extension().string());
-        if (extension == ".gltf" || extension == ".glb")
-            fail(node, "glTF meshes are not supported yet");
-        if (extension != ".obj")
+        const bool gltf = extension == ".gltf" || extension == ".glb";
+        if (extension != ".obj" && !gltf)
             fail(node, (extension.empty() ? std::string("mesh file has no extension")
                                           : "unsupported mesh file type " + quote(extension)) +
-                           " (expected .obj)");
+                           " (expected .obj, .gltf or .glb)");
         expectRegularFile(node, path);
-        // One mesh per file, however many objects use it, so a scene of many bunnies loads
+        // One copy per file, however many objects use it, so a scene of many bunnies loads
         // (and uploads) one bunny.
         std::error_code error;
         fs::path canonical = fs::weakly_canonical(path, error);
         if (error)
             canonical = path;
         const std::string key = canonical.string();
-        if (const auto cached = meshCache_.find(key); cached != meshCache_.end())
+        if (const auto cached = modelCache_.find(key); cached != modelCache_.end())
             return cached->second;
-        Mesh mesh;
+        Model model;
         try {
-            mesh = loadObjFile(path);
+            if (gltf) {
+                GltfOptions options;
+                options.attenuationThreshold = scene_.attenuationThreshold;
+                model = loadGltfFile(path, options);
+            } else {
+                model = loadObjModelFile(path);
+            }
         } catch (const Error& e) {
             fail(node, e.what());
         }
-        if (mesh.name.empty())
-            mesh.name = path.string();
-        return addMesh(key, std::move(mesh));
+        const std::size_t materialOffset = scene_.materials.size();
+        const std::size_t meshOffset = scene_.meshes.size();
+        for (Material& material : model.materials)
+            scene_.materials.push_back(std::move(material));
+        for (Mesh& mesh : model.meshes) {
+            for (SubMesh& range : mesh.subMeshes)
+                if (range.material)
+                    *range.material += materialOffset;
+            if (mesh.name.empty())
+                mesh.name = path.string();
+            scene_.meshes.push_back(std::move(mesh));
+        }
+        for (EncodedImage& image : model.images)
+            scene_.encodedImages.push_back(std::move(image));
+        LoadedModel loaded;
+        loaded.namesInstances = gltf;
+        loaded.lights = std::move(model.lights);
+        for (ModelInstance instance : model.instances) {
+            instance.mesh += meshOffset;
+            loaded.instances.push_back(std::move(instance));
+        }
+        return modelCache_.emplace(key, std::move(loaded)).first->second;
     }
 
     std::size_t primitive(const Node& node)
@@ -1224,6 +1287,7 @@ private:
     std::optional<std::size_t> defaultMaterial_;
     std::map<std::string, std::size_t> meshCache_;
     std::optional<RevolutionProfile> dynamicRevolution_;  // set by the mesh of the object being read
+    std::map<std::string, LoadedModel> modelCache_;
 };
 
 }  // namespace

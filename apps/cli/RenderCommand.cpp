@@ -1,5 +1,7 @@
 #include "apps/cli/RenderCommand.h"
 
+#include <chrono>
+
 #include <nlohmann/json.hpp>
 
 #include "apps/cli/CommandSupport.h"
@@ -110,7 +112,10 @@ void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions&
 
 void runRender(const RenderOptions& options)
 {
+    const auto loadStart = std::chrono::steady_clock::now();
     const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    const double loadMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
     if (options.lights && scene.lightSets.empty())
         throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
     const std::vector<Light> lights = expandLights(scene, options.lights);
@@ -138,8 +143,9 @@ void runRender(const RenderOptions& options)
     writeLastFrame(renderer, options.view, options.output);
     if (measuring) {
         const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
-        const nlohmann::json stats =
+        nlohmann::json stats =
             statisticsJson(options, scene, lights.size(), frames, context.description(), *technique, work);
+        stats["load_ms"] = loadMs;
         writeTextFileAtomically(options.statsPath, "statistics", stats.dump(2) + "\n");
     }
 }

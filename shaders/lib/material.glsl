@@ -7,13 +7,15 @@ layout(location = 11) uniform vec3 materialSpecular;
 layout(location = 12) uniform float materialShininess;
 layout(location = 13) uniform vec3 materialEmissive;
 // Which maps the material has (render/GpuScene.cpp: bindMaterial): bit 0 diffuse, bit 1
-// specular, bit 2 normal. A missing map leaves the constant as it is.
+// specular, bit 2 normal, bit 3 emissive. A missing map leaves the constant as it is.
 layout(location = 14) uniform int materialMaps;
 layout(location = 15) uniform float materialNormalScale;  // glTF normalTexture.scale
 
 layout(binding = 6) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
 layout(binding = 7) uniform sampler2D specularMap;  // linear
 layout(binding = 8) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
+// Unit 15: units 9-14 hold the shadow and occlusion maps (shaders/lib/shadows.glsl).
+layout(binding = 15) uniform sampler2D emissiveMap;  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -23,6 +25,7 @@ layout(location = 3) in vec4 worldTangent;  // xyz tangent, w handedness (scene/
 const int kHasDiffuseMap = 1;
 const int kHasSpecularMap = 2;
 const int kHasNormalMap = 4;
+const int kHasEmissiveMap = 8;
 
 // The normal map's tangent-space normal, taken to world space: the interpolated tangent is
 // re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
@@ -57,5 +60,7 @@ Surface meshSurface()
         s.normal = normalMapped(s.normal);
     s.shininess = materialShininess;
     s.emissive = materialEmissive;
+    if ((materialMaps & kHasEmissiveMap) != 0)
+        s.emissive *= texture(emissiveMap, uv).rgb;
     return s;
 }

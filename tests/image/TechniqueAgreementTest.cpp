@@ -171,7 +171,10 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"compact_spots_and_points", kScenes + "spots_and_points.json",
                                     {"--size", "160x120"}, true},
                       AgreementCase{"compact_textured_normal_mapped", kScenes + "textured_normal_mapped.json",
-                                    {"--size", "200x120"}, true}),
+                                    {"--size", "200x120"}, true},
+                      // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
+                      AgreementCase{"bunny_teapot_models", MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
+                                    {"--size", "160x90", "--lights", "512"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) in build-fuzz/ and
+# runs each for SECONDS (default 20) on a seed corpus made from the repository's scenes and
+# models (and Debian's assimp-testmodels glTFs when installed). Exits non-zero on the first
+# crash; libFuzzer leaves the input under build-fuzz/artifacts/. Turn it into a regression
+# test (tests/unit) before fixing it.
+#
+#   scripts/fuzz.sh [SECONDS]     e.g. scripts/fuzz.sh 120 for a longer run by hand
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-20}"
+jobs="${JOBS:-2}"
+build=build-fuzz
+
+./scripts/setup.sh
+if [ ! -f "$build/build.ninja" ]; then
+  CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DMANYLIGHTS_FUZZ=ON -DMANYLIGHTS_TESTS=OFF -DMANYLIGHTS_WERROR=ON
+fi
+cmake --build "$build" -j "$jobs" --target FuzzSceneJson FuzzObj FuzzGltf
+
+# Seeds: copied fresh each run (read-only for libFuzzer); what it finds goes into
+# $build/corpus/<target>, kept between runs.
+seeds="$build/seeds"
+rm -rf "$seeds"
+mkdir -p "$seeds/FuzzSceneJson" "$seeds/FuzzObj" "$seeds/FuzzGltf" "$build/artifacts"
+cp tests/scenes/*.json tests/data/scene/example.json scenes/*.json "$seeds/FuzzSceneJson/"
+cp assets/models/bunny-lowres.obj assets/models/teapot-lowres.obj tests/data/scene/models/*.obj \
+  tests/data/models/*.obj "$seeds/FuzzObj/"
+# An OBJ with its material library, in the target's "OBJ, #MTL, MTL" form.
+{ cat tests/data/models/two-materials.obj; printf '\n#MTL\n'; cat tests/data/models/two-materials.mtl; } \
+  > "$seeds/FuzzObj/two-materials-with-mtl"
+cp assets/models/*.gltf "$seeds/FuzzGltf/"
+assimp=/usr/share/assimp/models/glTF2
+if [ -d "$assimp" ]; then
+  for f in BoxTextured-glTF-Binary/BoxTextured.glb BoxTextured-glTF-Embedded/BoxTextured.gltf \
+           BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb IndexOutOfRange/IndexOutOfRange.gltf \
+           RecursiveNodes/RecursiveNodes.gltf IncorrectVertexArrays/Cube.gltf \
+           BoxBadNormals-glTF-Binary/BoxBadNormals.glb; do
+    cp "$assimp/$f" "$seeds/FuzzGltf/$(echo "$f" | tr / _)"
+  done
+fi
+
+for target in FuzzSceneJson FuzzObj FuzzGltf; do
+  corpus="$build/corpus/$target"
+  mkdir -p "$corpus"
+  echo "fuzz: $target for ${seconds}s"
+  # -rss_limit_mb: an input may ask for a large (but bounded) allocation; more is a bug.
+  log="$build/artifacts/$target.log"
+  status=0
+  "$build/tests/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb="${FUZZ_RSS_MB:-2048}" -max_len=65536 \
+    -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 "$corpus" "$seeds/$target" \
+    >"$log" 2>&1 || status=$?
+  grep -E '^(stat::number_of_executed_units|==[0-9]+==|SUMMARY)|ERROR|Test unit written' "$log" || true
+  if [ "$status" -ne 0 ]; then
+    echo "fuzz: $target failed (exit $status); see $log and $build/artifacts/" >&2
+    exit 1
+  fi
+done
+echo "fuzz: no crash in ${seconds}s per target"

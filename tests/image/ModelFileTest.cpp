@@ -1,0 +1,126 @@
+// Model files through the executable: a file's own materials reach the image (per-material
+// draw ranges), glTF scenes render, and broken assets end in exit 1 with one line naming the
+// file, nothing written, never a crash (run as a child process, so a crash shows as one).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "TestSupport.h"
+#include "render/Technique.h"
+
+namespace manylights {
+namespace {
+
+namespace fs = std::filesystem;
+using test::renderPfm;
+using test::runExecutable;
+using test::scratchDirectory;
+using test::writeFile;
+
+const fs::path kModels = fs::path(MANYLIGHTS_TEST_DATA_DIR) / "models";
+const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
+
+// The four quads of two-materials.obj (x from 0 to 4, y from 0 to 1, facing +Z) seen head-on,
+// lit by the ambient term only: colour = ke + ambient ⊙ kd (SPEC.md §2).
+TEST(ModelFile, ObjMaterialsReachTheImage)
+{
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", R"({
+        "camera": { "eye": [2, 0.5, 6], "look_at": [2, 0.5, 0], "fov_y": 30 },
+        "ambient": [1, 1, 1],
+        "objects": [ { "mesh": ")" + (kModels / "two-materials.obj").string() + R"(" } ] })");
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "64x32"});
+    // The half-width at the quads is 6 · tan 15° · 2 = 3.215, so x maps to column
+    // 32 + 32 · (x − 2) / 3.215. Quad centres at x = 0.5 (no material: the scene's default
+    // 0.8 grey), 1.5 and 3.5 (the file's "red": kd (1, 0, 0), ke (0.1, 0, 0)).
+    const auto column = [](float x) { return static_cast<int>(32.0f + 32.0f * (x - 2.0f) / 3.215f); };
+    const float* plain = image.pixel(column(0.5f), 16);
+    EXPECT_NEAR(plain[0], 0.8f, 1e-4f);
+    EXPECT_NEAR(plain[1], 0.8f, 1e-4f);
+    for (const float x : {1.5f, 3.5f}) {
+        const float* red = image.pixel(column(x), 16);
+        EXPECT_NEAR(red[0], 1.1f, 1e-4f) << x;
+        EXPECT_NEAR(red[1], 0.0f, 1e-4f) << x;
+        EXPECT_NEAR(red[2], 0.0f, 1e-4f) << x;
+    }
+}
+
+// The glTF scene (engine, boxes in all three containers, lanterns with punctual lights) in
+// every technique against forward, with TechniqueAgreementTest's tolerance: 1e-5 · |forward|
+// + 1e-6 per channel (bit-identical on llvmpipe; the margin is for a GPU compiler's fused
+// multiply-adds). The exact seed G-buffer layout: the compact layout's own bound is checked
+// on other scenes by TechniqueAgreementTest.
+TEST(ModelFile, GltfScenesEveryTechniqueMatchesForward)
+{
+    if (!fs::is_directory(kAssimpGltf))
+        GTEST_SKIP() << "assimp-testmodels is not installed (scripts/setup.sh installs it)";
+    const auto dir = scratchDirectory();
+    const std::string scene = (fs::path(MANYLIGHTS_SOURCE_DIR) / "scenes/gltf-models.json").string();
+    const Image forward = renderPfm(scene, dir / "forward.pfm", {"--size", "64x36", "--technique", "forward"});
+    float brightest = 0.0f;
+    for (const float value : forward.rgb)
+        brightest = std::max(brightest, value);
+    EXPECT_GT(brightest, 0.05f);  // the models are there and lit
+    for (const std::string& technique : techniqueNames()) {
+        if (technique == "forward")
+            continue;
+        const Image image = renderPfm(scene, dir / (technique + ".pfm"),
+                                      {"--size", "64x36", "--technique", technique, "--gbuffer", "seed"});
+        ASSERT_EQ(image.rgb.size(), forward.rgb.size());
+        int failures = 0;
+        for (std::size_t i = 0; i < forward.rgb.size(); ++i)
+            if (std::abs(image.rgb[i] - forward.rgb[i]) > 1e-5f * std::abs(forward.rgb[i]) + 1e-6f)
+                ++failures;
+        EXPECT_EQ(failures, 0) << technique;
+    }
+}
+
+struct BrokenModel {
+    std::string name;
+    std::string mesh;  // the object's mesh path
+    std::vector<std::string> parts;
+    friend void PrintTo(const BrokenModel& c, std::ostream* os) { *os << c.name; }
+};
+
+class BrokenModelCli : public ::testing::TestWithParam<BrokenModel> {};
+
+TEST_P(BrokenModelCli, ExitOneOneLineNothingWritten)
+{
+    const BrokenModel& c = GetParam();
+    if (c.mesh.starts_with(kAssimpGltf.string()) && !fs::is_directory(kAssimpGltf))
+        GTEST_SKIP() << "assimp-testmodels is not installed";
+    const auto dir = scratchDirectory();
+    writeFile(dir / "bad.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+    writeFile(dir / "bad.mtl", "newmtl m\nKd 1 1 1\nmap_Kd missing.png\n");
+    writeFile(dir / "nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir / "truncated.glb", "glTF\x02\0\0\0");
+    writeFile(dir / "scene.json", R"({ "objects": [ { "mesh": ")" + c.mesh + R"(" } ] })");
+    const test::ProcessResult result =
+        runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string(), "--size", "16x16"});
+    EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+    EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+    for (const std::string& part : c.parts)
+        EXPECT_NE(result.stderrText.find(part), std::string::npos) << "missing '" << part << "' in: " << result.stderrText;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BrokenModelCli,
+    ::testing::Values(
+        BrokenModel{"obj_missing_texture", "bad.obj", {"scene.json", "/objects/0/mesh", "bad.mtl", "missing.png"}},
+        BrokenModel{"obj_nan_position", "nan.obj", {"nan.obj: line 2:", "non-finite"}},
+        BrokenModel{"glb_truncated", "truncated.glb", {"truncated.glb: "}},
+        BrokenModel{"gltf_index_out_of_range", (kAssimpGltf / "IndexOutOfRange/IndexOutOfRange.gltf").string(),
+                    {"IndexOutOfRange.gltf: meshes[0].primitives[0].indices: index"}},
+        BrokenModel{"gltf_missing_bin", (kAssimpGltf / "MissingBin/BoxTextured.gltf").string(),
+                    {"MissingBin/BoxTextured.gltf: ", "BoxTextured0.bin"}},
+        BrokenModel{"glb_infinite_positions", (kAssimpGltf / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb").string(),
+                    {"BoxWithInfinites.glb: ", "non-finite"}},
+        BrokenModel{"gltf_recursive_nodes", (kAssimpGltf / "RecursiveNodes/RecursiveNodes.gltf").string(),
+                    {"RecursiveNodes.gltf: ", "cycle"}}),
+    [](const ::testing::TestParamInfo<BrokenModel>& param) { return param.param.name; });
+
+}  // namespace
+}  // namespace manylights

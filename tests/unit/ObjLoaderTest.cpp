@@ -1,0 +1,196 @@
+// OBJ + MTL model files: per-material draw ranges over one vertex buffer, the MTL values and
+// maps, and every broken-asset path (one Error naming the file and the line).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/Error.h"
+#include "scene/ObjLoader.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kModels = fs::path(MANYLIGHTS_TEST_DATA_DIR) / "models";
+
+// A directory of its own per test, for files written by the test.
+fs::path scratch()
+{
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path dir = fs::path(::testing::TempDir()) / (std::string("ml_obj_") + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+fs::path write(const fs::path& path, const std::string& text)
+{
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+// The message of the Error `load` throws; fails the test when it throws none.
+template <typename Load>
+std::string errorOf(Load load)
+{
+    try {
+        load();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no error";
+    return {};
+}
+
+const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(ObjModel, MaterialsBecomeOneDrawRangeEachOverOneVertexBuffer)
+{
+    const Model model = loadObjModelFile(kModels / "two-materials.obj");
+    ASSERT_EQ(model.meshes.size(), 1u);
+    const Mesh& mesh = model.meshes[0];
+    // Four quads: 8 triangles, 24 indices in total, in three ranges (none, red, textured)
+    // that tile the index list in order of first use.
+    ASSERT_EQ(mesh.indices.size(), 24u);
+    ASSERT_EQ(mesh.subMeshes.size(), 3u);
+    EXPECT_FALSE(mesh.subMeshes[0].material.has_value());
+    EXPECT_EQ(mesh.subMeshes[0].firstIndex, 0u);
+    EXPECT_EQ(mesh.subMeshes[0].indexCount, 6u);
+    ASSERT_TRUE(mesh.subMeshes[1].material.has_value());
+    EXPECT_EQ(mesh.subMeshes[1].firstIndex, 6u);
+    EXPECT_EQ(mesh.subMeshes[1].indexCount, 12u);  // red's two groups together
+    ASSERT_TRUE(mesh.subMeshes[2].material.has_value());
+    EXPECT_EQ(mesh.subMeshes[2].firstIndex, 18u);
+    EXPECT_EQ(mesh.subMeshes[2].indexCount, 6u);
+    ASSERT_EQ(model.materials.size(), 2u);
+
+    const Material& red = model.materials[*mesh.subMeshes[1].material];
+    EXPECT_NE(red.name.find("two-materials.obj#red"), std::string::npos) << red.name;
+    EXPECT_EQ(red.diffuse, glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(red.specular, glm::vec3(0.5f));
+    EXPECT_EQ(red.shininess, 64.0f);
+    EXPECT_EQ(red.emissive, glm::vec3(0.1f, 0.0f, 0.0f));
+    EXPECT_TRUE(red.diffuseMap.empty());
+
+    const Material& textured = model.materials[*mesh.subMeshes[2].material];
+    EXPECT_EQ(fs::path(textured.diffuseMap), kModels / "brick.png");
+    EXPECT_EQ(fs::path(textured.specularMap), kModels / "brick.png");
+    EXPECT_EQ(fs::path(textured.normalMap), kModels / "brick_n.png");
+    EXPECT_EQ(textured.normalScale, 0.5f);
+    // No Kd beside map_Kd: the map is taken at face value. Ns 0 is raised to SPEC's minimum 1.
+    EXPECT_EQ(textured.diffuse, glm::vec3(1.0f));
+    EXPECT_EQ(textured.shininess, 1.0f);
+
+    // The file has no normals: every one is computed (the quads are flat, facing +Z).
+    for (const Vertex& vertex : mesh.vertices)
+        EXPECT_NEAR(vertex.normal.z, 1.0f, 1e-6f);
+    // 10 positions; the textured quad's corners carry uvs, so those four are separate vertices.
+    EXPECT_EQ(mesh.vertices.size(), 14u);
+}
+
+TEST(ObjModel, WithoutUsemtlThereAreNoSubMeshes)
+{
+    const fs::path dir = scratch();
+    const Model model = loadObjModelFile(write(dir / "plain.obj", std::string(kQuad) + "f 1 2 3 4\n"));
+    EXPECT_TRUE(model.meshes[0].subMeshes.empty());
+    EXPECT_TRUE(model.materials.empty());
+}
+
+TEST(ObjModel, SceneObjectWithoutMaterialUsesTheFileMaterialsUnderTheirOwnNames)
+{
+    const fs::path dir = scratch();
+    fs::copy(kModels, dir / "models");
+    // The scene's own material "red" must not be confused with the file's "red".
+    const std::string json = R"({
+        "materials": { "red": { "diffuse": [0, 0, 1] } },
+        "objects": [
+            { "name": "own", "mesh": "models/two-materials.obj" },
+            { "name": "overridden", "mesh": "models/two-materials.obj", "material": "red" } ] })";
+    const Scene scene = parseScene(json, "scene.json", dir);
+    ASSERT_EQ(scene.meshes.size(), 1u);  // one mesh for both objects
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_FALSE(scene.objects[0].materialOverridesMesh);
+    EXPECT_TRUE(scene.objects[1].materialOverridesMesh);
+    EXPECT_EQ(scene.materials[scene.objects[1].material].diffuse, glm::vec3(0.0f, 0.0f, 1.0f));
+    const Mesh& mesh = scene.meshes[scene.objects[0].mesh];
+    ASSERT_EQ(mesh.subMeshes.size(), 3u);
+    const Material& fileRed = scene.materials[*mesh.subMeshes[1].material];
+    EXPECT_EQ(fileRed.diffuse, glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_NE(fileRed.name, "red");
+}
+
+struct BrokenObj {
+    const char* name;
+    std::string obj;
+    std::string mtl;  // written as lib.mtl when not empty
+    std::string phrase;
+};
+
+std::ostream& operator<<(std::ostream& out, const BrokenObj& broken) { return out << broken.name; }
+
+class BrokenObjTest : public ::testing::TestWithParam<BrokenObj> {};
+
+TEST_P(BrokenObjTest, OneErrorLineNamingTheFile)
+{
+    const BrokenObj& broken = GetParam();
+    const fs::path dir = scratch();
+    const fs::path obj = write(dir / "model.obj", broken.obj);
+    if (!broken.mtl.empty())
+        write(dir / "lib.mtl", broken.mtl);
+    const std::string message = errorOf([&] { loadObjModelFile(obj); });
+    EXPECT_NE(message.find(broken.phrase), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    // The OBJ, or the MTL the problem is in.
+    EXPECT_TRUE(message.starts_with(obj.string()) || message.starts_with((dir / "lib.mtl").string())) << message;
+}
+
+const std::string kQuadWithLib = std::string("mtllib lib.mtl\n") + kQuad + "usemtl m\nf 1 2 3 4\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    ObjModel, BrokenObjTest,
+    ::testing::Values(
+        BrokenObj{"MissingMtl", "mtllib none.mtl\n" + std::string(kQuad) + "f 1 2 3\n", "",
+                  "line 1: material library 'none.mtl' not found"},
+        BrokenObj{"UnknownUsemtl", kQuadWithLib, "newmtl other\nKd 1 1 1\n", "line 6: usemtl 'm'"},
+        BrokenObj{"MissingTexture", kQuadWithLib, "newmtl m\nmap_Kd nothere.png\n",
+                  "material 'm': map_Kd 'nothere.png' not found"},
+        BrokenObj{"MissingNormalMap", kQuadWithLib, "newmtl m\nbump nothere.png\n", "map_Bump 'nothere.png'"},
+        BrokenObj{"NanKd", kQuadWithLib, "newmtl m\nKd nan 1 1\n", "lib.mtl: line 2: Kd has a non-finite"},
+        BrokenObj{"ShortKs", kQuadWithLib, "newmtl m\nKs 1 1\n", "line 2: Ks needs 3 numbers, has 2"},
+        BrokenObj{"InfinitePosition", "v inf 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "line 1: vertex position"},
+        BrokenObj{"OverflowingPosition", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "line 1"},
+        BrokenObj{"IndexOutOfRange", std::string(kQuad) + "f 1 2 9\n", "", "vertex index 9 is out of range"},
+        BrokenObj{"NegativeIndexTooFar", std::string(kQuad) + "f -1 -2 -9\n", "", "negative vertex index"},
+        BrokenObj{"UvIndexOutOfRange", std::string(kQuad) + "vt 0 0\nf 1/1 2/2 3/1\n", "",
+                  "texture coordinate index 2 is out of range"},
+        BrokenObj{"OnlyZeroAreaTriangles", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "", "every triangle has zero area"},
+        BrokenObj{"NoFaces", std::string(kQuad), "", "has no faces"},
+        BrokenObj{"Truncated", std::string(kQuad) + "f 1 2", "", "has no faces"}),
+    [](const ::testing::TestParamInfo<BrokenObj>& param) { return std::string(param.param.name); });
+
+TEST(ObjModel, ZeroAreaTrianglesAreDropped)
+{
+    const fs::path dir = scratch();
+    // The second triangle repeats a corner: it is left out, the first one stays.
+    const Model model =
+        loadObjModelFile(write(dir / "m.obj", std::string(kQuad) + "f 1 2 3\nf 1 1 4\n"));
+    EXPECT_EQ(model.meshes[0].indices.size(), 3u);
+}
+
+TEST(ObjModel, SceneErrorNamesSceneObjectAndFile)
+{
+    const fs::path dir = scratch();
+    write(dir / "model.obj", "mtllib none.mtl\n" + std::string(kQuad) + "f 1 2 3\n");
+    const std::string message = errorOf([&] {
+        parseScene(R"({ "objects": [ { "mesh": "model.obj" } ] })", "scene.json", dir);
+    });
+    EXPECT_TRUE(message.starts_with("scene.json: /objects/0/mesh: ")) << message;
+    EXPECT_NE(message.find("model.obj: line 1: material library 'none.mtl' not found"), std::string::npos)
+        << message;
+}
+
+}  // namespace
+}  // namespace manylights
