@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/Falloff.h"
+#include "scene/ShadowSelection.h"
 #include "scene/Transform.h"
 
 namespace manylights {
@@ -88,11 +89,15 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     vertexArray_.setFloatAttribute(3, 0, 4, offsetof(Vertex, tangent));
     vertexArray_.setIndexBuffer(indices_);
 
+    std::vector<Bounds> meshBounds;
+    for (const Mesh& mesh : scene.meshes)
+        meshBounds.push_back(mesh.bounds());
     for (const Object& object : scene.objects)
         for (const MeshRange& range : meshRanges_[object.mesh]) {
             const std::size_t material =
                 object.materialOverridesMesh || !range.material ? object.material : *range.material;
-            draws_.push_back({object.transform, normalMatrix(object.transform), range, material});
+            draws_.push_back({object.transform, normalMatrix(object.transform), range, material,
+                              transformedBounds(meshBounds[object.mesh], object.transform)});
         }
 
     packedLights_.reserve(lights.size());
@@ -134,6 +139,36 @@ void GpuScene::drawObjects(const gl::Program& program) const
                                  reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
                                  range.baseVertex);
     }
+}
+
+Bounds GpuScene::objectsWorldBounds() const
+{
+    Bounds all;
+    for (const DrawItem& draw : draws_)
+        if (!draw.worldBounds.empty()) {
+            all.extend(draw.worldBounds.min);
+            all.extend(draw.worldBounds.max);
+        }
+    return all;
+}
+
+std::size_t GpuScene::drawObjectsDepthOnly(const gl::Program& program,
+                                           const std::function<bool(const Bounds&)>& keep) const
+{
+    constexpr GLint kModel = 0;  // shaders/shadow_depth.vert
+    program.use();
+    std::size_t drawn = 0;
+    for (const DrawItem& draw : draws_) {
+        if (draw.worldBounds.empty() || !keep(draw.worldBounds))
+            continue;
+        program.set(kModel, draw.model);
+        const MeshRange& range = draw.range;
+        glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
+                                 range.baseVertex);
+        ++drawn;
+    }
+    return drawn;
 }
 
 }  // namespace manylights

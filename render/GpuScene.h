@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -56,11 +57,21 @@ public:
     // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
     // shaders/lib/material.glsl.
     void drawObjects(const gl::Program& program) const;
+    // Depth-only passes (shadow maps): draws the objects whose world bounds pass `keep`,
+    // setting only the model matrix (location 0); returns how many draws were made.
+    // The union of the drawn objects' world bounds.
+    Bounds objectsWorldBounds() const;
+    std::size_t drawObjectsDepthOnly(const gl::Program& program, const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
+    const Scene& scene() const { return scene_; }
+    // Changes whenever an object's transform changes (cached shadow maps compare it). The
+    // scene is static today; a per-frame transform update must call noteTransformsChanged().
+    std::uint64_t transformsVersion() const { return transformsVersion_; }
+    void noteTransformsChanged() { ++transformsVersion_; }
 
 private:
     // One sub-mesh's place in the shared buffers.
@@ -75,6 +86,7 @@ private:
         glm::mat3 normalMatrix;
         MeshRange range;
         std::size_t material;
+        Bounds worldBounds;  // for culling depth-only passes against a light's volume
     };
 
     const Scene& scene_;
@@ -82,6 +94,7 @@ private:
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;
+    std::uint64_t transformsVersion_ = 0;
     FrameUniforms frame_{};
     gl::Buffer vertices_;
     gl::Buffer indices_;

@@ -3,6 +3,7 @@
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
+#include "lib/shadows.glsl"
 
 struct Surface {
     vec3 position;  // world space
@@ -23,11 +24,13 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
     return s.diffuse * NdotL + s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
 }
 
-// The light-independent terms: ke + ambient ⊙ kd + the directional light.
+// The light-independent terms: ke + ambient ⊙ kd · ao + the directional light times its
+// shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off).
 vec3 shadeGlobal(Surface s, vec3 V)
 {
-    vec3 color = s.emissive + frame.ambient.rgb * s.diffuse;
-    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V);
+    vec3 color = s.emissive + frame.ambient.rgb * s.diffuse * ambientOcclusion(s.position);
+    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V) *
+             directionalShadow(s.position);
     return color;
 }
 
