@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -15,6 +17,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "render/GpuScene.h"
 #include "scene/Scene.h"
 
 namespace manylights {
@@ -27,11 +30,26 @@ struct ShadowingUniforms {
     glm::mat4 directionalShadowMatrix{1.0f};
     glm::vec4 directionalShadowParams{0.0f};  // x: on; y: 1 / map size
     glm::vec4 occlusionParams{0.0f};          // x: ambient occlusion on
+    glm::vec4 localShadowParams{0.0f};        // x: some local light shadowed; y: 1 / spot size; z: 1 / cube size
+};
+
+// std430 layout of ShadowSlot in shaders/lib/shadows.glsl.
+struct GpuShadowSlot {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec4 params{0.0f};  // x: 1 spot, 2 cube; y: layer; z: near; w: far
 };
 
 // Texture units and binding points shared with shaders/lib/shadows.glsl.
 inline constexpr GLuint kDirectionalShadowUnit = 9;
+inline constexpr GLuint kSpotShadowUnit = 10;
+inline constexpr GLuint kPointShadowUnit = 11;
 inline constexpr GLuint kShadowingUniformBinding = 1;
+inline constexpr GLuint kShadowSlotOfLightBinding = 10;
+inline constexpr GLuint kShadowSlotsBinding = 12;
+
+// Spot lights up to this cutoff get one perspective map; wider ones (whose map would need a
+// field of view near or beyond 180°) get a cube map like a point light.
+inline constexpr float kMaxSpotMapCutoffDegrees = 75.0f;
 
 // The world → shadow-map transform (uv in xy, depth in z, all in [0, 1]) of a directional
 // light travelling along `direction`, fitted to the part of `sceneBounds` inside the camera's
@@ -41,9 +59,21 @@ inline constexpr GLuint kShadowingUniformBinding = 1;
 glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBounds,
                                const glm::mat4& cameraViewProjection, int mapSize, float padTexels);
 
+// Sizes of the maps, in texels per side.
+struct ShadowMapSizes {
+    int directional = 2048;
+    int spot = 1024;
+    int cubeFace = 512;
+};
+
 class ShadowMaps {
 public:
-    explicit ShadowMaps(int directionalMapSize = 2048);
+    explicit ShadowMaps(const ShadowMapSizes& sizes = {});
+
+    // How many local lights get shadow maps (--shadow-lights; 0 by default: only the
+    // directional light casts shadows). Chosen each frame by selectShadowLights.
+    void setLocalLightBudget(int budget) { localBudget_ = budget; }
+    int localLightBudget() const { return localBudget_; }
 
     // The viewer's switch: whether a directional light that asks for shadows ("shadows":
     // true in the scene) gets them. On by default.
@@ -65,10 +95,32 @@ public:
     // Whether the last update applied directional shadows.
     bool directionalActive() const { return uniforms_.directionalShadowParams.x != 0.0f; }
 
-private:
-    void renderDirectional(const GpuScene& scene, const glm::mat4& lightViewProjection, PassProfiler& profiler);
+    // The local lights that had shadow maps in the last update (indices into the lights).
+    const std::vector<std::size_t>& shadowedLights() const { return shadowedLights_; }
 
+private:
+    // A local light's map: what it was rendered for, so an unchanged light is not redrawn.
+    struct LocalSlot {
+        std::size_t light = 0;
+        bool cube = false;
+        int layer = 0;  // layer of the spot array, or cube index of the cube array
+        GpuLight renderedFor{};
+        std::uint64_t renderedVersion = 0;
+        bool valid = false;
+        GpuShadowSlot gpu;
+    };
+
+    void renderDirectional(const GpuScene& scene, const glm::mat4& lightViewProjection, PassProfiler& profiler);
+    void updateLocal(const GpuScene& scene, PassProfiler& profiler);
+    void ensureArrays(int spotLayers, int cubes);
+    void renderSpot(const GpuScene& scene, LocalSlot& slot);
+    void renderCube(const GpuScene& scene, LocalSlot& slot);
+    void renderDepth(const GpuScene& scene, GLuint texture, int layer, int size, const glm::mat4& viewProjection,
+                     const std::function<bool(const Bounds&)>& keep);
+
+    ShadowMapSizes sizes_;
     int directionalMapSize_;
+    int localBudget_ = 0;
     bool directionalEnabled_ = true;
     gl::Texture2D directionalMap_;
     gl::Framebuffer directionalFramebuffer_;
@@ -82,6 +134,23 @@ private:
     std::uint64_t directionalRenderedVersion_ = 0;
 
     std::uint64_t passesRendered_ = 0;
+
+    // Local lights: spot maps in one 2D array (unit 10), cube maps in one cube-map array (unit
+    // 11), both depth textures with comparison; slots keep their light while it stays chosen.
+    std::vector<LocalSlot> slots_;
+    std::vector<std::size_t> shadowedLights_;
+    gl::GlObject<gl::detail::deleteTexture> spotArray_;
+    gl::GlObject<gl::detail::deleteTexture> cubeArray_;
+    int spotLayers_ = 0;
+    int cubes_ = 0;
+    int spotArraySize_ = 0;
+    int cubeArraySize_ = 0;
+    std::size_t lightCount_ = 0;
+    gl::GlObject<gl::detail::deleteFramebuffer> localFramebuffer_;  // one layer attached at a time
+    gl::Buffer slotOfLightBuffer_;
+    gl::Buffer slotsBuffer_;
+    std::size_t slotOfLightCapacity_ = 0;
+    std::size_t slotsCapacity_ = 0;
 };
 
 }  // namespace manylights

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "scene/Falloff.h"
 
 namespace manylights {
 
@@ -50,6 +49,9 @@ bool boxMayIntersectCone(const Bounds& box, const glm::vec3& apex, const glm::ve
 
 double screenCoverage(const glm::vec3& centre, float radius, const glm::mat4& viewProjection)
 {
+    // An unbounded light (SPEC.md §2: a = b = 0) reaches every pixel.
+    if (!(radius < 1e30f))
+        return 1.0;
     glm::vec2 low(1.0f);
     glm::vec2 high(-1.0f);
     for (int corner = 0; corner < 8; ++corner) {
@@ -72,17 +74,17 @@ double screenCoverage(const glm::vec3& centre, float radius, const glm::mat4& vi
     return static_cast<double>(high.x - low.x) * static_cast<double>(high.y - low.y) / 4.0;
 }
 
-std::vector<std::size_t> selectShadowLights(const std::vector<Light>& lights, float attenuationThreshold,
+std::vector<std::size_t> selectShadowLights(const std::vector<ShadowCandidate>& candidates,
                                             const glm::mat4& viewProjection, int budget)
 {
-    std::vector<double> score(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const Light& light = lights[i];
-        const float imax = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
-        const float radius = lightRadius(light, attenuationThreshold);
-        score[i] = imax > 0.0f && radius > 0.0f ? screenCoverage(light.position, radius, viewProjection) * imax : 0.0;
+    std::vector<double> score(candidates.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const ShadowCandidate& light = candidates[i];
+        score[i] = light.maxIntensity > 0.0f && light.radius > 0.0f
+                       ? screenCoverage(light.position, light.radius, viewProjection) * light.maxIntensity
+                       : 0.0;
     }
-    std::vector<std::size_t> order(lights.size());
+    std::vector<std::size_t> order(candidates.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     // Stable: equal scores keep index order.
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return score[a] > score[b]; });

@@ -29,11 +29,18 @@ bool boxMayIntersectCone(const Bounds& box, const glm::vec3& apex, const glm::ve
 // sphere reaches behind the camera's near plane. `viewProjection` is the camera's.
 double screenCoverage(const glm::vec3& centre, float radius, const glm::mat4& viewProjection);
 
+// What the ranking needs of a local light: its bounding sphere and brightest channel.
+struct ShadowCandidate {
+    glm::vec3 position{0.0f};
+    float radius = 0.0f;        // lightRadius (the culling radius); may be "unbounded"
+    float maxIntensity = 0.0f;  // Imax = max(intensity.r, .g, .b)
+};
+
 // The lights that get shadow maps, at most `budget` of them, best first: ranked by
-// screenCoverage(light's bounding sphere) × Imax (max intensity channel), ties by lower index
-// so the choice is deterministic. Lights that cover no pixel or have no intensity are never
-// chosen. `lights` are the rendered lights (expandLights).
-std::vector<std::size_t> selectShadowLights(const std::vector<Light>& lights, float attenuationThreshold,
+// screenCoverage(bounding sphere) × Imax, ties by lower index so the choice is deterministic.
+// Lights that cover no pixel or have no intensity are never chosen. Returns indices into
+// `candidates`.
+std::vector<std::size_t> selectShadowLights(const std::vector<ShadowCandidate>& candidates,
                                             const glm::mat4& viewProjection, int budget);
 
 }  // namespace manylights

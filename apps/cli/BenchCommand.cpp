@@ -77,6 +77,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                     ImageSize size, const BenchOptions& options)
 {
     Renderer renderer(scene, lights, size.width, size.height);
+    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     std::unique_ptr<Technique> technique = makeTechnique(techniqueName);
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
     for (int i = 0; i < options.warmup; ++i)
@@ -402,6 +403,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             return endsWith(path, ".svg") && path.size() > 4 ? std::string()
                                                               : "must end in .svg, got '" + path + "'";
         });
+    bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
+        ->check(CLI::Range(0, kMaxShadowLights))
+        ->capture_default_str();
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;

@@ -32,6 +32,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["height"] = options.height;
     stats["lights"] = lightCount;
     stats["frames"] = frames.size();
+    stats["shadow_lights"] = options.shadowLights;
     stats["warmup_frames"] = kWarmupFrames;
     const auto summaryJson = [](const std::vector<double>& values) {
         const Statistics summary = summarize(values);
@@ -88,6 +89,7 @@ void runRender(const RenderOptions& options)
     Renderer renderer(scene, lights, options.width, options.height);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
+    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 

@@ -19,6 +19,7 @@ struct RenderOptions {
     int frames = 1;
     std::string statsPath;
     bool countWork = false;
+    int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -54,13 +54,16 @@ vec4 lightReach(GpuLight light, vec3 position)
     return vec4(-toSurface, A * S);
 }
 
-// intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
-vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
+// intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, times its shadow factor when it
+// has a shadow map (lib/shadows.glsl); exactly zero where A·S is zero.
+vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
 {
+    GpuLight light = lights[lightIndex];
     vec4 reach = lightReach(light, s.position);
     if (reach.w == 0.0)
         return vec3(0.0);
-    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w;
+    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w *
+           localShadow(lightIndex, light.positionRadius.xyz, s.position);
 }
 
 // Work counting (--count-work): the shaders of each technique report how many (pixel,

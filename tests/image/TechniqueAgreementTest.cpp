@@ -90,7 +90,11 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
                       AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
                       AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json",
-                                    {"--size", "160x90"}}),
+                                    {"--size", "160x90"}},
+                      // Shadows (directional, spot maps, cube maps for points and wide spots)
+                      // and SSAO: every technique samples the same maps at the same positions.
+                      AgreementCase{"shadows_and_ssao", kScenes + "shadows_and_ssao.json",
+                                    {"--size", "160x120", "--shadow-lights", "24"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace
