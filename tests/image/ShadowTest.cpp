@@ -61,11 +61,12 @@ bool rayHitsBox(const glm::dvec3& origin, const glm::dvec3& direction, const Box
 
 // In shadow (true), lit (false), or too close to the shadow's edge to say (nullopt): the
 // point and its neighbours kPenumbraMargin away on the plane must agree.
-std::optional<bool> shadowedOnPlane(const glm::dvec3& p, const glm::dvec3& toLight, const Box& box)
+std::optional<bool> shadowedOnPlane(const glm::dvec3& p, const glm::dvec3& toLight, const Box& box,
+                                    double margin = kPenumbraMargin)
 {
     const bool centre = rayHitsBox(p, toLight, box);
     for (const glm::dvec3 offset : {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1)})
-        if (rayHitsBox(p + kPenumbraMargin * offset, toLight, box) != centre)
+        if (rayHitsBox(p + margin * offset, toLight, box) != centre)
             return std::nullopt;
     return centre;
 }
@@ -188,6 +189,102 @@ TEST_P(Shadows, ShadowsOffLeaveThePlaneLit)
                 ++checked;
             }
     EXPECT_GT(checked, 3000);
+}
+
+// A local light 6 above the origin, A = 1 (a = b = 0), exponent 0: a lit plane point at
+// distance d gets kd · (ambient + I · 6/d) (N·L = 6/d, S = 1 inside the cone), a shadowed one
+// kd · ambient exactly. The box (1 × 0.5 × 1 at height 3) throws a magnified shadow on
+// x ≈ 0.9 to 3.3, of which the camera sees x > 2.2 (the box hides the rest).
+// --shadow-lights 1 gives the light a map: a spot map for `cutoffDegrees` ≤ 75, a cube map
+// for a point light (cutoffDegrees 180) or a wider spot.
+void checkLocalLightShadow(const std::string& technique, const std::string& lightJson, double cutoffDegrees)
+{
+    const std::string scene = R"({
+        "camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov_y": 60, "near": 0.1, "far": 100},
+        "ambient": [0.1, 0.1, 0.1],
+        "lights": [)" + lightJson + R"(],
+        "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
+        "objects": [
+            {"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
+            {"mesh": {"primitive": "box", "size": [1, 0.5, 1]}, "material": "grey", "transform": {"translate": [1, 3, 0]}}]})";
+    const glm::dvec3 light(0, 6, 0);
+    const Box box{{0.5, 2.75, -0.5}, {1.5, 3.25, 0.5}};
+    const double cosCutoff = std::cos(glm::radians(cutoffDegrees));
+    const double ambientOnly = 0.5 * 0.1;
+    // The maps' texels are about 0.012 (spot: 2 · 6 · tan 46° / 1024) to 0.025 (cube face:
+    // 2 · 6 / 512) apart on the plane; the filter reaches two of them: a margin of 0.15 is
+    // several times the blurred edge.
+    constexpr double kLocalPenumbraMargin = 0.15;
+    const Rendered r = renderWithPositions(scene, "65x65", {"--technique", technique, "--shadow-lights", "1"});
+    int shadowed = 0;
+    int litPixels = 0;
+    int failures = 0;
+    const glm::dvec3 umbraCentre(2.75, 0, 0);
+    double nearestToCentre = 1e30;
+    int centreX = -1;
+    int centreY = -1;
+    for (int y = 0; y < r.colour.height; ++y)
+        for (int x = 0; x < r.colour.width; ++x) {
+            if (!r.covered(x, y))
+                continue;
+            const float* p = r.position.pixel(x, y);
+            const glm::dvec3 position(p[0], p[1], p[2]);
+            const glm::dvec3 toLight = light - position;
+            const double d = glm::length(toLight);
+            const double cosTheta = (light.y - position.y) / d;
+            if (std::abs(cosTheta - cosCutoff) < 1e-4)
+                continue;  // on the cone's edge: either answer is right
+            if (position.y > 1.0)
+                continue;  // the box: its faces see the light at other angles; the plane is the test
+            const std::optional<bool> inShadow = shadowedOnPlane(position, toLight / d, box, kLocalPenumbraMargin);
+            if (!inShadow)
+                continue;
+            const bool inCone = cosTheta >= cosCutoff;
+            const double want = *inShadow || !inCone ? ambientOnly : 0.5 * (0.1 + 0.8 * cosTheta);
+            if (inCone)
+                ++(*inShadow ? shadowed : litPixels);
+            if (!near(r.colour.pixel(x, y), glm::dvec3(want)) && ++failures <= 5)
+                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << p[0] << ", " << p[1] << ", " << p[2]
+                              << "): got " << r.colour.pixel(x, y)[0] << ", expected " << want
+                              << (*inShadow ? " (in shadow)" : " (lit)");
+            if (*inShadow && glm::length(position - umbraCentre) < nearestToCentre) {
+                nearestToCentre = glm::length(position - umbraCentre);
+                centreX = x;
+                centreY = y;
+            }
+        }
+    EXPECT_EQ(failures, 0);
+    EXPECT_GT(shadowed, 30);
+    EXPECT_GT(litPixels, 1500);
+    ASSERT_GE(centreX, 0);
+    const float exactAmbient = 0.1f * 0.5f;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(r.colour.pixel(centreX, centreY)[c], exactAmbient) << "umbra centre channel " << c;
+}
+
+TEST_P(Shadows, BoxAbovePlaneUnderSpotLight)
+{
+    checkLocalLightShadow(GetParam(),
+                          R"({"type": "spot", "pos": [0, 6, 0], "direction": [0, -1, 0], "cutoff": 45, "exponent": 0,
+                              "intensity": [0.8, 0.8, 0.8], "attenuation": {"constant": 1, "linear": 0, "quadratic": 0}})",
+                          45.0);
+}
+
+TEST_P(Shadows, BoxAbovePlaneUnderPointLight)
+{
+    checkLocalLightShadow(GetParam(),
+                          R"({"type": "point", "pos": [0, 6, 0], "intensity": [0.8, 0.8, 0.8],
+                              "attenuation": {"constant": 1, "linear": 0, "quadratic": 0}})",
+                          180.0);
+}
+
+TEST_P(Shadows, BoxAbovePlaneUnderWideSpotLight)
+{
+    // 100° is wider than one perspective map covers well: the spot gets a cube map.
+    checkLocalLightShadow(GetParam(),
+                          R"({"type": "spot", "pos": [0, 6, 0], "direction": [0, -1, 0], "cutoff": 100, "exponent": 0,
+                              "intensity": [0.8, 0.8, 0.8], "attenuation": {"constant": 1, "linear": 0, "quadratic": 0}})",
+                          100.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, Shadows, ::testing::ValuesIn(techniqueNames()),
