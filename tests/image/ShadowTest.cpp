@@ -287,6 +287,34 @@ TEST_P(Shadows, BoxAbovePlaneUnderWideSpotLight)
                           100.0);
 }
 
+TEST(ShadowView, ShowsTheDirectionalShadowFactor)
+{
+    // --view shadow of the box above the plane: 0 in the umbra, 1 where lit, and only values
+    // in between at the shadow's filtered edge; the same classification as the final image.
+    const glm::dvec3 toLight = glm::normalize(glm::dvec3(-1, 2, 0));
+    const Box box{{-2, 1.75, -1}, {0, 2.25, 1}};
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", boxAbovePlane(true));
+    const std::string scene = (dir / "scene.json").string();
+    const Image shadow = renderPfm(scene, dir / "shadow.pfm", {"--size", "65x65", "--view", "shadow"});
+    const Image position = renderPfm(scene, dir / "position.pfm", {"--size", "65x65", "--view", "position"});
+    int umbra = 0;
+    int lit = 0;
+    for (int y = 0; y < shadow.height; ++y)
+        for (int x = 0; x < shadow.width; ++x) {
+            const float* p = position.pixel(x, y);
+            if (p[1] > 1.0f || (p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f))
+                continue;  // the box, or background (a plane pixel exactly at the origin is not used)
+            const std::optional<bool> inShadow = shadowedOnPlane(glm::dvec3(p[0], p[1], p[2]), toLight, box);
+            if (!inShadow)
+                continue;
+            EXPECT_EQ(shadow.pixel(x, y)[0], *inShadow ? 0.0f : 1.0f) << "pixel (" << x << ", " << y << ")";
+            ++(*inShadow ? umbra : lit);
+        }
+    EXPECT_GT(umbra, 40);
+    EXPECT_GT(lit, 2000);
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, Shadows, ::testing::ValuesIn(techniqueNames()),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string name = param.param;
