@@ -111,6 +111,8 @@ void ShadowMaps::invalidate()
 
 void ShadowMaps::update(const GpuScene& scene, PassProfiler& profiler)
 {
+    if (rebuildEveryFrame_)
+        invalidate();
     const Scene& description = scene.scene();
     const bool directional = directionalEnabled_ && description.directional && description.directional->shadows;
     uniforms_.directionalShadowParams = glm::vec4(0.0f);

@@ -85,6 +85,9 @@ public:
     void update(const GpuScene& scene, PassProfiler& profiler);
     // Forgets every cached map: the next update renders all of them.
     void invalidate();
+    // Renders every map every frame, as when everything moves (for measuring the cost of
+    // building the maps; --rebuild-shadows).
+    void setRebuildEveryFrame(bool rebuild) { rebuildEveryFrame_ = rebuild; }
     // Binds the maps and the uniform block for the lighting shaders. `ambientOcclusion`: whether
     // the SSAO texture (unit 13, bound by Ssao) multiplies the ambient term.
     void bind(bool ambientOcclusion);
@@ -121,6 +124,7 @@ private:
     ShadowMapSizes sizes_;
     int directionalMapSize_;
     int localBudget_ = 0;
+    bool rebuildEveryFrame_ = false;
     bool directionalEnabled_ = true;
     gl::Texture2D directionalMap_;
     gl::Framebuffer directionalFramebuffer_;

@@ -26,4 +26,14 @@ done
 $ml render -o $out/volumes-view.png --size 640x360 --technique stencil --view volumes --lights 24
 # The benchmark scene of docs/performance.md at its reference light count.
 $ml render bench/courtyard.json -o $out/courtyard.png --size 640x360 --lights 1024
+# Shadows and SSAO (docs/shadows.md): one scene without and with them, and the two views.
+variants=$(mktemp -d)
+trap 'rm -rf "$variants"' EXIT
+scripts/shadow-scene-variants.py tests/scenes/shadows_and_ssao.json "$variants"
+$ml render "$variants/plain.json" -o $out/shadows-none.png --size 640x360
+$ml render "$variants/shadows.json" -o $out/shadows-directional.png --size 640x360
+$ml render "$variants/shadows.json" -o $out/shadows-local.png --size 640x360 --shadow-lights 24
+$ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 24
+$ml render "$variants/shadows.json" -o $out/view-shadow.png --size 640x360 --view shadow
+$ml render "$variants/both.json" -o $out/view-ssao.png --size 640x360 --view ssao
 echo "docs images written to $out"

@@ -90,6 +90,7 @@ void runRender(const RenderOptions& options)
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
+    renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
     std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 

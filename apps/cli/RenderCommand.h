@@ -20,6 +20,7 @@ struct RenderOptions {
     std::string statsPath;
     bool countWork = false;
     int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
+    bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.
