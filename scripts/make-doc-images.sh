@@ -29,11 +29,11 @@ $ml render bench/courtyard.json -o $out/courtyard.png --size 640x360 --lights 10
 # Shadows and SSAO (docs/shadows.md): one scene without and with them, and the two views.
 variants=$(mktemp -d)
 trap 'rm -rf "$variants"' EXIT
-scripts/shadow-scene-variants.py tests/scenes/shadows_and_ssao.json "$variants"
+scripts/shadow-scene-variants.py docs/scenes/shadows.json "$variants"
 $ml render "$variants/plain.json" -o $out/shadows-none.png --size 640x360
 $ml render "$variants/shadows.json" -o $out/shadows-directional.png --size 640x360
-$ml render "$variants/shadows.json" -o $out/shadows-local.png --size 640x360 --shadow-lights 24
-$ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 24
+$ml render "$variants/shadows.json" -o $out/shadows-all.png --size 640x360 --shadow-lights 3
+$ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 3
 $ml render "$variants/shadows.json" -o $out/view-shadow.png --size 640x360 --view shadow
 $ml render "$variants/both.json" -o $out/view-ssao.png --size 640x360 --view ssao
 echo "docs images written to $out"
