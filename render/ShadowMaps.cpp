@@ -240,14 +240,16 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
 {
     const std::vector<GpuLight>& lights = scene.packedLights();
     lightCount_ = lights.size();
-    std::vector<ShadowCandidate> candidates;
-    candidates.reserve(lights.size());
-    for (const GpuLight& light : lights)
-        candidates.push_back({glm::vec3(light.positionRadius), light.positionRadius.w,
-                              std::max({light.intensityExponent.r, light.intensityExponent.g, light.intensityExponent.b})});
-    shadowedLights_ = localBudget_ > 0
-                          ? selectShadowLights(candidates, scene.frameUniforms().viewProjection, localBudget_)
-                          : std::vector<std::size_t>{};
+    shadowedLights_.clear();
+    if (localBudget_ > 0) {
+        std::vector<ShadowCandidate> candidates;
+        candidates.reserve(lights.size());
+        for (const GpuLight& light : lights)
+            candidates.push_back(
+                {glm::vec3(light.positionRadius), light.positionRadius.w,
+                 std::max({light.intensityExponent.r, light.intensityExponent.g, light.intensityExponent.b})});
+        shadowedLights_ = selectShadowLights(candidates, scene.frameUniforms().viewProjection, localBudget_);
+    }
 
     // A light that stays chosen keeps its slot (and its cached map); new ones take free layers.
     std::vector<LocalSlot> kept;
@@ -274,8 +276,10 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
     slots_ = std::move(kept);
     int spotLayers = 0;
     int cubes = 0;
-    for (const LocalSlot& slot : slots_)
-        (slot.cube ? cubes : spotLayers) = std::max(slot.cube ? cubes : spotLayers, slot.layer + 1);
+    for (const LocalSlot& slot : slots_) {
+        int& layers = slot.cube ? cubes : spotLayers;
+        layers = std::max(layers, slot.layer + 1);
+    }
     ensureArrays(spotLayers, cubes);
 
     for (LocalSlot& slot : slots_) {
@@ -371,25 +375,30 @@ void ShadowMaps::bind(bool ambientOcclusion)
     glBindTextureUnit(kSpotShadowUnit, spotArray_.id());
     glBindTextureUnit(kPointShadowUnit, cubeArray_.id());
 
-    // Which slot each light has, and the slots: rewritten every frame (a few bytes per light),
-    // since the chosen lights may change with the camera.
-    // Never empty: a buffer bound to a storage block must have storage.
+    // Which slot each light has: rewritten only when the chosen lights change (it holds an
+    // entry for every light, which may be a million). Never empty: a buffer bound to a storage
+    // block must have storage.
+    std::vector<std::size_t> slotLights;
+    for (const LocalSlot& slot : slots_)
+        slotLights.push_back(slot.light);
     const std::size_t lightCount = std::max<std::size_t>(lightCount_, 1);
-    std::vector<std::int32_t> slotOfLight(lightCount, -1);
+    if (slotOfLightCapacity_ != lightCount || slotLights != uploadedSlotLights_) {
+        std::vector<std::int32_t> slotOfLight(lightCount, -1);
+        for (std::size_t i = 0; i < slotLights.size(); ++i)
+            slotOfLight[slotLights[i]] = static_cast<std::int32_t>(i);
+        slotOfLightBuffer_ = gl::Buffer("shadow slot of each light", slotOfLight.size() * sizeof(std::int32_t),
+                                        slotOfLight.data(), 0);
+        slotOfLightCapacity_ = lightCount;
+        uploadedSlotLights_ = std::move(slotLights);
+    }
+    // The slots themselves: a few dozen bytes each, every frame.
     std::vector<GpuShadowSlot> slots(std::max<std::size_t>(slots_.size(), 1));
-    for (std::size_t i = 0; i < slots_.size(); ++i) {
-        slotOfLight[slots_[i].light] = static_cast<std::int32_t>(i);
+    for (std::size_t i = 0; i < slots_.size(); ++i)
         slots[i] = slots_[i].gpu;
-    }
-    if (slotOfLightCapacity_ < slotOfLight.size()) {
-        slotOfLightBuffer_ = gl::Buffer("shadow slot of each light", slotOfLight.size() * sizeof(std::int32_t), nullptr);
-        slotOfLightCapacity_ = slotOfLight.size();
-    }
     if (slotsCapacity_ < slots.size()) {
         slotsBuffer_ = gl::Buffer("shadow slots", slots.size() * sizeof(GpuShadowSlot), nullptr);
         slotsCapacity_ = slots.size();
     }
-    slotOfLightBuffer_.update(0, slotOfLight.size() * sizeof(std::int32_t), slotOfLight.data());
     slotsBuffer_.update(0, slots.size() * sizeof(GpuShadowSlot), slots.data());
     slotOfLightBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowSlotOfLightBinding);
     slotsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowSlotsBinding);
