@@ -70,8 +70,9 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         targets_->gbuffer.bindForReading();
         if (view == ViewMode::Shadow || view == ViewMode::Ssao) {
             if (!shadowingViewProgram_)
-                shadowingViewProgram_ = gl::Program(
-                    "shadowing view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadowing_view.frag"}});
+                shadowingViewProgram_ =
+                    gl::Program("shadowing view", {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                   {GL_FRAGMENT_SHADER, "shadowing_view.frag"}});
             shadowingViewProgram_.set(0, static_cast<int>(view));
             drawCoveredPixels(shadowingViewProgram_);
         } else {

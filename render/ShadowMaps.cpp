@@ -45,7 +45,8 @@ gl::Texture2D makeShadowTexture(std::string_view label, int size)
 }
 
 // NDC [-1, 1]³ → [0, 1]³ (texture coordinates and window depth).
-const glm::mat4 kNdcToUnit = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+const glm::mat4 kNdcToUnit =
+    glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
 }  // namespace
 
@@ -60,7 +61,8 @@ glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBo
     const glm::mat4 cameraInverse = glm::inverse(cameraViewProjection);
     Bounds frustum;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 ndc((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f, 1.0f);
+        const glm::vec4 ndc((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f,
+                            1.0f);
         const glm::vec4 world = cameraInverse * ndc;
         frustum.extend(glm::vec3(lightView * (world / world.w)));
     }
@@ -85,7 +87,8 @@ glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBo
 ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     : sizes_(sizes),
       directionalMapSize_(sizes.directional),
-      depthProgram_("shadow depth", {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}),
+      depthProgram_("shadow depth",
+                    {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}),
       uniformBuffer_("shadowing uniforms", sizeof(ShadowingUniforms), nullptr)
 {
     // A 1x1 map until the directional light needs a real one: the shaders' sampler must
@@ -340,7 +343,8 @@ void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
     slot.gpu.params = glm::vec4(2.0f, static_cast<float>(slot.layer), near, far);
 }
 
-void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, int size, const glm::mat4& viewProjection,
+void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, int size,
+                             const glm::mat4& viewProjection,
                              const std::function<bool(const Bounds&)>& keep)
 {
     const GLuint framebuffer = localFramebuffer_.id();

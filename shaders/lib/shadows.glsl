@@ -86,7 +86,8 @@ float pointShadow(ShadowSlot slot, vec3 fromLight)
     float lit = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
-            lit += texture(pointShadowMaps, vec4(fromLight + (float(dx) * u + float(dy) * v) * step, slot.params.y), depth);
+            lit += texture(pointShadowMaps, vec4(fromLight + (float(dx) * u + float(dy) * v) * step, slot.params.y),
+                           depth);
     return lit / 9.0;
 }
 

@@ -6,7 +6,10 @@
 
 #include "GlContextTest.h"
 #include "render/ForwardTechnique.h"
+#include "render/GpuScene.h"
+#include "render/PassProfiler.h"
 #include "render/Renderer.h"
+#include "render/ShadowMaps.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -24,7 +27,8 @@ const char* kScene = R"({
     "lights": [
         {"type": "spot", "pos": [0, 5, 0], "direction": [0, -1, 0], "cutoff": 40, "intensity": [5, 5, 5], "range": 12},
         {"type": "point", "pos": [-3, 2.5, 2], "intensity": [2, 1, 1], "range": 8},
-        {"type": "spot", "pos": [3, 3, -2], "direction": [-1, -1, 0], "cutoff": 120, "intensity": [1, 1, 2], "range": 8}],
+        {"type": "spot", "pos": [3, 3, -2], "direction": [-1, -1, 0], "cutoff": 120, "intensity": [1, 1, 2],
+         "range": 8}],
     "objects": [
         {"mesh": {"primitive": "plane", "size": [20, 20]}},
         {"mesh": {"primitive": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 2, 0]}}]})";
@@ -60,6 +64,32 @@ TEST_F(ShadowMapsTest, UnchangedFrameRendersNoShadowPass)
     renderer.shadowMaps().invalidate();
     renderer.renderFrame(forward, ViewMode::Final);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), 2 * all + kDirectionalPasses);
+}
+
+TEST_F(ShadowMapsTest, MovedObjectsRebuildEveryMap)
+{
+    const Scene scene = parseScene(kScene, "<shadow maps test>", ".");
+    const std::vector<Light> lights = expandLights(scene, std::nullopt);
+    GpuScene gpuScene(scene, lights);
+    gpuScene.setViewport(96, 64);
+    ShadowMaps maps;
+    maps.setLocalLightBudget(3);
+    PassProfiler profiler;
+    const auto update = [&] {
+        profiler.beginFrame();
+        maps.update(gpuScene, profiler);
+        profiler.endFrame();
+    };
+    const std::uint64_t all = kDirectionalPasses + kSpotPasses + 2 * kCubePasses;
+    update();
+    update();
+    EXPECT_EQ(maps.passesRendered(), all);
+    // What moves objects (animation) reports it; every map may now be stale.
+    gpuScene.noteTransformsChanged();
+    update();
+    EXPECT_EQ(maps.passesRendered(), 2 * all);
+    update();
+    EXPECT_EQ(maps.passesRendered(), 2 * all);
 }
 
 TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
