@@ -1,5 +1,6 @@
 #include "render/GpuScene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -8,11 +9,26 @@
 #include "core/Error.h"
 #include "scene/Falloff.h"
 #include "scene/Meshes.h"
+#include "scene/ShadowSelection.h"
 #include "scene/Transform.h"
 
 namespace manylights {
 
 namespace {
+
+// The object-space box a draw's vertices stay in: the mesh's own, or for a surface of
+// revolution posed in the vertex shader, the largest its profile reaches at any time.
+Bounds objectSpaceBounds(const Object& object, const Bounds& meshBounds)
+{
+    if (!object.revolution)
+        return meshBounds;
+    const RevolutionProfile& profile = *object.revolution;
+    const float reach = profile.radius + profile.amplitude;
+    Bounds bounds;
+    bounds.extend({-reach, 0.0f, -reach});
+    bounds.extend({reach, profile.height, reach});
+    return bounds;
+}
 // Binding points shared with the shaders (lib/frame.glsl, lib/lights.glsl).
 constexpr GLuint kFrameBinding = 0;
 constexpr GLuint kLightsBinding = 0;
@@ -124,13 +140,19 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
                                  load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map")});
     }
 
+    std::vector<Bounds> meshBounds;
+    for (const Mesh& mesh : scene.meshes)
+        meshBounds.push_back(mesh.bounds());
     for (const Object& object : scene.objects)
         for (const MeshRange& range : meshRanges_[object.mesh]) {
             const std::size_t material =
                 object.materialOverridesMesh || !range.material ? object.material : *range.material;
             draws_.push_back({object.transform, normalMatrix(object.transform), range,
-                              &scene.materials[material], &materialMaps_[material], &object, std::nullopt});
+                              &scene.materials[material], &materialMaps_[material], &object, std::nullopt,
+                              objectSpaceBounds(object, meshBounds[object.mesh]), Bounds{}});
         }
+    for (DrawItem& draw : draws_)
+        draw.worldBounds = transformedBounds(draw.meshBounds, draw.model);
     if (scene.lightMarkerRadius)
         addLightMarkers(*scene.lightMarkerRadius);
 
@@ -162,7 +184,7 @@ void GpuScene::addLightMarkers(float radius)
         material.emissive = brightest > 0.0f ? intensity / brightest : glm::vec3{0.0f};
         markerMaterials_.push_back(material);
         const glm::mat4 model = glm::scale(glm::mat4{1.0f}, glm::vec3{radius});
-        draws_.push_back({model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i});
+        draws_.push_back({model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i, Bounds{}, Bounds{}});
     }
 }
 
@@ -203,18 +225,31 @@ void GpuScene::packLights()
 
 void GpuScene::poseDraws()
 {
+    bool moved = false;
     const float markerRadius = scene_.lightMarkerRadius.value_or(0.0f);
     for (DrawItem& draw : draws_) {
         if (draw.markedLight) {
             draw.model = glm::translate(glm::mat4{1.0f}, currentLights_[*draw.markedLight].position);
             draw.model = glm::scale(draw.model, glm::vec3{markerRadius});
         } else if (draw.object->animation) {
-            draw.model = animatedTransform(draw.object->transform, draw.object->animation, time_);
+            const glm::mat4 model = animatedTransform(draw.object->transform, draw.object->animation, time_);
+            if (model == draw.model)
+                continue;
+            draw.model = model;
+            draw.worldBounds = transformedBounds(draw.meshBounds, draw.model);
+            moved = true;
         } else {
             continue;
         }
         draw.normalMatrix = normalMatrix(draw.model);
     }
+    // A dynamic surface of revolution changes shape with time even where it does not move.
+    const bool reshaped = time_ != posedTime_ && std::any_of(draws_.begin(), draws_.end(), [](const DrawItem& draw) {
+        return draw.object && draw.object->revolution && draw.object->revolution->speed != 0.0f;
+    });
+    posedTime_ = time_;
+    if (moved || reshaped)
+        noteTransformsChanged();
 }
 
 void GpuScene::bind() const
@@ -224,24 +259,30 @@ void GpuScene::bind() const
     lightBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding);
 }
 
-void GpuScene::drawObjects(const gl::Program& program) const
+void GpuScene::setObjectUniforms(const gl::Program& program, const DrawItem& draw) const
 {
-    // Locations of shaders/mesh.vert.
-    enum : GLint { kModel = 0, kNormalMatrix = 1 };
+    // Locations shared by shaders/mesh.vert and shaders/shadow_depth.vert, which positions
+    // vertices the same way.
+    enum : GLint { kModel = 0 };
     // shaders/lib/revolution.glsl.
     enum : GLint { kRevolutionEnabled = 30, kRevolutionShape = 31, kRevolutionSpeed = 32 };
+    program.set(kModel, draw.model);
+    const RevolutionProfile* revolution = draw.object && draw.object->revolution ? &*draw.object->revolution : nullptr;
+    program.set(kRevolutionEnabled, revolution ? 1 : 0);
+    if (revolution) {
+        program.set(kRevolutionShape,
+                    glm::vec4(revolution->radius, revolution->height, revolution->amplitude, revolution->waves));
+        program.set(kRevolutionSpeed, revolution->speed);
+    }
+}
+
+void GpuScene::drawObjects(const gl::Program& program) const
+{
+    constexpr GLint kNormalMatrix = 1;  // shaders/mesh.vert
     program.use();
     for (const DrawItem& draw : draws_) {
-        program.set(kModel, draw.model);
+        setObjectUniforms(program, draw);
         program.set(kNormalMatrix, draw.normalMatrix);
-        const RevolutionProfile* revolution =
-            draw.object && draw.object->revolution ? &*draw.object->revolution : nullptr;
-        program.set(kRevolutionEnabled, revolution ? 1 : 0);
-        if (revolution) {
-            program.set(kRevolutionShape,
-                        glm::vec4(revolution->radius, revolution->height, revolution->amplitude, revolution->waves));
-            program.set(kRevolutionSpeed, revolution->speed);
-        }
         bindMaterial(program, *draw.material, *draw.maps);
         const MeshRange& range = draw.range;
         glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
@@ -286,6 +327,35 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
     }
     program.set(kMaps, present);
     program.set(kNormalScale, material.normalScale);
+}
+
+Bounds GpuScene::objectsWorldBounds() const
+{
+    Bounds all;
+    for (const DrawItem& draw : draws_)
+        if (!draw.worldBounds.empty()) {
+            all.extend(draw.worldBounds.min);
+            all.extend(draw.worldBounds.max);
+        }
+    return all;
+}
+
+std::size_t GpuScene::drawObjectsDepthOnly(const gl::Program& program,
+                                           const std::function<bool(const Bounds&)>& keep) const
+{
+    program.use();
+    std::size_t drawn = 0;
+    for (const DrawItem& draw : draws_) {
+        if (draw.worldBounds.empty() || !keep(draw.worldBounds))
+            continue;
+        setObjectUniforms(program, draw);
+        const MeshRange& range = draw.range;
+        glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
+                                 range.baseVertex);
+        ++drawn;
+    }
+    return drawn;
 }
 
 }  // namespace manylights

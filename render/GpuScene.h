@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -60,6 +61,11 @@ public:
     // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
     // shaders/lib/material.glsl and binding the material's maps (texture units 6-8).
     void drawObjects(const gl::Program& program) const;
+    // Depth-only passes (shadow maps): draws the objects whose world bounds pass `keep`,
+    // setting only the model matrix (location 0); returns how many draws were made.
+    // The union of the drawn objects' world bounds.
+    Bounds objectsWorldBounds() const;
+    std::size_t drawObjectsDepthOnly(const gl::Program& program, const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
     // update) and the frame uniforms' time. A pure function of t: no state carries over.
@@ -74,6 +80,11 @@ public:
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
     const TextureCache& textures() const { return textures_; }
+    const Scene& scene() const { return scene_; }
+    // Changes whenever an object's transform or shape changes (cached shadow maps compare it);
+    // setTime calls noteTransformsChanged() when anything moved.
+    std::uint64_t transformsVersion() const { return transformsVersion_; }
+    void noteTransformsChanged() { ++transformsVersion_; }
 
 private:
     // One sub-mesh's place in the shared buffers.
@@ -98,9 +109,12 @@ private:
         const MaterialMaps* maps;               // the material's textures
         const Object* object;                   // the scene's object; none for a light marker
         std::optional<std::size_t> markedLight;  // the light a marker follows
+        Bounds meshBounds;   // object space; empty for light markers, which cast no shadows
+        Bounds worldBounds;  // for culling depth-only passes against a light's volume
     };
 
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
+    void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
     void addLightMarkers(float radius);
     void poseDraws();
     void packLights();
@@ -119,6 +133,8 @@ private:
     std::vector<DrawItem> draws_;
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;
+    std::uint64_t transformsVersion_ = 0;
+    double posedTime_ = 0.0;  // the time the draws were last posed at
     FrameUniforms frame_{};
     gl::Buffer vertices_;
     gl::Buffer indices_;

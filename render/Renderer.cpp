@@ -30,7 +30,7 @@ void checkSize(int width, int height)
 
 Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height,
                    GBufferLayout gbufferLayout)
-    : gpuScene_(scene, lights), gbufferLayout_(gbufferLayout)
+    : gpuScene_(scene, lights), gbufferLayout_(gbufferLayout), ambientOcclusion_(scene.ssao)
 {
     resize(width, height);
 }
@@ -55,6 +55,7 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         glBindImageTexture(0, targets_->lightEvaluations.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     }
     profiler_.beginFrame();
+    prepareShadowing(view);
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
         technique.render(gpuScene_, *targets_, profiler_);
@@ -68,17 +69,40 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         targets_->litFramebuffer.bind();
         gpuScene_.bind();
         targets_->gbuffer.bindForReading();
-        if (!viewProgram_)
-            viewProgram_ = gl::Program("gbuffer view",
-                                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}},
-                                       gbufferDefines(gbufferLayout_));
-        viewProgram_.set(0, static_cast<int>(view));
-        drawCoveredPixels(viewProgram_);
+        if (view == ViewMode::Shadow || view == ViewMode::Ssao) {
+            if (!shadowingViewProgram_)
+                shadowingViewProgram_ =
+                    gl::Program("shadowing view", {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                   {GL_FRAGMENT_SHADER, "shadowing_view.frag"}},
+                                gbufferDefines(gbufferLayout_));
+            shadowingViewProgram_.set(0, static_cast<int>(view));
+            drawCoveredPixels(shadowingViewProgram_);
+        } else {
+            if (!viewProgram_)
+                viewProgram_ = gl::Program(
+                    "gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}},
+                    gbufferDefines(gbufferLayout_));
+            viewProgram_.set(0, static_cast<int>(view));
+            drawCoveredPixels(viewProgram_);
+        }
     }
     FrameSample sample = profiler_.endFrame();
     if (countWork_)
         countWork();
     return sample;
+}
+
+void Renderer::prepareShadowing(ViewMode view)
+{
+    shadowMaps_.update(gpuScene_, profiler_);
+    // The ssao view shows the occlusion the scene's settings would give, even where the scene
+    // leaves it off.
+    if (ambientOcclusion_.enabled || view == ViewMode::Ssao) {
+        if (!ssao_)
+            ssao_ = std::make_unique<Ssao>(gbufferLayout_);
+        ssao_->run(gpuScene_, *targets_, ambientOcclusion_, profiler_);
+    }
+    shadowMaps_.bind(ambientOcclusion_.enabled);
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include "render/GpuScene.h"
 #include "render/Image.h"
 #include "render/PassProfiler.h"
+#include "render/ShadowMaps.h"
+#include "render/Ssao.h"
 #include "render/Technique.h"
 #include "render/Views.h"
 #include "render/VolumeDrawer.h"
@@ -56,6 +58,11 @@ public:
     // Which pixels of the last frame hold a surface.
     std::vector<bool> readCoverage() const;
 
+    // Shadows (the viewer's switches and the --shadow-lights budget) and ambient occlusion
+    // (on when the scene enables it; the viewer may change any setting).
+    ShadowMaps& shadowMaps() { return shadowMaps_; }
+    AmbientOcclusion& ambientOcclusion() { return ambientOcclusion_; }
+
     const GpuScene& gpuScene() const { return gpuScene_; }
     int width() const { return targets_->width; }
     int height() const { return targets_->height; }
@@ -74,6 +81,11 @@ private:
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
     gl::Program overlayProgram_;
     PassProfiler profiler_;
+    ShadowMaps shadowMaps_;
+    AmbientOcclusion ambientOcclusion_;
+    std::unique_ptr<Ssao> ssao_;  // made on first use
+    gl::Program shadowingViewProgram_;  // made on first use of the shadow and ssao views
+    void prepareShadowing(ViewMode view);
     bool countWork_ = false;
     WorkCounts workCounts_;
     ViewMode lastView_ = ViewMode::Final;

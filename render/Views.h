@@ -21,6 +21,8 @@ enum class ViewMode {
     Depth = 6,
     LightCount = 7,  // light evaluations per pixel (a heat map in PNG)
     Volumes = 8,     // the final image with every light's volume as a wireframe
+    Shadow = 9,      // the directional light's shadow factor (1 lit, 0 umbra; 1 without shadows)
+    Ssao = 10,       // the blurred ambient-occlusion factor (1 open, 0 occluded)
 };
 
 // Whether the view shows a G-buffer quantity (rendered by the geometry pass alone).

@@ -168,6 +168,14 @@ struct EncodedImage {
     std::vector<unsigned char> bytes;
 };
 
+// Screen-space ambient occlusion of the ambient term (`ssao` in the scene file;
+// docs/shadows.md). Off unless the scene asks for it: SPEC.md §2 has no occlusion term.
+struct AmbientOcclusion {
+    bool enabled = false;
+    float radius = 0.5f;    // world units: how far around a point occluders count
+    float strength = 1.0f;  // ao = clamp(1 − strength · occluded fraction, 0, 1)
+};
+
 // Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
 inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
 
@@ -177,6 +185,7 @@ struct Scene {
     glm::vec3 background{0.0f};
     glm::vec3 ambient{0.0f};
     std::optional<DirectionalLight> directional;
+    AmbientOcclusion ssao;
     float attenuationThreshold = kDefaultAttenuationThreshold;
     std::vector<Light> lights;       // explicit lights
     std::vector<LightSet> lightSets;  // generated lights (see expandLights)

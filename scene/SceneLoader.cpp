@@ -383,7 +383,7 @@ public:
         if (!root.is_object())
             fail(top, "the top level must be a JSON object, got " + describeType(root));
         expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights",
-                         "light_sets", "materials", "objects", "light_markers"});
+                         "light_sets", "materials", "objects", "light_markers", "ssao"});
         if (const auto node = member(top, "camera"))
             readCamera(*node);
         if (const auto node = member(top, "background"))
@@ -392,6 +392,8 @@ public:
             scene_.ambient = colour(*node);
         if (const auto node = member(top, "directional"))
             scene_.directional = readDirectional(*node);
+        if (const auto node = member(top, "ssao"))
+            scene_.ssao = readAmbientOcclusion(*node);
         if (const auto node = member(top, "attenuation_threshold"))
             scene_.attenuationThreshold = positive(*node);
         if (const auto node = member(top, "lights")) {
@@ -703,6 +705,20 @@ private:
         if (const auto shadows = member(node, "shadows"))
             light.shadows = boolean(*shadows);
         return light;
+    }
+
+    AmbientOcclusion readAmbientOcclusion(const Node& node) const
+    {
+        expectKeys(node, {"enabled", "radius", "strength"});
+        AmbientOcclusion ao;
+        ao.enabled = true;  // writing the block asks for it; "enabled": false keeps the settings
+        if (const auto enabled = member(node, "enabled"))
+            ao.enabled = boolean(*enabled);
+        if (const auto radius = member(node, "radius"))
+            ao.radius = positive(*radius);
+        if (const auto strength = member(node, "strength"))
+            ao.strength = nonNegative(*strength);
+        return ao;
     }
 
     LightType lightType(const Node& node, const char* what) const

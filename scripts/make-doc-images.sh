@@ -40,4 +40,14 @@ montage "$frames"/strip-0.png "$frames"/strip-1.png "$frames"/strip-2.png -tile 
   -background black $out/animation-strip.png
 # The benchmark scene of docs/performance.md at its reference light count.
 $ml render bench/courtyard.json -o $out/courtyard.png --size 640x360 --lights 1024
+# Shadows and SSAO (docs/shadows.md): one scene without and with them, and the two views.
+variants=$(mktemp -d)
+trap 'rm -rf "$variants"' EXIT
+scripts/shadow-scene-variants.py docs/scenes/shadows.json "$variants"
+$ml render "$variants/plain.json" -o $out/shadows-none.png --size 640x360
+$ml render "$variants/shadows.json" -o $out/shadows-directional.png --size 640x360
+$ml render "$variants/shadows.json" -o $out/shadows-all.png --size 640x360 --shadow-lights 3
+$ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 3
+$ml render "$variants/shadows.json" -o $out/view-shadow.png --size 640x360 --view shadow
+$ml render "$variants/both.json" -o $out/view-ssao.png --size 640x360 --view ssao
 echo "docs images written to $out"

@@ -16,7 +16,7 @@ void main()
     uint offset = clusterOffsets[cluster];
     uint count = clusterCounts[cluster];
     for (uint i = 0u; i < count; ++i)
-        color += shadeLocal(lights[clusterLightIndices[offset + i]], s, V);
+        color += shadeLocal(clusterLightIndices[offset + i], s, V);
     recordLightEvaluations(count);
     outColor = vec4(color, 1.0);
 }

@@ -11,7 +11,7 @@ void main()
     vec3 V = viewVector(s.position);
     vec3 color = shadeGlobal(s, V);
     for (uint i = 0u; i < frame.counts.x; ++i)
-        color += shadeLocal(lights[i], s, V);
+        color += shadeLocal(i, s, V);
     recordLightEvaluations(frame.counts.x);
     outColor = vec4(color, 1.0);
 }

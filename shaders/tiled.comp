@@ -126,11 +126,11 @@ void main()
         // More lights reach the tile than its list holds: nothing is dropped, the tile's
         // pixels evaluate every light instead (slow, and reported in --stats).
         for (uint i = 0u; i < frame.counts.x; ++i)
-            color += shadeLocal(lights[i], s, V);
+            color += shadeLocal(i, s, V);
         recordLightEvaluationsAt(pixel, frame.counts.x);
     } else {
         for (uint i = 0u; i < count; ++i)
-            color += shadeLocal(lights[tileLights[i]], s, V);
+            color += shadeLocal(tileLights[i], s, V);
         recordLightEvaluationsAt(pixel, count);
     }
     imageStore(litImage, pixel, vec4(color, 1.0));

@@ -27,11 +27,11 @@ void main()
     for (uint i = 0u; i < MAX_TILE_LIGHTS; ++i) {
         if (i == count)
             break;
-        color += shadeLocal(lights[tileLights[first + i]], s, V);
+        color += shadeLocal(tileLights[first + i], s, V);
     }
 #else
     for (uint i = 0u; i < count; ++i)
-        color += shadeLocal(lights[tileLights[first + i]], s, V);
+        color += shadeLocal(tileLights[first + i], s, V);
 #endif
     recordLightEvaluations(count);
     outColor = vec4(color, 0.0);

@@ -10,6 +10,6 @@ layout(location = 0) out vec4 outColor;
 void main()
 {
     Surface s = gbufferSurface(ivec2(gl_FragCoord.xy));
-    outColor = vec4(shadeLocal(lights[lightIndex], s, viewVector(s.position)), 0.0);
+    outColor = vec4(shadeLocal(lightIndex, s, viewVector(s.position)), 0.0);
     recordLightEvaluations(1u);
 }

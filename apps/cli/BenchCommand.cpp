@@ -77,6 +77,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                     ImageSize size, const BenchOptions& options)
 {
     Renderer renderer(scene, lights, size.width, size.height, options.gbufferLayout);
+    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     std::unique_ptr<Technique> technique = makeTechnique(techniqueName, {.gbufferLayout = options.gbufferLayout});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
     for (int i = 0; i < options.warmup; ++i)
@@ -407,6 +408,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             "--gbuffer", [&options](const std::string& name) { options.gbufferLayout = *parseGBufferLayout(name); },
             "G-buffer layout of the deferred techniques (seed or compact; default compact)")
         ->check(CLI::IsMember({"seed", "compact"}));
+    bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
+        ->check(CLI::Range(0, kMaxShadowLights))
+        ->capture_default_str();
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;

@@ -29,6 +29,7 @@ struct BenchOptions {
     // counts at that size are skipped: a sweep to a million lights need not wait hours for
     // forward. 0: no budget.
     double budgetMs = 0.0;
+    int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
 };
 
 // Adds the `bench` subcommand to `app`; what it parses lands in `options`. Malformed values

@@ -80,6 +80,13 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_option("--gbuffer", gbufferLayout, "G-buffer layout of the deferred techniques")
         ->check(CLI::IsMember({"seed", "compact"}))
         ->capture_default_str();
+    renderCommand
+        ->add_option("--shadow-lights", render.shadowLights,
+                     "Local lights that cast shadows (chosen by screen coverage x intensity)")
+        ->check(CLI::Range(0, kMaxShadowLights))
+        ->capture_default_str();
+    renderCommand->add_flag("--rebuild-shadows", render.rebuildShadows,
+                            "Render every shadow map every frame instead of reusing unchanged ones (to time them)");
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 

@@ -35,6 +35,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["height"] = options.height;
     stats["lights"] = lightCount;
     stats["frames"] = frames.size();
+    stats["shadow_lights"] = options.shadowLights;
     stats["warmup_frames"] = kWarmupFrames;
     const auto summaryJson = [](const std::vector<double>& values) {
         const Statistics summary = summarize(values);
@@ -125,6 +126,8 @@ void runRender(const RenderOptions& options)
     renderer.setTime(options.time);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
+    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
+    renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
     std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork, .gbufferLayout = options.gbufferLayout});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 

@@ -26,6 +26,8 @@ struct RenderOptions {
     // frame of the range at `fps` is written.
     std::optional<TimeRange> timeRange;
     double fps = 30.0;
+    int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
+    bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -3,6 +3,7 @@
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
+#include "lib/shadows.glsl"
 
 struct Surface {
     vec3 position;  // world space
@@ -23,11 +24,13 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
     return frame.terms.y * s.diffuse * NdotL + frame.terms.z * s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
 }
 
-// The light-independent terms: ke + ambient ⊙ kd + the directional light.
+// The light-independent terms: ke + ambient ⊙ kd · ao + the directional light times its
+// shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off).
 vec3 shadeGlobal(Surface s, vec3 V)
 {
-    vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * s.diffuse;
-    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V);
+    vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * s.diffuse * ambientOcclusion(s.position);
+    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V) *
+             directionalShadow(s.position);
     return color;
 }
 
@@ -51,13 +54,16 @@ vec4 lightReach(GpuLight light, vec3 position)
     return vec4(-toSurface, A * S);
 }
 
-// intensity ⊙ brdf(L) · A(d) · S for one point or spot light; exactly zero where A·S is zero.
-vec3 shadeLocal(GpuLight light, Surface s, vec3 V)
+// intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, times its shadow factor when it
+// has a shadow map (lib/shadows.glsl); exactly zero where A·S is zero.
+vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
 {
+    GpuLight light = lights[lightIndex];
     vec4 reach = lightReach(light, s.position);
     if (reach.w == 0.0)
         return vec3(0.0);
-    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w;
+    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w *
+           localShadow(lightIndex, light.positionRadius.xyz, s.position);
 }
 
 // Work counting (--count-work): the shaders of each technique report how many (pixel,

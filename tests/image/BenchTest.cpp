@@ -159,6 +159,8 @@ TEST_P(BenchUsage, ExitsTwoAndWritesNothing)
 INSTANTIATE_TEST_SUITE_P(
     Cases, BenchUsage,
     ::testing::Values(UsageCase{"lights_not_a_number", {"--lights", "abc"}, "--lights"},
+                      UsageCase{"shadow_lights_negative", {"--shadow-lights", "-2"}, "--shadow-lights"},
+                      UsageCase{"shadow_lights_too_many", {"--shadow-lights", "1000"}, "--shadow-lights"},
                       UsageCase{"lights_one_bad_entry", {"--lights", "16,x"}, "--lights"},
                       UsageCase{"lights_negative", {"--lights", "16,-4"}, "--lights"},
                       UsageCase{"lights_repeated", {"--lights", "16,16"}, "lists 16 twice"},

@@ -88,7 +88,12 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"malformed_size", "", {"--size", "1280by720"}, 2, {"--size"}},
         FailureCase{"absurd_size", "", {"--size", "100000x100000"}, 2, {"--size"}},
         FailureCase{"zero_frames", "", {"--frames", "0"}, 2, {"--frames"}},
-        FailureCase{"negative_lights", "", {"--lights", "-5"}, 2, {"--lights"}}),
+        FailureCase{"negative_lights", "", {"--lights", "-5"}, 2, {"--lights"}},
+        FailureCase{"negative_shadow_lights", "", {"--shadow-lights", "-1"}, 2, {"--shadow-lights"}},
+        FailureCase{"too_many_shadow_lights", "", {"--shadow-lights", "257"}, 2, {"--shadow-lights"}},
+        FailureCase{"shadow_lights_not_a_number", "", {"--shadow-lights", "all"}, 2, {"--shadow-lights"}},
+        FailureCase{"ssao_radius_zero", std::string("{\"ssao\": {\"radius\": 0}, ") + kPlane + "}", {}, 1,
+                    {"scene.json", "/ssao/radius"}}),
     [](const ::testing::TestParamInfo<FailureCase>& param) { return param.param.name; });
 
 TEST(Cli, MissingSceneFileIsOneLineExitOne)

@@ -174,7 +174,11 @@ INSTANTIATE_TEST_SUITE_P(
                                     {"--size", "200x120"}, true},
                       // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
                       AgreementCase{"bunny_teapot_models", MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
-                                    {"--size", "160x90", "--lights", "512"}}),
+                                    {"--size", "160x90", "--lights", "512"}},
+                      // Shadows (directional, spot maps, cube maps for points and wide spots)
+                      // and SSAO: every technique samples the same maps at the same positions.
+                      AgreementCase{"shadows_and_ssao", kScenes + "shadows_and_ssao.json",
+                                    {"--size", "160x120", "--shadow-lights", "24"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace

@@ -257,6 +257,22 @@ TEST(SceneLoader, MeshesAreShared)
     EXPECT_NEAR(torus.max.y, 0.25f, 1e-3f);
 }
 
+TEST(SceneLoader, AmbientOcclusionSettings)
+{
+    // Off by default (SPEC.md §2 has no occlusion term); the block turns it on unless it says
+    // "enabled": false.
+    EXPECT_FALSE(parse("{}").ssao.enabled);
+    const Scene on = parse(R"json({"ssao": {"radius": 0.75, "strength": 2}})json");
+    EXPECT_TRUE(on.ssao.enabled);
+    EXPECT_FLOAT_EQ(on.ssao.radius, 0.75f);
+    EXPECT_FLOAT_EQ(on.ssao.strength, 2.0f);
+    const Scene defaults = parse(R"json({"ssao": {}})json");
+    EXPECT_TRUE(defaults.ssao.enabled);
+    EXPECT_FLOAT_EQ(defaults.ssao.radius, 0.5f);
+    EXPECT_FLOAT_EQ(defaults.ssao.strength, 1.0f);
+    EXPECT_FALSE(parse(R"json({"ssao": {"enabled": false, "radius": 1}})json").ssao.enabled);
+}
+
 TEST(SceneLoader, LightDefaultsAndOptionalKeys)
 {
     const Scene scene = parse(R"json({
@@ -543,6 +559,14 @@ const std::vector<BadScene> kBadScenes = {
      ": /directional/shadows: ", "expected true or false, got a string"},
     {"DirectionalZero", R"json({"directional": {"direction": [0, 0, 0], "intensity": [1, 1, 1]}})json",
      ": /directional/direction: ", "must be a non-zero vector"},
+
+    // Ambient occlusion.
+    {"SsaoNotObject", R"json({"ssao": true})json", ": /ssao: ", "expected an object"},
+    {"SsaoRadiusZero", R"json({"ssao": {"radius": 0}})json", ": /ssao/radius: ", "must be > 0, got 0"},
+    {"SsaoStrengthNegative", R"json({"ssao": {"strength": -1}})json", ": /ssao/strength: ", "must be >= 0, got -1"},
+    {"SsaoEnabledNotBool", R"json({"ssao": {"enabled": 1}})json", ": /ssao/enabled: ",
+     "expected true or false, got a number"},
+    {"SsaoTypo", R"json({"ssao": {"radious": 1}})json", ": /ssao/radious: ", "unknown key 'radious'"},
 
     // Lights.
     {"LightsNotArray", R"json({"lights": {}})json", ": /lights: ", "expected an array, got an object"},

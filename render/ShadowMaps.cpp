@@ -1,0 +1,411 @@
+#include "render/ShadowMaps.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/GpuScene.h"
+#include "render/PassProfiler.h"
+#include "core/Error.h"
+#include "scene/ShadowSelection.h"
+
+namespace manylights {
+
+namespace {
+
+// Slope-scaled depth bias of the map (glPolygonOffset): the 3x3 filter of
+// shaders/lib/shadows.glsl, with bilinear taps, compares a receiver's depth with map texels
+// up to 2 texels away, where a surface tilted to the light is deeper by up to 2 × its depth
+// slope per texel; a factor of 3 covers that with a texel to spare. The constant part (in
+// units of the 24-bit depth's resolution, 2^-24 of the map's depth range) covers the float
+// rounding of the two depth computations (caster raster, receiver transform), a few 1e-7.
+constexpr float kSlopeScaledBias = 3.0f;
+constexpr float kConstantBiasUnits = 16.0f;
+// The filter's reach beyond a visible surface's texel (3x3 taps, each bilinear).
+constexpr float kFilterReachTexels = 2.0f;
+// Location of the light's view-projection in shaders/shadow_depth.vert.
+constexpr GLint kLightViewProjectionLocation = 20;
+
+// A depth texture read with hardware comparison and bilinear percentage-closer filtering;
+// outside the map it compares as lit (border depth 1).
+gl::Texture2D makeShadowTexture(std::string_view label, int size)
+{
+    gl::Texture2D texture(label, GL_DEPTH_COMPONENT24, size, size);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const std::array<float, 4> farthest = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, farthest.data());
+    return texture;
+}
+
+// NDC [-1, 1]³ → [0, 1]³ (texture coordinates and window depth).
+const glm::mat4 kNdcToUnit =
+    glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+}  // namespace
+
+glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBounds,
+                               const glm::mat4& cameraViewProjection, int mapSize, float padTexels)
+{
+    const glm::vec3 forward = glm::normalize(direction);
+    const glm::vec3 up = std::abs(forward.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::mat4 lightView = glm::lookAt(glm::vec3(0.0f), forward, up);
+    const Bounds scene = transformedBounds(sceneBounds, lightView);
+    // The camera's frustum in light space: its eight corners.
+    const glm::mat4 cameraInverse = glm::inverse(cameraViewProjection);
+    Bounds frustum;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 ndc((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f,
+                            1.0f);
+        const glm::vec4 world = cameraInverse * ndc;
+        frustum.extend(glm::vec3(lightView * (world / world.w)));
+    }
+    // Across the light: only what the camera can see (and the scene holds). Along it: the
+    // whole scene, so casters between the light and the view still cast.
+    glm::vec2 low = glm::max(glm::vec2(scene.min), glm::vec2(frustum.min));
+    glm::vec2 high = glm::min(glm::vec2(scene.max), glm::vec2(frustum.max));
+    if (low.x >= high.x || low.y >= high.y) {
+        low = glm::vec2(scene.min);
+        high = glm::vec2(scene.max);
+    }
+    const glm::vec2 pad = (high - low) * padTexels / (static_cast<float>(mapSize) - 2.0f * padTexels);
+    low -= pad;
+    high += pad;
+    // Surfaces exactly on the bounds must not be clipped by the near and far planes.
+    const float depthPad = 0.01f * (scene.max.z - scene.min.z) + 1e-3f;
+    const glm::mat4 projection =
+        glm::ortho(low.x, high.x, low.y, high.y, -(scene.max.z + depthPad), -(scene.min.z - depthPad));
+    return projection * lightView;
+}
+
+ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
+    : sizes_(sizes),
+      directionalMapSize_(sizes.directional),
+      depthProgram_("shadow depth",
+                    {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}),
+      uniformBuffer_("shadowing uniforms", sizeof(ShadowingUniforms), nullptr)
+{
+    // A 1x1 map until the directional light needs a real one: the shaders' sampler must
+    // always see a depth texture with comparison on, even when shadows are off. The local
+    // lights' arrays start with one layer for the same reason.
+    directionalMap_ = makeShadowTexture("directional shadow map (placeholder)", 1);
+    const float farthest = 1.0f;
+    glClearTexImage(directionalMap_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
+    ensureArrays(0, 0);
+    GLuint framebuffer = 0;
+    glCreateFramebuffers(1, &framebuffer);
+    localFramebuffer_ = gl::GlObject<gl::detail::deleteFramebuffer>(framebuffer);
+    gl::setLabel(GL_FRAMEBUFFER, framebuffer, "local shadow maps");
+    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+}
+
+void ShadowMaps::invalidate()
+{
+    directionalValid_ = false;
+    for (LocalSlot& slot : slots_)
+        slot.valid = false;
+}
+
+void ShadowMaps::update(const GpuScene& scene, PassProfiler& profiler)
+{
+    if (rebuildEveryFrame_)
+        invalidate();
+    const Scene& description = scene.scene();
+    const bool directional = directionalEnabled_ && description.directional && description.directional->shadows;
+    uniforms_.directionalShadowParams = glm::vec4(0.0f);
+    if (directional) {
+        const glm::mat4 lightViewProjection =
+            fitDirectionalShadow(description.directional->direction, scene.objectsWorldBounds(),
+                                 scene.frameUniforms().viewProjection, directionalMapSize_, kFilterReachTexels + 1.0f);
+        if (!directionalValid_ || lightViewProjection != directionalRenderedMatrix_ ||
+            scene.transformsVersion() != directionalRenderedVersion_)
+            renderDirectional(scene, lightViewProjection, profiler);
+        uniforms_.directionalShadowMatrix = kNdcToUnit * lightViewProjection;
+        uniforms_.directionalShadowParams = glm::vec4(1.0f, 1.0f / static_cast<float>(directionalMapSize_), 0.0f, 0.0f);
+    }
+    updateLocal(scene, profiler);
+}
+
+void ShadowMaps::renderDirectional(const GpuScene& scene, const glm::mat4& lightViewProjection, PassProfiler& profiler)
+{
+    if (directionalMap_.width() != directionalMapSize_) {
+        directionalMap_ = makeShadowTexture("directional shadow map", directionalMapSize_);
+        directionalFramebuffer_ = gl::Framebuffer("directional shadow map", {}, &directionalMap_);
+    }
+    auto pass = profiler.pass("shadow directional");
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    directionalFramebuffer_.bind();
+    glViewport(0, 0, directionalMapSize_, directionalMapSize_);
+    const float farthest = 1.0f;
+    glClearNamedFramebufferfv(directionalFramebuffer_.id(), GL_DEPTH, 0, &farthest);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
+    scene.bind();
+    depthProgram_.set(kLightViewProjectionLocation, lightViewProjection);
+    // Every object: an orthographic light has no volume to cull against beyond the fitted
+    // box, which the rasteriser clips.
+    scene.drawObjectsDepthOnly(depthProgram_, [](const Bounds&) { return true; });
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    directionalValid_ = true;
+    directionalRenderedMatrix_ = lightViewProjection;
+    directionalRenderedVersion_ = scene.transformsVersion();
+    ++passesRendered_;
+}
+
+namespace {
+
+bool sameLight(const GpuLight& a, const GpuLight& b)
+{
+    return a.positionRadius == b.positionRadius && a.intensityExponent == b.intensityExponent &&
+           a.attenuation == b.attenuation && a.spotAxisCosCutoff == b.spotAxisCosCutoff;
+}
+
+// Spot lights are packed with cos(cutoff) ≥ −1; point lights with −2 (render/GpuScene.cpp).
+bool isSpot(const GpuLight& light)
+{
+    return light.spotAxisCosCutoff.w >= -1.0f;
+}
+
+float cutoffDegrees(const GpuLight& light)
+{
+    return glm::degrees(std::acos(std::clamp(light.spotAxisCosCutoff.w, -1.0f, 1.0f)));
+}
+
+// The far plane of a local light's map: its radius, or for a light that reaches farther than
+// the scene, the scene's farthest corner (a little beyond, so it is not clipped).
+float shadowFar(const GpuLight& light, const Bounds& scene)
+{
+    const glm::vec3 p(light.positionRadius);
+    const glm::vec3 farthest = glm::max(glm::abs(scene.min - p), glm::abs(scene.max - p));
+    return std::min(light.positionRadius.w, 1.01f * glm::length(farthest) + 1e-3f);
+}
+// The near plane: objects closer to the light than this do not cast. A thousandth of the far
+// plane keeps the 24-bit depth's resolution near the far plane at about far / 16000.
+constexpr float kNearFraction = 1e-3f;
+// The spot map's field of view beyond the cone: room for the filter's taps at the cone's edge.
+constexpr float kSpotFovMarginDegrees = 2.0f;
+
+gl::GlObject<gl::detail::deleteTexture> makeDepthArray(GLenum target, std::string_view label, int size, int layers)
+{
+    GLuint name = 0;
+    glCreateTextures(target, 1, &name);
+    gl::GlObject<gl::detail::deleteTexture> texture(name);
+    gl::setLabel(GL_TEXTURE, name, label);
+    glTextureStorage3D(name, 1, GL_DEPTH_COMPONENT24, size, size, layers);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(name, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const float farthest = 1.0f;
+    glClearTexImage(name, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
+    return texture;
+}
+
+}  // namespace
+
+void ShadowMaps::ensureArrays(int spotLayers, int cubes)
+{
+    // With no slot of a kind, its array is a 1x1 placeholder; it grows (and loses its maps)
+    // when more layers are needed than it has.
+    if (!spotArray_ || (spotLayers > 0 && (spotArraySize_ != sizes_.spot || spotLayers > spotLayers_))) {
+        spotArraySize_ = spotLayers > 0 ? sizes_.spot : 1;
+        spotLayers_ = std::max(spotLayers, 1);
+        spotArray_ = makeDepthArray(GL_TEXTURE_2D_ARRAY, "spot shadow maps", spotArraySize_, spotLayers_);
+        for (LocalSlot& slot : slots_)
+            if (!slot.cube)
+                slot.valid = false;
+    }
+    if (!cubeArray_ || (cubes > 0 && (cubeArraySize_ != sizes_.cubeFace || cubes > cubes_))) {
+        cubeArraySize_ = cubes > 0 ? sizes_.cubeFace : 1;
+        cubes_ = std::max(cubes, 1);
+        cubeArray_ = makeDepthArray(GL_TEXTURE_CUBE_MAP_ARRAY, "point shadow maps", cubeArraySize_, 6 * cubes_);
+        for (LocalSlot& slot : slots_)
+            if (slot.cube)
+                slot.valid = false;
+    }
+}
+
+void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
+{
+    const std::vector<GpuLight>& lights = scene.packedLights();
+    lightCount_ = lights.size();
+    shadowedLights_.clear();
+    if (localBudget_ > 0) {
+        std::vector<ShadowCandidate> candidates;
+        candidates.reserve(lights.size());
+        for (const GpuLight& light : lights)
+            candidates.push_back(
+                {glm::vec3(light.positionRadius), light.positionRadius.w,
+                 std::max({light.intensityExponent.r, light.intensityExponent.g, light.intensityExponent.b})});
+        shadowedLights_ = selectShadowLights(candidates, scene.frameUniforms().viewProjection, localBudget_);
+    }
+
+    // A light that stays chosen keeps its slot (and its cached map); new ones take free layers.
+    std::vector<LocalSlot> kept;
+    std::vector<std::size_t> fresh;
+    for (std::size_t light : shadowedLights_) {
+        const bool cube = !isSpot(lights[light]) || cutoffDegrees(lights[light]) > kMaxSpotMapCutoffDegrees;
+        const auto old = std::find_if(slots_.begin(), slots_.end(),
+                                      [&](const LocalSlot& s) { return s.light == light && s.cube == cube; });
+        if (old != slots_.end())
+            kept.push_back(*old);
+        else
+            fresh.push_back(light);
+    }
+    for (std::size_t light : fresh) {
+        LocalSlot slot;
+        slot.light = light;
+        slot.cube = !isSpot(lights[light]) || cutoffDegrees(lights[light]) > kMaxSpotMapCutoffDegrees;
+        slot.layer = 0;
+        while (std::any_of(kept.begin(), kept.end(),
+                           [&](const LocalSlot& s) { return s.cube == slot.cube && s.layer == slot.layer; }))
+            ++slot.layer;
+        kept.push_back(slot);
+    }
+    slots_ = std::move(kept);
+    int spotLayers = 0;
+    int cubes = 0;
+    for (const LocalSlot& slot : slots_) {
+        int& layers = slot.cube ? cubes : spotLayers;
+        layers = std::max(layers, slot.layer + 1);
+    }
+    ensureArrays(spotLayers, cubes);
+
+    for (LocalSlot& slot : slots_) {
+        if (slot.valid && sameLight(slot.renderedFor, lights[slot.light]) &&
+            slot.renderedVersion == scene.transformsVersion())
+            continue;
+        auto pass = profiler.pass(slot.cube ? "shadow point" : "shadow spot");
+        slot.cube ? renderCube(scene, slot) : renderSpot(scene, slot);
+        slot.renderedFor = lights[slot.light];
+        slot.renderedVersion = scene.transformsVersion();
+        slot.valid = true;
+    }
+    uniforms_.localShadowParams =
+        glm::vec4(slots_.empty() ? 0.0f : 1.0f, 1.0f / static_cast<float>(sizes_.spot),
+                  1.0f / static_cast<float>(sizes_.cubeFace), 0.0f);
+}
+
+void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
+{
+    const GpuLight& light = scene.packedLights()[slot.light];
+    const glm::vec3 position(light.positionRadius);
+    const glm::vec3 axis(light.spotAxisCosCutoff);
+    const float cutoff = cutoffDegrees(light);
+    const float far = shadowFar(light, scene.objectsWorldBounds());
+    const glm::vec3 up = std::abs(axis.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::mat4 viewProjection =
+        glm::perspective(glm::radians(2.0f * cutoff + kSpotFovMarginDegrees), 1.0f, kNearFraction * far, far) *
+        glm::lookAt(position, position + axis, up);
+    renderDepth(scene, spotArray_.id(), slot.layer, sizes_.spot, viewProjection, [&](const Bounds& box) {
+        return boxMayIntersectCone(box, position, axis, cutoff, far);
+    });
+    slot.gpu.viewProjection = viewProjection;
+    slot.gpu.params = glm::vec4(1.0f, static_cast<float>(slot.layer), kNearFraction * far, far);
+}
+
+void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
+{
+    const GpuLight& light = scene.packedLights()[slot.light];
+    const glm::vec3 position(light.positionRadius);
+    const float far = shadowFar(light, scene.objectsWorldBounds());
+    const float near = kNearFraction * far;
+    // The faces in GL's order (+X, −X, +Y, −Y, +Z, −Z) with the up vectors that make a 90°
+    // perspective view of each match the cube map's texture coordinates.
+    const std::array<std::pair<glm::vec3, glm::vec3>, 6> faces = {{
+        {{1, 0, 0}, {0, -1, 0}},
+        {{-1, 0, 0}, {0, -1, 0}},
+        {{0, 1, 0}, {0, 0, 1}},
+        {{0, -1, 0}, {0, 0, -1}},
+        {{0, 0, 1}, {0, -1, 0}},
+        {{0, 0, -1}, {0, -1, 0}},
+    }};
+    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+    const auto inRange = [&](const Bounds& box) { return boxIntersectsSphere(box, position, far); };
+    for (int face = 0; face < 6; ++face)
+        renderDepth(scene, cubeArray_.id(), slot.layer * 6 + face, sizes_.cubeFace,
+                    projection * glm::lookAt(position, position + faces[face].first, faces[face].second), inRange);
+    slot.gpu.viewProjection = glm::mat4(1.0f);
+    slot.gpu.params = glm::vec4(2.0f, static_cast<float>(slot.layer), near, far);
+}
+
+void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, int size,
+                             const glm::mat4& viewProjection,
+                             const std::function<bool(const Bounds&)>& keep)
+{
+    const GLuint framebuffer = localFramebuffer_.id();
+    glNamedFramebufferTextureLayer(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0, layer);
+    ML_ASSERT(glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, size, size);
+    const float farthest = 1.0f;
+    glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &farthest);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
+    scene.bind();
+    depthProgram_.set(kLightViewProjectionLocation, viewProjection);
+    scene.drawObjectsDepthOnly(depthProgram_, keep);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    ++passesRendered_;
+}
+
+void ShadowMaps::bind(bool ambientOcclusion)
+{
+    uniforms_.occlusionParams = glm::vec4(ambientOcclusion ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    uniformBuffer_.update(0, sizeof(ShadowingUniforms), &uniforms_);
+    uniformBuffer_.bindBase(GL_UNIFORM_BUFFER, kShadowingUniformBinding);
+    directionalMap_.bindUnit(kDirectionalShadowUnit);
+    glBindTextureUnit(kSpotShadowUnit, spotArray_.id());
+    glBindTextureUnit(kPointShadowUnit, cubeArray_.id());
+
+    // Which slot each light has: rewritten only when the chosen lights change (it holds an
+    // entry for every light, which may be a million). Never empty: a buffer bound to a storage
+    // block must have storage.
+    std::vector<std::size_t> slotLights;
+    for (const LocalSlot& slot : slots_)
+        slotLights.push_back(slot.light);
+    const std::size_t lightCount = std::max<std::size_t>(lightCount_, 1);
+    if (slotOfLightCapacity_ != lightCount || slotLights != uploadedSlotLights_) {
+        std::vector<std::int32_t> slotOfLight(lightCount, -1);
+        for (std::size_t i = 0; i < slotLights.size(); ++i)
+            slotOfLight[slotLights[i]] = static_cast<std::int32_t>(i);
+        slotOfLightBuffer_ = gl::Buffer("shadow slot of each light", slotOfLight.size() * sizeof(std::int32_t),
+                                        slotOfLight.data(), 0);
+        slotOfLightCapacity_ = lightCount;
+        uploadedSlotLights_ = std::move(slotLights);
+    }
+    // The slots themselves: a few dozen bytes each, every frame.
+    std::vector<GpuShadowSlot> slots(std::max<std::size_t>(slots_.size(), 1));
+    for (std::size_t i = 0; i < slots_.size(); ++i)
+        slots[i] = slots_[i].gpu;
+    if (slotsCapacity_ < slots.size()) {
+        slotsBuffer_ = gl::Buffer("shadow slots", slots.size() * sizeof(GpuShadowSlot), nullptr);
+        slotsCapacity_ = slots.size();
+    }
+    slotsBuffer_.update(0, slots.size() * sizeof(GpuShadowSlot), slots.data());
+    slotOfLightBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowSlotOfLightBinding);
+    slotsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowSlotsBinding);
+}
+
+}  // namespace manylights
