@@ -22,6 +22,10 @@
 
 namespace manylights {
 
+// The most local lights --shadow-lights (and the viewer) may give shadow maps: a cube map of
+// 512² faces is 4.5 MiB of depth, so 256 of them already take over a GiB.
+inline constexpr int kMaxShadowLights = 256;
+
 class GpuScene;
 class PassProfiler;
 

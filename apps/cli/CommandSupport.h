@@ -6,15 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "render/ShadowMaps.h"  // kMaxShadowLights
+
 namespace manylights {
 
 // Far beyond any display, and small enough that width · height · bytes per pixel stays
 // within 64-bit sizes; the GL implementation's own limit is checked when rendering.
 inline constexpr int kMaxImageDimension = 32768;
-
-// The most local lights --shadow-lights may give shadow maps: a cube map of 512² faces is 4.5
-// MiB of depth, so 256 of them already take over a GiB.
-inline constexpr int kMaxShadowLights = 256;
 
 struct ImageSize {
     int width = 0;

@@ -18,7 +18,7 @@ struct ScriptCommand {
         Pause,       // pause
         Play,        // play
         Speed,       // speed FACTOR
-        Toggle,      // toggle ambient|diffuse|specular|axes|wireframe|panel
+        Toggle,      // toggle ambient|diffuse|specular|axes|wireframe|shadows|ssao|panel
         Key,         // key NAME: as if the key were pressed for one frame (docs/viewer.md)
         Screenshot,  // screenshot FILE.png: the window's image of the next frame, panel hidden
         WaitFor,     // wait-for FILE: keep drawing frames until FILE exists (to pace a test)

@@ -134,6 +134,8 @@ private:
     bool axes_ = false;
     bool wireframe_ = false;
     bool panel_ = true;
+    bool directionalShadows_ = true;  // where the scene's directional light asks for them
+    int shadowLights_ = 0;            // local lights with shadow maps (--shadow-lights)
     bool quit_ = false;
 
     std::deque<float> frameMs_;
@@ -391,6 +393,8 @@ void Viewer::runScript()
                          : what == "specular" ? specular_
                          : what == "axes"     ? axes_
                          : what == "wireframe" ? wireframe_
+                         : what == "shadows"   ? directionalShadows_
+                         : what == "ssao"      ? renderer_->ambientOcclusion().enabled
                                                : panel_;
             flag = !flag;
             break;
@@ -462,6 +466,8 @@ void Viewer::renderScene()
     renderer_->refreshCamera();
     renderer_->setTime(time_);
     renderer_->setLightingTerms({ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f});
+    renderer_->shadowMaps().setDirectionalShadows(directionalShadows_);
+    renderer_->shadowMaps().setLocalLightBudget(shadowLights_);
     renderer_->setCountWork(view_ == ViewMode::LightCount);
     Technique& current = technique();
     // Only the final image: the G-buffer views draw full-screen triangles that must stay filled.
@@ -568,6 +574,14 @@ void Viewer::drawPanel()
     ImGui::Checkbox("axes (X)", &axes_);
     ImGui::SameLine();
     ImGui::Checkbox("wireframe (L)", &wireframe_);
+
+    ImGui::Separator();
+    ImGui::Checkbox("directional shadows", &directionalShadows_);
+    ImGui::SliderInt("shadowed lights", &shadowLights_, 0, kMaxShadowLights);
+    AmbientOcclusion& occlusion = renderer_->ambientOcclusion();
+    ImGui::Checkbox("SSAO", &occlusion.enabled);
+    ImGui::SliderFloat("SSAO radius", &occlusion.radius, 0.05f, 4.0f, "%.2f");
+    ImGui::SliderFloat("SSAO strength", &occlusion.strength, 0.0f, 2.0f, "%.2f");
 
     ImGui::Separator();
     ImGui::Checkbox("pause (P)", &paused_);
