@@ -14,32 +14,6 @@
 
 namespace manylights {
 
-namespace {
-
-constexpr int kExitFailure = 1;
-constexpr int kExitUsage = 2;
-
-// Runs a parsed command: a user-facing failure is one line on stderr and exit status 1.
-template <typename Command>
-int reportingErrors(Command command, const std::string& activity)
-{
-    try {
-        command();
-    } catch (const Error& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "manylights: out of memory %s\n", activity.c_str());
-        return kExitFailure;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    }
-    return 0;
-}
-
-}  // namespace
-
 int runCli(int argc, const char* const* argv)
 {
     CLI::App app{"manylights: many-light deferred rendering techniques, side by side", "manylights"};
@@ -93,14 +67,8 @@ int runCli(int argc, const char* const* argv)
     BenchOptions bench;
     CLI::App* benchCommand = addBenchCommand(app, bench);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& help) {
-        return app.exit(help);
-    } catch (const CLI::ParseError& error) {
-        app.exit(error);
-        return kExitUsage;
-    }
+    if (const std::optional<int> status = parseCommandLine(app, argc, argv))
+        return *status;
 
     if (benchCommand->parsed())
         return reportingErrors([&] { runBench(bench); }, "benchmarking");

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <regex>
 
+#include <CLI/CLI.hpp>
+
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 
@@ -54,6 +56,19 @@ void checkWritable(const std::string& path, const std::string& what)
         throw Error(path + ": cannot write " + what + ": " + std::strerror(errno));
     std::fclose(file);
     std::remove(temporary.c_str());
+}
+
+std::optional<int> parseCommandLine(CLI::App& app, int argc, const char* const* argv)
+{
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return kExitUsage;
+    }
+    return std::nullopt;
 }
 
 }  // namespace manylights

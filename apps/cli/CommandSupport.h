@@ -3,12 +3,49 @@
 // report the same statistics.
 #pragma once
 
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/Error.h"
+
 #include "render/ShadowMaps.h"  // kMaxShadowLights
 
+namespace CLI {
+class App;
+}
+
 namespace manylights {
+
+// Exit statuses of SPEC.md §3 (0 on success).
+inline constexpr int kExitFailure = 1;  // a bad scene, a broken asset, no OpenGL context, ...
+inline constexpr int kExitUsage = 2;    // a bad command line
+
+// Parses the command line into `app`'s options. Returns the status to exit with at once (0
+// after --help; kExitUsage, the message printed, for a bad command line) or nothing to go on.
+std::optional<int> parseCommandLine(CLI::App& app, int argc, const char* const* argv);
+
+// Runs a parsed command: a user-facing failure is one line on stderr and exit status 1.
+template <typename Command>
+int reportingErrors(Command command, const std::string& activity)
+{
+    try {
+        command();
+    } catch (const Error& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "manylights: out of memory %s\n", activity.c_str());
+        return kExitFailure;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "manylights: %s\n", error.what());
+        return kExitFailure;
+    }
+    return 0;
+}
 
 // Far beyond any display, and small enough that width · height · bytes per pixel stays
 // within 64-bit sizes; the GL implementation's own limit is checked when rendering.

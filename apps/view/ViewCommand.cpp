@@ -14,11 +14,6 @@
 
 namespace manylights {
 
-namespace {
-constexpr int kExitFailure = 1;
-constexpr int kExitUsage = 2;
-}  // namespace
-
 int runViewCommand(int argc, const char* const* argv)
 {
     CLI::App app{"manylights view: the scene in a window (docs/viewer.md)", "manylights view"};
@@ -39,14 +34,8 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_option("--shader-dir", options.shaderDirectory,
                    "Compile shaders from this directory and reload them when they change ('' for the embedded ones)")
         ->capture_default_str();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& help) {
-        return app.exit(help);
-    } catch (const CLI::ParseError& error) {
-        app.exit(error);
-        return kExitUsage;
-    }
+    if (const std::optional<int> status = parseCommandLine(app, argc, argv))
+        return *status;
     ImageSize windowSize;
     if (std::string problem = parseSize(size, windowSize); !problem.empty()) {
         std::fprintf(stderr, "manylights: %s\n", problem.c_str());
@@ -54,19 +43,7 @@ int runViewCommand(int argc, const char* const* argv)
     }
     options.width = windowSize.width;
     options.height = windowSize.height;
-    try {
-        runView(options);
-    } catch (const Error& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "manylights: out of memory in the viewer\n");
-        return kExitFailure;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
-        return kExitFailure;
-    }
-    return 0;
+    return reportingErrors([&] { runView(options); }, "in the viewer");
 }
 
 }  // namespace manylights

@@ -11,6 +11,7 @@
 #include "scene/LightSets.h"
 #include "scene/Revolution.h"
 #include "scene/Transform.h"
+#include "tests/unit/SharedDefaultScene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -41,19 +42,8 @@ constexpr float kPositionTolerance = 1e-4f;
 
 class DefaultSceneOverTime : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { scene_ = new Scene(makeDefaultScene()); }
-    static void TearDownTestSuite()
-    {
-        delete scene_;
-        scene_ = nullptr;
-    }
-    static const Scene& scene() { return *scene_; }
-
-private:
-    static Scene* scene_;
+    static const Scene& scene() { return test::sharedDefaultScene(); }
 };
-
-Scene* DefaultSceneOverTime::scene_ = nullptr;
 
 TEST_F(DefaultSceneOverTime, HasEveryKindOfMotion)
 {

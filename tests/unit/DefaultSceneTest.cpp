@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unit/SharedDefaultScene.h"
+
 namespace manylights {
 namespace {
 
@@ -20,19 +22,8 @@ Bounds worldBoundsOf(const Scene& scene, const Object& object)
 
 class DefaultScene : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { scene_ = new Scene(makeDefaultScene()); }
-    static void TearDownTestSuite()
-    {
-        delete scene_;
-        scene_ = nullptr;
-    }
-    static const Scene& scene() { return *scene_; }
-
-private:
-    static Scene* scene_;
+    static const Scene& scene() { return test::sharedDefaultScene(); }
 };
-
-Scene* DefaultScene::scene_ = nullptr;
 
 TEST_F(DefaultScene, IsWellFormed)
 {
