@@ -20,6 +20,12 @@ $ml render tests/scenes/textured_normal_mapped.json -o $out/textured-normal-mapp
 $ml render tests/scenes/textured_normal_mapped.json -o $out/textured-normal-mapped-normals.png --size 640x384 \
   --view normal
 
+# The example scenes with real assets (scenes/, docs/scene-format.md "Model files").
+$ml render scenes/bunny-teapot.json -o $out/scene-bunny-teapot.png --size 640x360
+$ml render scenes/gltf-models.json -o $out/scene-gltf-models.png --size 640x360
+$ml render scenes/textured-normal-mapped.json -o $out/scene-textured-normal-mapped.png --size 640x384 \
+  --shadow-lights 2
+
 # The techniques side by side (docs/techniques.md).
 for technique in forward deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
