@@ -94,6 +94,8 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
         next += batch.itemCount;
     }
     EXPECT_EQ(next, gpuScene.drawItemCount());
+    RecordProperty("draw_items", static_cast<int>(gpuScene.drawItemCount()));
+    RecordProperty("draw_calls", static_cast<int>(gpuScene.batches().size()));
     // One draw per instanced mesh range, one for all the markers, one per single item.
     EXPECT_EQ(gpuScene.batches().size(), instancedRanges.size() + 1 + singleItems);
     EXPECT_LE(gpuScene.batches().size(), 20u);  // against 399 items: the point of instancing
