@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -32,6 +33,9 @@ Bounds objectSpaceBounds(const Object& object, const Bounds& meshBounds)
 // Binding points shared with the shaders (lib/frame.glsl, lib/lights.glsl).
 constexpr GLuint kFrameBinding = 0;
 constexpr GLuint kLightsBinding = 0;
+// lib/instances.glsl: the instance records and the uniform naming a draw's first record.
+constexpr GLuint kInstancesBinding = 8;
+constexpr GLint kInstanceBase = 33;
 // Point lights get cos(cutoff) = −2: every direction passes the spot test and S = 1.
 constexpr float kPointLightCosCutoff = -2.0f;
 // A light marker is small on screen: a coarse unit sphere is round enough.
@@ -94,7 +98,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         meshes.push_back(&mesh);
     Mesh markerSphere;
     if (scene.lightMarkerRadius) {
-        markerSphere = makeSphere(1.0f, kMarkerSlices, kMarkerStacks);
+        markerSphere = lightMarkerMesh();
         meshes.push_back(&markerSphere);
     }
     for (const Mesh* meshPointer : meshes) {
@@ -155,6 +159,10 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         draw.worldBounds = transformedBounds(draw.meshBounds, draw.model);
     if (scene.lightMarkerRadius)
         addLightMarkers(*scene.lightMarkerRadius);
+    groupDrawsIntoBatches();
+    instances_.resize(draws_.size());
+    instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance), nullptr,
+                                 GL_DYNAMIC_STORAGE_BIT);
 
     packedLights_.reserve(lights.size());
     for (const Light& light : lights)
@@ -165,6 +173,11 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
     setTime(0.0);
     setViewport(1, 1);
+}
+
+Mesh GpuScene::lightMarkerMesh()
+{
+    return makeSphere(1.0f, kMarkerSlices, kMarkerStacks);
 }
 
 void GpuScene::addLightMarkers(float radius)
@@ -185,6 +198,47 @@ void GpuScene::addLightMarkers(float radius)
         markerMaterials_.push_back(material);
         const glm::mat4 model = glm::scale(glm::mat4{1.0f}, glm::vec3{radius});
         draws_.push_back({model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i, Bounds{}, Bounds{}});
+    }
+}
+
+namespace {
+
+// Whether a draw item can share an instanced draw: material maps are bound per draw and a
+// surface of revolution has its own uniforms, so such items are drawn one at a time.
+bool instanceable(const Object* object, bool hasMaps)
+{
+    return !hasMaps && !(object && object->revolution);
+}
+
+}  // namespace
+
+void GpuScene::groupDrawsIntoBatches()
+{
+    // Items of one mesh range next to each other, in scene order within a range (a stable
+    // sort), so coplanar surfaces of one range tie under GL_LESS as before. Moving items of
+    // different ranges past each other could change which of two coplanar surfaces of
+    // different meshes wins a tie; no scene in the goldens and agreement tests has such a pair
+    // (their images are bit-identical to drawing in scene order). The order is fixed here,
+    // once; poses change only the records.
+    const auto rangeKey = [](const DrawItem& draw) {
+        return std::make_tuple(draw.range.baseVertex, draw.range.firstIndex, draw.range.indexCount);
+    };
+    std::stable_sort(draws_.begin(), draws_.end(),
+                     [&](const DrawItem& a, const DrawItem& b) { return rangeKey(a) < rangeKey(b); });
+    const auto canShare = [](const DrawItem& draw) {
+        const MaterialMaps& maps = *draw.maps;
+        return instanceable(draw.object, maps.diffuse || maps.specular || maps.normal || maps.emissive);
+    };
+    batches_.clear();
+    for (std::size_t i = 0; i < draws_.size(); ++i) {
+        if (!batches_.empty()) {
+            const DrawItem& first = draws_[batches_.back().firstItem];
+            if (canShare(first) && canShare(draws_[i]) && rangeKey(first) == rangeKey(draws_[i])) {
+                ++batches_.back().itemCount;
+                continue;
+            }
+        }
+        batches_.push_back({i, 1});
     }
 }
 
@@ -250,6 +304,24 @@ void GpuScene::poseDraws()
     posedTime_ = time_;
     if (moved || reshaped)
         noteTransformsChanged();
+    writeInstances();
+}
+
+void GpuScene::writeInstances()
+{
+    for (std::size_t i = 0; i < draws_.size(); ++i) {
+        const DrawItem& draw = draws_[i];
+        GpuInstance& instance = instances_[i];
+        instance.model = draw.model;
+        for (int column = 0; column < 3; ++column)
+            instance.normalMatrix[column] = glm::vec4(draw.normalMatrix[column], 0.0f);
+        instance.diffuse = glm::vec4(draw.material->diffuse, 0.0f);
+        instance.specularShininess = glm::vec4(draw.material->specular, draw.material->shininess);
+        instance.emissive = glm::vec4(draw.material->emissive, 0.0f);
+    }
+    // One update for the whole frame.
+    if (!instances_.empty())
+        instanceBuffer_.update(0, instances_.size() * sizeof(GpuInstance), instances_.data());
 }
 
 void GpuScene::bind() const
@@ -261,12 +333,9 @@ void GpuScene::bind() const
 
 void GpuScene::setObjectUniforms(const gl::Program& program, const DrawItem& draw) const
 {
-    // Locations shared by shaders/mesh.vert and shaders/shadow_depth.vert, which positions
-    // vertices the same way.
-    enum : GLint { kModel = 0 };
-    // shaders/lib/revolution.glsl.
+    // shaders/lib/revolution.glsl, used by shaders/mesh.vert and shaders/shadow_depth.vert,
+    // which position vertices the same way (the model matrix is in the instance record).
     enum : GLint { kRevolutionEnabled = 30, kRevolutionShape = 31, kRevolutionSpeed = 32 };
-    program.set(kModel, draw.model);
     const RevolutionProfile* revolution = draw.object && draw.object->revolution ? &*draw.object->revolution : nullptr;
     program.set(kRevolutionEnabled, revolution ? 1 : 0);
     if (revolution) {
@@ -276,38 +345,41 @@ void GpuScene::setObjectUniforms(const gl::Program& program, const DrawItem& dra
     }
 }
 
+void GpuScene::drawInstances(const gl::Program& program, std::size_t firstItem, std::size_t itemCount) const
+{
+    // The base goes in a uniform and the draw's own base instance stays 0: gl_InstanceID does
+    // not include it, and gl_BaseInstance is not core GL 4.5 (lib/instances.glsl).
+    program.set(kInstanceBase, static_cast<int>(firstItem));
+    const MeshRange& range = draws_[firstItem].range;
+    glDrawElementsInstancedBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                                      reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
+                                      static_cast<GLsizei>(itemCount), range.baseVertex);
+}
+
 void GpuScene::drawObjects(const gl::Program& program) const
 {
-    constexpr GLint kNormalMatrix = 1;  // shaders/mesh.vert
     program.use();
-    for (const DrawItem& draw : draws_) {
-        setObjectUniforms(program, draw);
-        program.set(kNormalMatrix, draw.normalMatrix);
-        bindMaterial(program, *draw.material, *draw.maps);
-        const MeshRange& range = draw.range;
-        glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
-                                 reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
-                                 range.baseVertex);
+    instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
+    for (const DrawBatch& batch : batches_) {
+        // Every item of a batch of several has no maps and no revolution: the first item's
+        // uniforms hold for all of them.
+        const DrawItem& first = draws_[batch.firstItem];
+        setObjectUniforms(program, first);
+        bindMaterial(program, *first.material, *first.maps);
+        drawInstances(program, batch.firstItem, batch.itemCount);
     }
 }
 
 void GpuScene::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const
 {
-    // Locations and units of shaders/lib/material.glsl.
+    // Locations and units of shaders/lib/material.glsl (its constants come from the instance
+    // record, GpuScene::writeInstances).
     enum : GLint {
-        kDiffuse = 10,
-        kSpecular = 11,
-        kShininess = 12,
-        kEmissive = 13,
         kMaps = 14,
         kNormalScale = 15,
     };
     enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
     enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4, kHasEmissiveMap = 8 };
-    program.set(kDiffuse, material.diffuse);
-    program.set(kSpecular, material.specular);
-    program.set(kShininess, material.shininess);
-    program.set(kEmissive, material.emissive);
     int present = 0;
     if (maps.diffuse) {
         maps.diffuse->bindUnit(kDiffuseUnit);
@@ -344,16 +416,23 @@ std::size_t GpuScene::drawObjectsDepthOnly(const gl::Program& program,
                                            const std::function<bool(const Bounds&)>& keep) const
 {
     program.use();
+    instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
     std::size_t drawn = 0;
-    for (const DrawItem& draw : draws_) {
-        if (draw.worldBounds.empty() || !keep(draw.worldBounds))
-            continue;
-        setObjectUniforms(program, draw);
-        const MeshRange& range = draw.range;
-        glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
-                                 reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
-                                 range.baseVertex);
-        ++drawn;
+    for (const DrawBatch& batch : batches_) {
+        setObjectUniforms(program, draws_[batch.firstItem]);
+        // Culling splits a batch into runs of kept items, each one instanced draw.
+        const std::size_t end = batch.firstItem + batch.itemCount;
+        std::optional<std::size_t> runStart;
+        for (std::size_t i = batch.firstItem; i <= end; ++i) {
+            const bool kept = i < end && !draws_[i].worldBounds.empty() && keep(draws_[i].worldBounds);
+            if (kept && !runStart)
+                runStart = i;
+            if (!kept && runStart) {
+                drawInstances(program, *runStart, i - *runStart);
+                drawn += i - *runStart;
+                runStart.reset();
+            }
+        }
     }
     return drawn;
 }

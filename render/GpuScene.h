@@ -30,6 +30,16 @@ static_assert(sizeof(GpuLight) == 64);
 // Packs a light for the GPU with its culling radius (lightRadius).
 GpuLight packLight(const Light& light, float attenuationThreshold);
 
+// std430 layout of shaders/lib/instances.glsl: Instance. One per draw item, written each frame.
+struct GpuInstance {
+    glm::mat4 model;
+    glm::vec4 normalMatrix[3];  // columns; w unused
+    glm::vec4 diffuse;
+    glm::vec4 specularShininess;
+    glm::vec4 emissive;
+};
+static_assert(sizeof(GpuInstance) == 160);
+
 // std140 layout of shaders/lib/frame.glsl: Frame.
 struct FrameUniforms {
     glm::mat4 viewProjection;
@@ -58,13 +68,22 @@ public:
 
     // Binds the vertex array, the frame uniforms and the light buffer.
     void bind() const;
-    // Draws every object with `program`, setting the uniforms of shaders/mesh.vert and
-    // shaders/lib/material.glsl and binding the material's maps (texture units 6-8).
+    // A run of draw items (consecutive in the instance buffer) drawn with one instanced call.
+    struct DrawBatch {
+        std::size_t firstItem;
+        std::size_t itemCount;
+    };
+
+    // Draws every object with `program` (shaders/mesh.vert with lib/material.glsl): binds the
+    // instance buffer, and per batch sets its first record, the revolution uniforms and the
+    // material's maps (texture units 6-8, 15). Items sharing a mesh range without maps or a
+    // surface of revolution are one instanced draw (see batches()).
     void drawObjects(const gl::Program& program) const;
-    // Depth-only passes (shadow maps): draws the objects whose world bounds pass `keep`,
-    // setting only the model matrix (location 0); returns how many draws were made.
     // The union of the drawn objects' world bounds.
     Bounds objectsWorldBounds() const;
+    // Depth-only passes (shadow maps, shaders/shadow_depth.vert): draws the items whose world
+    // bounds pass `keep`, each run of kept items of a batch as one instanced draw; returns how
+    // many items were drawn.
     std::size_t drawObjectsDepthOnly(const gl::Program& program, const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
@@ -75,6 +94,13 @@ public:
     double time() const { return time_; }
     // Changes whenever the lights move, for passes that cache data derived from them.
     std::uint64_t lightsVersion() const { return lightsVersion_; }
+
+    // The draw calls drawObjects makes, in order; their item counts sum to drawItemCount().
+    const std::vector<DrawBatch>& batches() const { return batches_; }
+    // Draw items: one per object sub-mesh and per light marker (one instance record each).
+    std::size_t drawItemCount() const { return draws_.size(); }
+    // The unit sphere every light marker draws, scaled by the scene's lightMarkerRadius.
+    static Mesh lightMarkerMesh();
 
     std::size_t lightCount() const { return lightCount_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
@@ -116,7 +142,10 @@ private:
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
     void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
     void addLightMarkers(float radius);
+    void groupDrawsIntoBatches();
     void poseDraws();
+    void writeInstances();
+    void drawInstances(const gl::Program& program, std::size_t firstItem, std::size_t itemCount) const;
     void packLights();
 
     const Scene& scene_;
@@ -130,7 +159,9 @@ private:
     glm::vec4 terms_{1.0f, 1.0f, 1.0f, 0.0f};
     std::uint64_t lightsVersion_ = 0;
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
-    std::vector<DrawItem> draws_;
+    std::vector<DrawItem> draws_;  // grouped by mesh range (groupDrawsIntoBatches)
+    std::vector<DrawBatch> batches_;
+    std::vector<GpuInstance> instances_;  // draws_[i]'s record is instances_[i]
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;
     std::uint64_t transformsVersion_ = 0;
@@ -140,6 +171,7 @@ private:
     gl::Buffer indices_;
     gl::VertexArray vertexArray_;
     gl::Buffer lightBuffer_;
+    gl::Buffer instanceBuffer_;
     gl::Buffer frameBuffer_;
 };
 

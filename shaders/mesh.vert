@@ -2,6 +2,7 @@
 // Shared by the forward pass and the G-buffer pass, so both see bit-identical positions and
 // normals (a technique may only differ in which lights it visits).
 #include "lib/frame.glsl"
+#include "lib/instances.glsl"
 #include "lib/revolution.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -9,26 +10,34 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inTangent;  // xyz tangent, w handedness; zero without uvs
 
-layout(location = 0) uniform mat4 model;
-layout(location = 1) uniform mat3 normalMatrix;
-
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec2 uv;
 layout(location = 3) out vec4 worldTangent;
+// The instance's material constants, read by lib/material.glsl's meshSurface().
+layout(location = 4) flat out vec3 materialDiffuse;
+layout(location = 5) flat out vec3 materialSpecular;
+layout(location = 6) flat out float materialShininess;
+layout(location = 7) flat out vec3 materialEmissive;
 
 void main()
 {
     vec3 position = inPosition;
     vec3 normal = inNormal;
     vec4 tangent = inTangent;
+    Instance instance = currentInstance();
+    mat4 model = instance.model;
     if (revolutionEnabled != 0)
         revolutionSurface(inUv, position, normal, tangent);
     vec4 world = model * vec4(position, 1.0);
     worldPosition = world.xyz;
-    worldNormal = normalMatrix * normal;
+    worldNormal = instanceNormalMatrix(instance) * normal;
     uv = inUv;
     // Tangents transform with the model matrix (they lie in the surface), not the normal matrix.
     worldTangent = vec4(mat3(model) * tangent.xyz, tangent.w);
+    materialDiffuse = instance.diffuse.rgb;
+    materialSpecular = instance.specularShininess.rgb;
+    materialShininess = instance.specularShininess.w;
+    materialEmissive = instance.emissive.rgb;
     gl_Position = frame.viewProjection * world;
 }

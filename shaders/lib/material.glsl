@@ -1,11 +1,14 @@
-// Per-object material uniforms and the surface a mesh fragment describes. Both forward.frag and
+// Per-draw material inputs and the surface a mesh fragment describes. Both forward.frag and
 // gbuffer.frag call meshSurface(), so every technique shades the same surface: the same
 // triangles rasterised with the same uv derivatives choose the same mip levels (implicit LOD)
 // in both passes, so the texture lookups need no explicit LOD to agree.
-layout(location = 10) uniform vec3 materialDiffuse;
-layout(location = 11) uniform vec3 materialSpecular;
-layout(location = 12) uniform float materialShininess;
-layout(location = 13) uniform vec3 materialEmissive;
+// The material constants come per instance from the vertex shader (shaders/mesh.vert reads
+// them from lib/instances.glsl), so one instanced draw can show many materials; the maps
+// below stay per draw, and only draws without maps are instanced (render/GpuScene.cpp).
+layout(location = 4) flat in vec3 materialDiffuse;
+layout(location = 5) flat in vec3 materialSpecular;
+layout(location = 6) flat in float materialShininess;
+layout(location = 7) flat in vec3 materialEmissive;
 // Which maps the material has (render/GpuScene.cpp: bindMaterial): bit 0 diffuse, bit 1
 // specular, bit 2 normal, bit 3 emissive. A missing map leaves the constant as it is.
 layout(location = 14) uniform int materialMaps;
