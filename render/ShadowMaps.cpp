@@ -139,29 +139,13 @@ void ShadowMaps::renderDirectional(const GpuScene& scene, const glm::mat4& light
         directionalFramebuffer_ = gl::Framebuffer("directional shadow map", {}, &directionalMap_);
     }
     auto pass = profiler.pass("shadow directional");
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    directionalFramebuffer_.bind();
-    glViewport(0, 0, directionalMapSize_, directionalMapSize_);
-    const float farthest = 1.0f;
-    glClearNamedFramebufferfv(directionalFramebuffer_.id(), GL_DEPTH, 0, &farthest);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
-    scene.bind();
-    depthProgram_.set(kLightViewProjectionLocation, lightViewProjection);
     // Every object: an orthographic light has no volume to cull against beyond the fitted
     // box, which the rasteriser clips.
-    scene.drawObjectsDepthOnly(depthProgram_, [](const Bounds&) { return true; });
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    drawDepthPass(scene, directionalFramebuffer_.id(), directionalMapSize_, lightViewProjection,
+                  [](const Bounds&) { return true; });
     directionalValid_ = true;
     directionalRenderedMatrix_ = lightViewProjection;
     directionalRenderedVersion_ = scene.transformsVersion();
-    ++passesRendered_;
 }
 
 namespace {
@@ -350,6 +334,12 @@ void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, i
     const GLuint framebuffer = localFramebuffer_.id();
     glNamedFramebufferTextureLayer(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0, layer);
     ML_ASSERT(glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    drawDepthPass(scene, framebuffer, size, viewProjection, keep);
+}
+
+void ShadowMaps::drawDepthPass(const GpuScene& scene, GLuint framebuffer, int size, const glm::mat4& viewProjection,
+                               const std::function<bool(const Bounds&)>& keep)
+{
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);

@@ -122,6 +122,10 @@ private:
     void ensureArrays(int spotLayers, int cubes);
     void renderSpot(const GpuScene& scene, LocalSlot& slot);
     void renderCube(const GpuScene& scene, LocalSlot& slot);
+    // Clears `framebuffer`'s depth and draws the casters `keep` accepts into it (slope-scaled
+    // bias on), restoring the viewport after.
+    void drawDepthPass(const GpuScene& scene, GLuint framebuffer, int size, const glm::mat4& viewProjection,
+                       const std::function<bool(const Bounds&)>& keep);
     void renderDepth(const GpuScene& scene, GLuint texture, int layer, int size, const glm::mat4& viewProjection,
                      const std::function<bool(const Bounds&)>& keep);
 
