@@ -1,5 +1,5 @@
 // Renders frames of one scene at one size with any technique and any view, and reads the
-// result back. The CLI, the tests and (later) the viewer all drive this one class.
+// result back. The CLI, the tests and the viewer all drive this one class.
 #pragma once
 
 #include <cstdint>

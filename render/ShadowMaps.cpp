@@ -94,7 +94,7 @@ ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     // A 1x1 map until the directional light needs a real one: the shaders' sampler must
     // always see a depth texture with comparison on, even when shadows are off. The local
     // lights' arrays start with one layer for the same reason.
-    directionalMap_ = makeShadowTexture("directional shadow map (placeholder)", 1);
+    directionalMap_ = makeShadowTexture("directional shadow map (unused, 1x1)", 1);
     const float farthest = 1.0f;
     glClearTexImage(directionalMap_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
     ensureArrays(0, 0);
@@ -203,8 +203,8 @@ gl::GlObject<gl::detail::deleteTexture> makeDepthArray(GLenum target, std::strin
 
 void ShadowMaps::ensureArrays(int spotLayers, int cubes)
 {
-    // With no slot of a kind, its array is a 1x1 placeholder; it grows (and loses its maps)
-    // when more layers are needed than it has.
+    // With no slot of a kind, its array is a 1x1 stand-in that keeps the sampler complete; it
+    // grows (and loses its maps) when more layers are needed than it has.
     if (!spotArray_ || (spotLayers > 0 && (spotArraySize_ != sizes_.spot || spotLayers > spotLayers_))) {
         spotArraySize_ = spotLayers > 0 ? sizes_.spot : 1;
         spotLayers_ = std::max(spotLayers, 1);
