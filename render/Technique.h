@@ -39,6 +39,12 @@ struct TechniqueOptions {
     // The G-buffer the technique's shaders read; must be the layout of the FrameTargets it
     // renders into (Renderer's).
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    // Shader variants that look up local lights' shadow maps (LOCAL_SHADOWS). Needed when the
+    // Renderer's ShadowMaps has a local-light budget above 0; without it those lights shade
+    // unshadowed. A separate variant because on llvmpipe the lookup code costs every (pixel,
+    // light) pair even when no light has a map (it runs masked, not skipped): 5x the deferred
+    // lighting pass.
+    bool localShadows = false;
 };
 
 // The shader #defines that realise `options`.

@@ -78,7 +78,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
 {
     Renderer renderer(scene, lights, size.width, size.height, options.gbufferLayout);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
-    std::unique_ptr<Technique> technique = makeTechnique(techniqueName, {.gbufferLayout = options.gbufferLayout});
+    std::unique_ptr<Technique> technique = makeTechnique(
+        techniqueName, {.gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
     for (int i = 0; i < options.warmup; ++i)
         renderer.renderFrame(*technique, ViewMode::Final);
@@ -110,7 +111,9 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
-        std::unique_ptr<Technique> counting = makeTechnique(techniqueName, {.countWork = true, .gbufferLayout = options.gbufferLayout});
+        std::unique_ptr<Technique> counting = makeTechnique(
+            techniqueName,
+            {.countWork = true, .gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
         renderer.setCountWork(true);
         renderer.renderFrame(*counting, ViewMode::Final);
         result.work = renderer.lastWorkCounts();

@@ -128,7 +128,9 @@ void runRender(const RenderOptions& options)
     renderer.setCountWork(countWork);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
-    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork, .gbufferLayout = options.gbufferLayout});
+    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork,
+                                                                         .gbufferLayout = options.gbufferLayout,
+                                                                         .localShadows = options.shadowLights > 0});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 
     if (options.timeRange) {

@@ -247,12 +247,13 @@ Viewer::~Viewer()
 Technique& Viewer::technique()
 {
     const bool counting = view_ == ViewMode::LightCount;
+    const bool localShadows = shadowLights_ > 0;
     const std::string name = effectiveTechnique();
-    const std::string key = name + (counting ? "+count" : "");
+    const std::string key = name + (counting ? "+count" : "") + (localShadows ? "+shadows" : "");
     auto& slot = techniques_[key];
     if (!slot) {
         try {
-            slot = makeTechnique(name, {.countWork = counting});
+            slot = makeTechnique(name, {.countWork = counting, .localShadows = localShadows});
             lastGoodTechnique_ = key;
         } catch (const Error& error) {
             techniques_.erase(key);
@@ -433,13 +434,17 @@ void Viewer::reloadShaders()
     try {
         auto renderer = std::make_unique<Renderer>(scene_, lights_, renderer_->width(), renderer_->height());
         const bool counting = view_ == ViewMode::LightCount;
-        auto fresh = makeTechnique(effectiveTechnique(), {.countWork = counting});
+        const bool localShadows = shadowLights_ > 0;
+        auto fresh = makeTechnique(effectiveTechnique(), {.countWork = counting, .localShadows = localShadows});
+        renderer->ambientOcclusion() = renderer_->ambientOcclusion();
+        renderer->shadowMaps().setDirectionalShadows(directionalShadows_);
+        renderer->shadowMaps().setLocalLightBudget(shadowLights_);
         renderer->setCountWork(counting);
         renderer->setTime(time_);
         renderer->renderFrame(*fresh, view_);
         renderer_ = std::move(renderer);
         techniques_.clear();
-        lastGoodTechnique_ = effectiveTechnique() + (counting ? "+count" : "");
+        lastGoodTechnique_ = effectiveTechnique() + (counting ? "+count" : "") + (localShadows ? "+shadows" : "");
         techniques_[lastGoodTechnique_] = std::move(fresh);
         shaderError_.clear();
         shaderStatus_ = "reloaded from " + shaderDirectory_;

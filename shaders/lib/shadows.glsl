@@ -94,6 +94,12 @@ float pointShadow(ShadowSlot slot, vec3 fromLight)
 // The fraction of local light `lightIndex` (at `lightPosition`) that reaches `position`.
 float localShadow(uint lightIndex, vec3 lightPosition, vec3 position)
 {
+#ifndef LOCAL_SHADOWS
+    // The variant without local shadow maps (TechniqueOptions::localShadows): llvmpipe would
+    // run the lookups below under a lane mask for every (pixel, light) pair even when the
+    // uniform says they are off.
+    return 1.0;
+#endif
     if (shadowing.localShadowParams.x == 0.0)
         return 1.0;
     int slotIndex = shadowSlotOfLight[lightIndex];

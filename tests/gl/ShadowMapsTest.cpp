@@ -43,7 +43,7 @@ TEST_F(ShadowMapsTest, UnchangedFrameRendersNoShadowPass)
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     Renderer renderer(scene, lights, 96, 64);
     renderer.shadowMaps().setLocalLightBudget(3);
-    ForwardTechnique forward({});
+    ForwardTechnique forward({.localShadows = true});
 
     renderer.renderFrame(forward, ViewMode::Final);
     const std::uint64_t all = kDirectionalPasses + kSpotPasses + 2 * kCubePasses;
@@ -97,7 +97,7 @@ TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
     const Scene scene = parseScene(kScene, "<shadow maps test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     Renderer renderer(scene, lights, 96, 64);
-    ForwardTechnique forward({});
+    ForwardTechnique forward({.localShadows = true});
 
     // The default budget: only the directional light.
     renderer.renderFrame(forward, ViewMode::Final);
