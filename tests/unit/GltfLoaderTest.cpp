@@ -331,6 +331,34 @@ INSTANTIATE_TEST_SUITE_P(
                    "not allowed when loading from memory"}),
     [](const ::testing::TestParamInfo<BrokenGltf>& param) { return std::string(param.param.name); });
 
+// glTF puts uv (0, 0) at the image's top-left corner, GL and our texture cache at the
+// bottom-left: the loader turns v into 1 − v. The bitangent (the direction of increasing v)
+// reverses with it, so a file's tangent handedness w flips too; keeping either would show
+// glTF textures upside down or their normal maps' green channel inverted.
+TEST(GltfModel, TextureCoordinatesAndTangentsTakeTheGlOrigin)
+{
+    GltfBuilder b = exampleGltf();
+    const float uvs[] = {0.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.25f, 0.0f, 0.25f};
+    const float tangents[] = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, -1, 1, 0, 0, -1};
+    const int uvAccessor = b.view(uvs, sizeof uvs, 4, "VEC2", 5126);
+    const int tangentAccessor = b.view(tangents, sizeof tangents, 4, "VEC4", 5126);
+    b.gltf["meshes"][0]["primitives"] = Json::array({{{"attributes",
+                                                       {{"POSITION", b.positions},
+                                                        {"NORMAL", b.normalAccessor},
+                                                        {"TEXCOORD_0", uvAccessor},
+                                                        {"TANGENT", tangentAccessor}}},
+                                                      {"indices", b.indices16}}});
+    const Model model = b.load();
+    ASSERT_EQ(model.meshes.size(), 1u);
+    const Mesh& mesh = model.meshes[0];
+    ASSERT_EQ(mesh.vertices.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(mesh.vertices[i].uv.x, uvs[2 * i]) << i;
+        EXPECT_EQ(mesh.vertices[i].uv.y, 1.0f - uvs[2 * i + 1]) << i;
+        EXPECT_EQ(mesh.vertices[i].tangent, glm::vec4(1.0f, 0.0f, 0.0f, -tangents[4 * i + 3])) << i;
+    }
+}
+
 TEST(GltfModel, PointsAndLinesAreSkipped)
 {
     GltfBuilder b = exampleGltf();
