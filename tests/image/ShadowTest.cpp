@@ -78,11 +78,7 @@ struct Rendered {
     Image colour;
     Image position;
     Image normal;
-    bool covered(int x, int y) const
-    {
-        const float* n = normal.pixel(x, y);
-        return n[0] != 0.0f || n[1] != 0.0f || n[2] != 0.0f;
-    }
+    bool covered(int x, int y) const { return test::holdsSurface(normal, x, y); }
 };
 
 Rendered renderWithPositions(const std::string& sceneJson, const std::string& size,
@@ -109,6 +105,57 @@ bool near(const float* got, const glm::dvec3& want)
 }
 
 class Shadows : public ::testing::TestWithParam<std::string> {};
+
+// Checks the plane pixels a shadow test has classified against their expected values, counts
+// the shadowed and lit ones, and keeps the shadowed pixel nearest the umbra's centre, whose
+// colour must then be exactly ke + ambient ⊙ kd as the shader computes it in 32-bit floats.
+class ShadowChecks {
+public:
+    ShadowChecks(const Rendered& rendered, const glm::dvec3& umbraCentre)
+        : rendered_(rendered), umbraCentre_(umbraCentre)
+    {
+    }
+
+    // `counted`: whether the pixel counts towards the shadowed and lit totals.
+    void check(int x, int y, const glm::dvec3& position, bool inShadow, double want, bool counted = true)
+    {
+        if (counted)
+            ++(inShadow ? shadowed_ : lit_);
+        const float* got = rendered_.colour.pixel(x, y);
+        if (!near(got, glm::dvec3(want)) && ++failures_ <= 5)
+            ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << position.x << ", " << position.y << ", "
+                          << position.z << "): got " << got[0] << ", expected " << want
+                          << (inShadow ? " (in shadow)" : " (lit)");
+        if (inShadow && glm::length(position - umbraCentre_) < nearestToCentre_) {
+            nearestToCentre_ = glm::length(position - umbraCentre_);
+            centreX_ = x;
+            centreY_ = y;
+        }
+    }
+
+    // At least this many shadowed and lit pixels were checked, none failed, and the umbra's
+    // centre is exactly ambient-only: `ambient` · `kd` in floats (ke = 0).
+    void expectAllPassed(int minShadowed, int minLit, float ambient, float kd) const
+    {
+        EXPECT_EQ(failures_, 0);
+        EXPECT_GT(shadowed_, minShadowed);
+        EXPECT_GT(lit_, minLit);
+        ASSERT_GE(centreX_, 0);
+        const float exactAmbient = ambient * kd;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(rendered_.colour.pixel(centreX_, centreY_)[c], exactAmbient) << "umbra centre channel " << c;
+    }
+
+private:
+    const Rendered& rendered_;
+    glm::dvec3 umbraCentre_;
+    int shadowed_ = 0;
+    int lit_ = 0;
+    int failures_ = 0;
+    double nearestToCentre_ = 1e30;
+    int centreX_ = -1;
+    int centreY_ = -1;
+};
 
 // The camera straight above the origin looking down; the light falls along (1, −2, 0), so the
 // shadow of the box lies on its +x side, where the camera sees it.
@@ -137,15 +184,9 @@ TEST_P(Shadows, BoxAbovePlaneUnderDirectionalLight)
     const double lit = 0.5 * (0.1 + 0.8 * 2.0 / std::sqrt(5.0));
     const double ambientOnly = 0.5 * 0.1;
     const Rendered r = renderWithPositions(boxAbovePlane(true), "65x65", {"--technique", GetParam()});
-    int shadowed = 0;
-    int litPixels = 0;
-    int failures = 0;
     // The umbra's centre: the middle of the visible part of the shadow (x from 0, where the
     // box hides the rest, to 1.125), on the light's plane of incidence z = 0.
-    const glm::dvec3 umbraCentre(0.5625, 0, 0);
-    double nearestToCentre = 1e30;
-    int centreX = -1;
-    int centreY = -1;
+    ShadowChecks checks(r, glm::dvec3(0.5625, 0, 0));
     for (int y = 0; y < r.colour.height; ++y)
         for (int x = 0; x < r.colour.width; ++x) {
             if (!r.covered(x, y))
@@ -155,28 +196,10 @@ TEST_P(Shadows, BoxAbovePlaneUnderDirectionalLight)
             std::optional<bool> inShadow = false;  // the box's top: nothing above it
             if (position.y < 1.0)
                 inShadow = shadowedOnPlane(position, toLight, box);
-            if (!inShadow)
-                continue;
-            const double want = *inShadow ? ambientOnly : lit;
-            ++(*inShadow ? shadowed : litPixels);
-            if (!near(r.colour.pixel(x, y), glm::dvec3(want)) && ++failures <= 5)
-                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << p[0] << ", " << p[1] << ", " << p[2]
-                              << "): got " << r.colour.pixel(x, y)[0] << ", expected " << want
-                              << (*inShadow ? " (in shadow)" : " (lit)");
-            if (*inShadow && glm::length(position - umbraCentre) < nearestToCentre) {
-                nearestToCentre = glm::length(position - umbraCentre);
-                centreX = x;
-                centreY = y;
-            }
+            if (inShadow)
+                checks.check(x, y, position, *inShadow, *inShadow ? ambientOnly : lit);
         }
-    EXPECT_EQ(failures, 0);
-    EXPECT_GT(shadowed, 40);
-    EXPECT_GT(litPixels, 2000);
-    ASSERT_GE(centreX, 0);
-    // Exactly ke + ambient ⊙ kd, computed as the shader does in 32-bit floats (ke = 0).
-    const float exactAmbient = 0.1f * 0.5f;
-    for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(r.colour.pixel(centreX, centreY)[c], exactAmbient) << "umbra centre channel " << c;
+    checks.expectAllPassed(40, 2000, 0.1f, 0.5f);
 }
 
 TEST_P(Shadows, ShadowsOffLeaveThePlaneLit)
@@ -219,13 +242,7 @@ void checkLocalLightShadow(const std::string& technique, const std::string& ligh
     // several times the blurred edge.
     constexpr double kLocalPenumbraMargin = 0.15;
     const Rendered r = renderWithPositions(scene, "65x65", {"--technique", technique, "--shadow-lights", "1"});
-    int shadowed = 0;
-    int litPixels = 0;
-    int failures = 0;
-    const glm::dvec3 umbraCentre(2.75, 0, 0);
-    double nearestToCentre = 1e30;
-    int centreX = -1;
-    int centreY = -1;
+    ShadowChecks checks(r, glm::dvec3(2.75, 0, 0));
     for (int y = 0; y < r.colour.height; ++y)
         for (int x = 0; x < r.colour.width; ++x) {
             if (!r.covered(x, y))
@@ -244,25 +261,9 @@ void checkLocalLightShadow(const std::string& technique, const std::string& ligh
                 continue;
             const bool inCone = cosTheta >= cosCutoff;
             const double want = *inShadow || !inCone ? ambientOnly : 0.5 * (0.1 + 0.8 * cosTheta);
-            if (inCone)
-                ++(*inShadow ? shadowed : litPixels);
-            if (!near(r.colour.pixel(x, y), glm::dvec3(want)) && ++failures <= 5)
-                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << p[0] << ", " << p[1] << ", " << p[2]
-                              << "): got " << r.colour.pixel(x, y)[0] << ", expected " << want
-                              << (*inShadow ? " (in shadow)" : " (lit)");
-            if (*inShadow && glm::length(position - umbraCentre) < nearestToCentre) {
-                nearestToCentre = glm::length(position - umbraCentre);
-                centreX = x;
-                centreY = y;
-            }
+            checks.check(x, y, position, *inShadow, want, inCone);
         }
-    EXPECT_EQ(failures, 0);
-    EXPECT_GT(shadowed, 30);
-    EXPECT_GT(litPixels, 1500);
-    ASSERT_GE(centreX, 0);
-    const float exactAmbient = 0.1f * 0.5f;
-    for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(r.colour.pixel(centreX, centreY)[c], exactAmbient) << "umbra centre channel " << c;
+    checks.expectAllPassed(30, 1500, 0.1f, 0.5f);
 }
 
 TEST_P(Shadows, BoxAbovePlaneUnderSpotLight)

@@ -19,6 +19,14 @@ void writeFile(const std::filesystem::path& path, const std::string& text);
 // Runs `manylights <args>` through runCli in this process; fails the test on a non-zero exit.
 void runCliOrFail(const std::vector<std::string>& args);
 
+// Whether pixel (x, y) holds a surface, from the `normal` view (zero where nothing was drawn:
+// every drawn normal is a unit vector).
+inline bool holdsSurface(const Image& normalView, int x, int y)
+{
+    const float* n = normalView.pixel(x, y);
+    return n[0] != 0.0f || n[1] != 0.0f || n[2] != 0.0f;
+}
+
 // Renders `scene` (a path, or "" for the default scene) to the PFM `output` and reads it back.
 Image renderPfm(const std::string& scene, const std::filesystem::path& output,
                 const std::vector<std::string>& extraArgs = {});

@@ -16,6 +16,7 @@
 #include "core/Error.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneLoader.h"
+#include "tests/unit/ErrorOf.h"
 
 namespace manylights {
 namespace {
@@ -30,17 +31,7 @@ const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
     if (!fs::is_directory(kAssimpGltf))                                                  \
     GTEST_SKIP() << kAssimpGltf << " is missing: install assimp-testmodels (scripts/setup.sh)"
 
-template <typename Load>
-std::string errorOf(Load load)
-{
-    try {
-        load();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
+using test::errorOf;
 
 std::vector<unsigned char> readBytes(const fs::path& path)
 {

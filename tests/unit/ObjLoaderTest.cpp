@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "scene/ObjLoader.h"
 #include "scene/SceneLoader.h"
+#include "tests/unit/ErrorOf.h"
 
 namespace manylights {
 namespace {
@@ -32,18 +33,7 @@ fs::path write(const fs::path& path, const std::string& text)
     return path;
 }
 
-// The message of the Error `load` throws; fails the test when it throws none.
-template <typename Load>
-std::string errorOf(Load load)
-{
-    try {
-        load();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
+using test::errorOf;
 
 const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
