@@ -4,15 +4,6 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createTexture2D()
-{
-    GLuint name = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &name);
-    return name;
-}
-}  // namespace
-
 int fullMipmapLevels(int width, int height)
 {
     int levels = 1;
@@ -35,7 +26,7 @@ float MipmappedTexture2D::anisotropy()
 
 MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
                                        std::span<const std::uint8_t> rgba8)
-    : GlObject(createTexture2D()),
+    : GlObject(detail::createTexture(GL_TEXTURE_2D)),
       width_(width),
       height_(height),
       levels_(fullMipmapLevels(width, height)),

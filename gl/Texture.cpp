@@ -2,17 +2,8 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createTexture2D()
-{
-    GLuint name = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &name);
-    return name;
-}
-}  // namespace
-
 Texture2D::Texture2D(std::string_view label, GLenum internalFormat, int width, int height)
-    : GlObject(createTexture2D()), width_(width), height_(height), format_(internalFormat)
+    : GlObject(detail::createTexture(GL_TEXTURE_2D)), width_(width), height_(height), format_(internalFormat)
 {
     setLabel(GL_TEXTURE, id(), label);
     glTextureStorage2D(id(), 1, internalFormat, width, height);

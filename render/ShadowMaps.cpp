@@ -183,8 +183,7 @@ constexpr float kSpotFovMarginDegrees = 2.0f;
 
 gl::GlObject<gl::detail::deleteTexture> makeDepthArray(GLenum target, std::string_view label, int size, int layers)
 {
-    GLuint name = 0;
-    glCreateTextures(target, 1, &name);
+    const GLuint name = gl::detail::createTexture(target);
     gl::GlObject<gl::detail::deleteTexture> texture(name);
     gl::setLabel(GL_TEXTURE, name, label);
     glTextureStorage3D(name, 1, GL_DEPTH_COMPONENT24, size, size, layers);
