@@ -47,10 +47,13 @@ GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBuff
 {
 }
 
-void GBuffer::fill(const GpuScene& scene, PassProfiler& profiler) const
+void GBuffer::fill(const GpuScene& scene, PassProfiler& profiler)
 {
+    if (current_)
+        return;
     auto pass = profiler.pass("geometry");
     fill(scene);
+    current_ = true;
 }
 
 void GBuffer::fill(const GpuScene& scene) const

@@ -96,9 +96,14 @@ public:
 
     GBufferLayout layout() const { return layout_; }
 
-    // The geometry pass: clears and fills every target, as a profiled pass or not.
-    void fill(const GpuScene& scene, PassProfiler& profiler) const;
+    // The frame's geometry pass, profiled: clears and fills every target, unless they already
+    // hold this frame's surfaces (SSAO fills them before the technique does; drawing the scene
+    // twice would change nothing but the cost).
+    void fill(const GpuScene& scene, PassProfiler& profiler);
+    // Clears and fills every target, always, unprofiled.
     void fill(const GpuScene& scene) const;
+    // The targets no longer hold the current frame: the Renderer calls it as a frame begins.
+    void invalidate() { current_ = false; }
     // Binds the colour targets to texture units 0..4 (shaders/lib/gbuffer.glsl).
     void bindForReading() const;
 
@@ -107,6 +112,7 @@ private:
     std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
     gl::Framebuffer framebuffer_;
     gl::Program program_;
+    bool current_ = false;  // filled since the last invalidate()
 };
 
 }  // namespace manylights

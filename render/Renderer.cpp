@@ -55,6 +55,7 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         glBindImageTexture(0, targets_->lightEvaluations.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     }
     profiler_.beginFrame();
+    targets_->gbuffer.invalidate();
     prepareShadowing(view);
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);

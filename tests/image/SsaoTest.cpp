@@ -2,9 +2,15 @@
 // ambient term only, so every pixel's colour is kd · ambient · ao.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
 #include "render/Technique.h"
@@ -40,11 +46,7 @@ struct Views {
     Image occlusion;
     Image position;
     Image normal;
-    bool covered(int x, int y) const
-    {
-        const float* n = normal.pixel(x, y);
-        return n[0] != 0.0f || n[1] != 0.0f || n[2] != 0.0f;
-    }
+    bool covered(int x, int y) const { return test::holdsSurface(normal, x, y); }
     bool floor(int x, int y) const { return covered(x, y) && std::abs(position.pixel(x, y)[1]) < 1e-3f; }
 };
 
@@ -142,13 +144,32 @@ TEST(Ssao, OffUnlessTheSceneEnablesIt)
     int checked = 0;
     for (int y = 0; y < colour.height; ++y)
         for (int x = 0; x < colour.width; ++x) {
-            const float* n = normal.pixel(x, y);
-            if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f)
+            if (!test::holdsSurface(normal, x, y))
                 continue;
             ++checked;
             ASSERT_EQ(colour.pixel(x, y)[0], 0.2f * 0.5f) << "pixel (" << x << ", " << y << ")";
         }
     EXPECT_GT(checked, 10000);
+}
+
+// SSAO needs the G-buffer before the technique runs; a G-buffer technique then uses the same
+// one: the frame has one geometry pass, not two (GBuffer::fill within a frame).
+TEST(Ssao, TheGBufferIsFilledOncePerFrame)
+{
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", boxOnFloor(true));
+    for (const std::string technique : {"deferred", "clustered"}) {
+        const std::filesystem::path stats = dir / (technique + ".json");
+        renderPfm((dir / "scene.json").string(), dir / "final.pfm",
+                  {"--size", "64x48", "--technique", technique, "--frames", "2", "--stats", stats.string()});
+        std::ifstream in(stats);
+        const nlohmann::json measured = nlohmann::json::parse(in);
+        std::vector<std::string> passes;
+        for (const nlohmann::json& pass : measured["passes"])
+            passes.push_back(pass["name"].get<std::string>());
+        EXPECT_EQ(std::count(passes.begin(), passes.end(), "geometry"), 1) << technique;
+        EXPECT_EQ(std::count(passes.begin(), passes.end(), "ssao"), 1) << technique;
+    }
 }
 
 }  // namespace
