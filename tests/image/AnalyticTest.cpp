@@ -287,13 +287,7 @@ TEST_P(Analytic, ConstantNormalMapTiltsTheShadingNormal)
     }
 }
 
-// Test names allow only letters, digits and '_': "tiled-quads" becomes tiled_quads.
-INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()),
-                         [](const ::testing::TestParamInfo<std::string>& param) {
-                             std::string name = param.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
 
 }  // namespace
 }  // namespace manylights

@@ -319,12 +319,7 @@ TEST(ShadowView, ShowsTheDirectionalShadowFactor)
     EXPECT_GT(lit, 2000);
 }
 
-INSTANTIATE_TEST_SUITE_P(Techniques, Shadows, ::testing::ValuesIn(techniqueNames()),
-                         [](const ::testing::TestParamInfo<std::string>& param) {
-                             std::string name = param.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Techniques, Shadows, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
 
 }  // namespace
 }  // namespace manylights

@@ -3,9 +3,12 @@
 // reading results back.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "render/Image.h"
 
@@ -18,6 +21,15 @@ void writeFile(const std::filesystem::path& path, const std::string& text);
 
 // Runs `manylights <args>` through runCli in this process; fails the test on a non-zero exit.
 void runCliOrFail(const std::vector<std::string>& args);
+
+// A test name for a technique parameter: test names allow only letters, digits and '_', so
+// "tiled-quads" becomes tiled_quads.
+inline std::string techniqueTestName(const ::testing::TestParamInfo<std::string>& param)
+{
+    std::string name = param.param;
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
 
 // Whether pixel (x, y) holds a surface, from the `normal` view (zero where nothing was drawn:
 // every drawn normal is a unit vector).
