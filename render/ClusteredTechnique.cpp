@@ -1,5 +1,6 @@
 #include "render/ClusteredTechnique.h"
 
+#include <algorithm>
 #include <string>
 
 #include "render/DeferredTechnique.h"
@@ -10,146 +11,138 @@ namespace manylights {
 
 namespace {
 
-// Binding points and locations shared with shaders/lib/clusters.glsl and the passes.
-constexpr GLuint kOccupiedBinding = 2;
-constexpr GLuint kCountsBinding = 3;
-constexpr GLuint kOffsetsBinding = 4;
-constexpr GLuint kIndicesBinding = 5;
-constexpr GLuint kDepthRangeBinding = 7;
-constexpr GLint kClusterCountLocation = 0;
+// Binding points shared with shaders/lib/clusters.glsl and the passes.
+constexpr GLuint kTileDepthRangesBinding = 2;
+constexpr GLuint kTileSlicesBinding = 3;
+constexpr GLuint kMasksBinding = 4;
+constexpr GLuint kSummariesBinding = 5;
 constexpr GLuint kDepthUnit = 5;
-constexpr GLuint kPixelGroupSize = 8;   // local_size of cluster_occupancy.comp
-constexpr GLuint kLightGroupSize = 64;  // local_size of cluster_assign.comp and cluster_sort.comp
+constexpr GLuint kLightGroupSize = 64;  // local_size_x of cluster_assign.comp
+constexpr GLuint kTileGroupSize = 64;   // local_size_x of cluster_tiles.comp
+constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
+constexpr int kTilesPerBand = 1024;
 
-gl::Defines gridDefines(gl::Defines defines = {})
+gl::Defines gridDefines(gl::Defines defines)
 {
+    addLightBatchDefines(defines);
     defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(kClusterTileSize));
     defines.emplace_back("CLUSTER_SLICES", std::to_string(kClusterSlices));
     return defines;
 }
 
-gl::Defines fillDefines()
-{
-    gl::Defines defines = gridDefines();
-    defines.emplace_back("FILL_LISTS", "1");
-    return defines;
-}
-
 GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupSize - 1) / groupSize; }
 
-void clearToZero(const gl::Buffer& buffer)
-{
-    const std::uint32_t zero = 0;
-    glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-}
+std::uint32_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
 
 }  // namespace
 
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
-    : depthRange_("cluster depth range", {{GL_COMPUTE_SHADER, "cluster_depth_range.comp"}},
-                  gridDefines(gbufferDefines(options.gbufferLayout))),
-      occupancy_("cluster occupancy", {{GL_COMPUTE_SHADER, "cluster_occupancy.comp"}},
-                 gridDefines(gbufferDefines(options.gbufferLayout))),
-      countLights_("cluster light counts", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, gridDefines()),
-      offsets_("cluster offsets", {{GL_COMPUTE_SHADER, "cluster_offsets.comp"}}, gridDefines()),
-      fillLists_("cluster light lists", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, fillDefines()),
-      sortLists_("cluster list sort", {{GL_COMPUTE_SHADER, "cluster_sort.comp"}}, gridDefines()),
+    : tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
+             gridDefines(gbufferDefines(options.gbufferLayout))),
+      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, gridDefines({})),
       lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                gridDefines(shaderDefines(options))),
-      depthRangeBuffer_("cluster depth range", 2 * sizeof(std::uint32_t), nullptr)
+                gridDefines(shaderDefines(options)))
 {
 }
 
-void ClusteredTechnique::resizeGrid(int width, int height)
+std::uint32_t ClusteredTechnique::lightsPerBatch(int width, int height)
 {
-    const int gridWidth = (width + kClusterTileSize - 1) / kClusterTileSize;
-    const int gridHeight = (height + kClusterTileSize - 1) / kClusterTileSize;
-    if (gridWidth == gridWidth_ && gridHeight == gridHeight_)
-        return;
-    gridWidth_ = gridWidth;
-    gridHeight_ = gridHeight;
-    clusterCount_ = static_cast<std::uint32_t>(gridWidth * gridHeight * kClusterSlices);
-    const std::size_t bytes = sizeof(std::uint32_t) * clusterCount_;
-    occupied_ = gl::Buffer("cluster occupancy", bytes, nullptr, 0);
-    counts_ = gl::Buffer("cluster light counts", bytes, nullptr, 0);
-    offsetsBuffer_ = gl::Buffer("cluster offsets", bytes + sizeof(std::uint32_t), nullptr, 0);
-    // The index buffer grows on demand (buildClusters); start with a few lights per cluster.
-    indices_ = gl::Buffer("cluster light indices", 4 * bytes, nullptr, 0);
+    const auto tiles = static_cast<std::size_t>((width + kClusterTileSize - 1) / kClusterTileSize) *
+                       static_cast<std::size_t>((height + kClusterTileSize - 1) / kClusterTileSize);
+    const std::size_t clusters = tiles * kClusterSlices;
+    const std::size_t affordableWords = kClusterMaskBudgetBytes / (sizeof(std::uint32_t) * clusters);
+    return static_cast<std::uint32_t>(std::clamp<std::size_t>(affordableWords * 32, 32, kLightsPerBatch));
 }
 
-void ClusteredTechnique::buildClusters(const GpuScene& scene, FrameTargets& targets)
+void ClusteredTechnique::resizeGrid(int width, int height, std::uint32_t lightCount)
 {
-    resizeGrid(targets.width, targets.height);
-    clearToZero(occupied_);
-    clearToZero(counts_);
-    occupied_.bindBase(GL_SHADER_STORAGE_BUFFER, kOccupiedBinding);
-    counts_.bindBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding);
-    offsetsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kOffsetsBinding);
-    indices_.bindBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding);
-    // Nearest starts at the largest float, farthest at 0: the atomics only move them inwards.
-    const std::uint32_t emptyRange[2] = {0x7F7FFFFFu, 0u};
-    depthRangeBuffer_.update(0, sizeof(emptyRange), emptyRange);
-    depthRangeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kDepthRangeBinding);
+    gridWidth_ = (width + kClusterTileSize - 1) / kClusterTileSize;
+    gridHeight_ = (height + kClusterTileSize - 1) / kClusterTileSize;
+    const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
+    clusterCount_ = tiles * kClusterSlices;
+    const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
+    if (!tileSlices_ || tileSlices_.size() != tileBytes) {
+        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, 0);
+        tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, 0);
+    }
+    // Sized for the largest batch of this frame: the size is known before any pass runs.
+    const std::uint32_t words = wordsFor(std::min(lightCount, lightsPerBatch(width, height)));
+    const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * std::max(words, 1u);
+    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * std::max(wordsFor(words), 1u);
+    if (!masks_ || masks_.size() < maskBytes)
+        masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
+    if (!summaries_ || summaries_.size() < summaryBytes)
+        summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
+}
+
+void ClusteredTechnique::findTileRanges(const GpuScene& scene, FrameTargets& targets)
+{
     scene.bind();
     targets.gbuffer.bindForReading();
     targets.depthStencil.bindUnit(kDepthUnit);
-
-    const GLuint pixelGroupsX = groupsFor(static_cast<std::uint32_t>(targets.width), kPixelGroupSize);
-    const GLuint pixelGroupsY = groupsFor(static_cast<std::uint32_t>(targets.height), kPixelGroupSize);
-    depthRange_.use();
-    glDispatchCompute(pixelGroupsX, pixelGroupsY, 1);
+    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
+    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+    tiles_.use();
+    glDispatchCompute(groupsFor(static_cast<std::uint32_t>(gridWidth_ * gridHeight_), kTileGroupSize), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    occupancy_.use();
-    glDispatchCompute(pixelGroupsX, pixelGroupsY, 1);
+}
+
+void ClusteredTechnique::assignLights(const GpuScene& scene, const LightBatch& batch)
+{
+    // Cleared by the GL: on llvmpipe a plain memset of the batch's words beats a compute pass
+    // that clears only the occupied clusters' words.
+    const std::uint32_t words = wordsFor(batch.size());
+    const std::uint32_t zero = 0;
+    glClearNamedBufferSubData(masks_.id(), GL_R32UI, 0,
+                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * words), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(summaries_.id(), GL_R32UI, 0,
+                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * wordsFor(words)),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
-    countLights_.use();
-    glDispatchCompute(groupsFor(lightCount, kLightGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-    offsets_.set(kClusterCountLocation, clusterCount_);
-    offsets_.use();
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-
-    // The one read-back of the frame: the lists' total length, so the index buffer can
-    // hold every list whatever the lights do (no per-cluster cap, nothing dropped).
-    glGetNamedBufferSubData(offsetsBuffer_.id(), static_cast<GLintptr>(sizeof(std::uint32_t) * clusterCount_),
-                            sizeof(std::uint32_t), &lastIndexCount_);
-    const std::size_t needed = sizeof(std::uint32_t) * lastIndexCount_;
-    if (needed > indices_.size()) {
-        indices_ = gl::Buffer("cluster light indices", needed + needed / 2, nullptr, 0);
-        indices_.bindBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding);
-    }
-
-    clearToZero(counts_);  // now the lists' cursors
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    fillLists_.use();
-    glDispatchCompute(groupsFor(lightCount, kLightGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-    sortLists_.set(kClusterCountLocation, clusterCount_);
-    sortLists_.use();
-    glDispatchCompute(groupsFor(clusterCount_, kLightGroupSize), 1, 1);
+    scene.bind();
+    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
+    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+    masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
+    summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+    setLightBatch(assign_, batch);
+    // Bands of whole rows, at most kTilesPerBand tiles (the shader's loop bound).
+    const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth_));
+    assign_.set(kRowsPerBandLocation, rowsPerBand);
+    assign_.use();
+    glDispatchCompute(groupsFor(batch.size(), kLightGroupSize),
+                      groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 std::vector<TechniqueCounter> ClusteredTechnique::counters() const
 {
-    return {{"clusters", static_cast<double>(clusterCount_)},
-            {"cluster_light_indices", static_cast<double>(lastIndexCount_)}};
+    return {{"clusters", static_cast<double>(clusterCount_)}, {"light_batches", static_cast<double>(batchCount_)}};
 }
 
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
 {
     targets.gbuffer.fill(scene, profiler);
+    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
+    const std::vector<LightBatch> batches = lightBatches(lightCount, lightsPerBatch(targets.width, targets.height));
+    batchCount_ = static_cast<std::uint32_t>(batches.size());
     {
         auto pass = profiler.pass("clusters");
-        buildClusters(scene, targets);
+        resizeGrid(targets.width, targets.height, lightCount);
+        findTileRanges(scene, targets);
     }
-    auto pass = profiler.pass("lighting");
-    shadeCoveredPixels(scene, targets, lighting_);
+    for (const LightBatch& batch : batches) {
+        {
+            auto pass = profiler.pass("clusters");
+            assignLights(scene, batch);
+        }
+        auto pass = profiler.pass("lighting");
+        masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
+        summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+        tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
+        tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+        shadeCoveredPixels(scene, targets, lighting_, batch);
+    }
 }
 
 }  // namespace manylights

@@ -1,24 +1,31 @@
-// clustered (Olsson, Billeter, Assarsson, HPG 2012): the view frustum cut into froxels
-// (screen tiles times exponential depth slices); each frame, compute passes find the
-// froxels that hold visible surfaces, give each such cluster the list of lights that reach
-// it (compact lists in one global index buffer, with offsets from a prefix sum), and the
-// lighting pass shades each pixel with its cluster's list. The lists have no capacity: the
-// index buffer grows to the frame's total, so no light is ever dropped.
+// clustered (Olsson, Billeter, Assarsson, HPG 2012): the view frustum cut into clusters:
+// screen tiles times depth slices. Each frame, a compute pass finds each tile's depth range
+// and the slices of it that hold surfaces (the slices adapt to each tile: Olsson et al.'s
+// compaction to occupied clusters, and Harada's 2.5D culling, in one); then, per light
+// batch, a compute pass sets each light's bit in the mask of every occupied cluster it
+// reaches, and the lighting pass shades each pixel with the lights of its cluster's mask.
+// The masks have a fixed size (a bit per light of the batch), so no light can be dropped,
+// nothing is read back and no pass loops more than a bounded number of times
+// (docs/techniques.md says why bit masks and not lists).
 #pragma once
 
 #include <cstdint>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "render/LightBatches.h"
 #include "render/Technique.h"
 
 namespace manylights {
 
-// The cluster grid: 16-pixel tiles, 64 exponential depth slices (measured on the default scene:
-// light evaluations 1.75 x the in-range pairs, against 2.8 x for 32-pixel tiles and 32 slices) (the shaders get them as
-// CLUSTER_TILE_SIZE and CLUSTER_SLICES).
+// The cluster grid: 16-pixel tiles, each with 8 depth slices spaced exponentially between
+// its nearest and farthest surface (the shaders get them as CLUSTER_TILE_SIZE and
+// CLUSTER_SLICES; docs/techniques.md has the measurements behind them).
 inline constexpr int kClusterTileSize = 16;
-inline constexpr int kClusterSlices = 64;
+inline constexpr int kClusterSlices = 8;
+// The cluster masks of one batch may take this much memory; at sizes where a batch of
+// kLightsPerBatch lights would need more, the batches get smaller (in whole mask words).
+inline constexpr std::size_t kClusterMaskBudgetBytes = std::size_t{64} << 20;
 
 class ClusteredTechnique : public Technique {
 public:
@@ -26,30 +33,28 @@ public:
     std::string_view name() const override { return "clustered"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 
-    // clusters (the grid's size) and cluster_light_indices (entries of the global index
-    // buffer in the last frame: the sum of all clusters' list lengths).
+    // clusters (the grid's size) and light_batches (passes of the last frame).
     std::vector<TechniqueCounter> counters() const override;
 
-private:
-    void resizeGrid(int width, int height);
-    void buildClusters(const GpuScene& scene, FrameTargets& targets);
+    // The most lights one batch takes for an image of this size (a multiple of 32).
+    static std::uint32_t lightsPerBatch(int width, int height);
 
-    gl::Program depthRange_;
-    gl::Program occupancy_;
-    gl::Program countLights_;
-    gl::Program offsets_;
-    gl::Program fillLists_;
-    gl::Program sortLists_;
+private:
+    void resizeGrid(int width, int height, std::uint32_t lightCount);
+    void findTileRanges(const GpuScene& scene, FrameTargets& targets);
+    void assignLights(const GpuScene& scene, const LightBatch& batch);
+
+    gl::Program tiles_;
+    gl::Program assign_;
     gl::Program lighting_;
     int gridWidth_ = 0;
     int gridHeight_ = 0;
     std::uint32_t clusterCount_ = 0;
-    gl::Buffer depthRangeBuffer_;
-    gl::Buffer occupied_;
-    gl::Buffer counts_;
-    gl::Buffer offsetsBuffer_;
-    gl::Buffer indices_;
-    std::uint32_t lastIndexCount_ = 0;
+    std::uint32_t batchCount_ = 0;
+    gl::Buffer tileDepthRanges_;
+    gl::Buffer tileSlices_;
+    gl::Buffer masks_;
+    gl::Buffer summaries_;
 };
 
 }  // namespace manylights

@@ -16,13 +16,22 @@ void drawCoveredPixels(const gl::Program& program)
     glDepthFunc(GL_LESS);
 }
 
-void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program)
+void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program,
+                        const LightBatch& batch)
 {
     targets.litFramebuffer.bind();
-    glDisable(GL_BLEND);
+    if (batch.isFirst()) {
+        glDisable(GL_BLEND);
+    } else {
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    }
     scene.bind();
     targets.gbuffer.bindForReading();
+    setLightBatch(program, batch);
     drawCoveredPixels(program);
+    glDisable(GL_BLEND);
 }
 
 void beginAddingToCoveredPixels()
@@ -45,7 +54,8 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pas
 {
     targets.gbuffer.fill(scene, profiler);
     auto pass = profiler.pass("lighting");
-    shadeCoveredPixels(scene, targets, lighting_);
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount())))
+        shadeCoveredPixels(scene, targets, lighting_, batch);
 }
 
 }  // namespace manylights

@@ -2,12 +2,13 @@
 
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
+#include "render/LightBatches.h"
 #include "render/Technique.h"
 
 namespace manylights {
 
-// deferred: the geometry pass fills the G-buffer, then one full-screen pass shades every
-// covered pixel with every light.
+// deferred: the geometry pass fills the G-buffer, then a full-screen pass per light batch
+// shades every covered pixel with every light of the batch.
 class DeferredTechnique : public Technique {
 public:
     explicit DeferredTechnique(const TechniqueOptions& options);
@@ -23,9 +24,12 @@ private:
 // Used by every full-screen pass over the G-buffer.
 void drawCoveredPixels(const gl::Program& program);
 
-// A full-screen lighting pass: `program` reads the G-buffer and writes each covered pixel's
-// colour into the lit image (deferred and clustered end with it).
-void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program);
+// A full-screen lighting pass over one light batch: `program` reads the G-buffer and shades
+// each covered pixel with the batch's lights; the first batch writes the lit image (its
+// colour includes the light-independent terms), the others add to it (deferred and clustered
+// end with it).
+void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program,
+                        const LightBatch& batch);
 
 // Sets up adding to the lit image over covered pixels only: additive blending, and the
 // depth test GL_GREATER against the scene's depth for geometry at depth 1, no depth writes.

@@ -2,6 +2,7 @@
 #include "render/ForwardTechnique.h"
 
 #include "render/GpuScene.h"
+#include "render/LightBatches.h"
 #include "render/PassProfiler.h"
 
 namespace manylights {
@@ -22,7 +23,23 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     scene.bind();
-    scene.drawObjects(program_);
+    // One draw of the objects per light batch. The later ones add their batch's light to the
+    // fragments the first one left visible: the same program draws the same triangles, so
+    // the depth test GL_EQUAL passes exactly those (GL's invariance rule).
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()))) {
+        if (!batch.isFirst()) {
+            glDepthFunc(GL_EQUAL);
+            glDepthMask(GL_FALSE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE);
+        }
+        setLightBatch(program_, batch);
+        scene.drawObjects(program_);
+    }
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
 }
 
 }  // namespace manylights

@@ -1,5 +1,7 @@
 #include "render/PassProfiler.h"
 
+#include <algorithm>
+
 #include "core/Error.h"
 
 namespace manylights {
@@ -73,13 +75,20 @@ FrameSample PassProfiler::endFrame()
     sample.gpuMs = static_cast<double>(frameEnd_.result() - frameStart_.result()) / kNanosecondsPerMs;
     for (std::size_t i = 0; i < passesThisFrame_; ++i) {
         const PassQueries& queries = passes_[i];
-        PassSample pass;
-        pass.name = queries.name;
-        pass.gpuMs = static_cast<double>(queries.time.result()) / kNanosecondsPerMs;
-        pass.wallMs = queries.wallMs;
+        // A pass that runs once per light batch (render/LightBatches.h) is one entry: the
+        // sum of its runs, in the place of its first.
+        auto pass = std::find_if(sample.passes.begin(), sample.passes.end(),
+                                 [&](const PassSample& earlier) { return earlier.name == queries.name; });
+        if (pass == sample.passes.end()) {
+            PassSample first;
+            first.name = queries.name;
+            sample.passes.push_back(std::move(first));
+            pass = sample.passes.end() - 1;
+        }
+        pass->gpuMs += static_cast<double>(queries.time.result()) / kNanosecondsPerMs;
+        pass->wallMs += queries.wallMs;
         if (queries.invocations)
-            pass.fragmentInvocations = queries.invocations.result();
-        sample.passes.push_back(std::move(pass));
+            pass->fragmentInvocations = pass->fragmentInvocations.value_or(0) + queries.invocations.result();
     }
     return sample;
 }

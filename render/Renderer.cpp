@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render/DeferredTechnique.h"
+#include "render/LightBatches.h"
 #include "core/Error.h"
 
 namespace manylights {
@@ -141,14 +142,24 @@ void Renderer::countWork()
     gpuScene_.bind();
     targets_->gbuffer.bindForReading();
     targets_->depthStencil.bindUnit(5);
-    glBindImageTexture(1, targets_->inRangeCounts.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-    if (!inRangeProgram_)
-        inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}},
-                                      gbufferDefines(gbufferLayout_));
+    glBindImageTexture(1, targets_->inRangeCounts.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    if (!inRangeProgram_) {
+        gl::Defines defines = gbufferDefines(gbufferLayout_);
+        addLightBatchDefines(defines);
+        defines.emplace_back("LIGHTS_PER_BATCH", std::to_string(kLightsPerBatch) + "u");
+        if (inRangeBruteForce_)
+            defines.emplace_back("BRUTE_FORCE", "1");
+        inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}}, defines);
+    }
     inRangeProgram_.use();
-    constexpr int kGroupSize = 8;  // local_size of shaders/in_range.comp
-    glDispatchCompute(static_cast<GLuint>((width() + kGroupSize - 1) / kGroupSize),
-                      static_cast<GLuint>((height() + kGroupSize - 1) / kGroupSize), 1);
+    constexpr int kGroupSize = 16;  // local_size of shaders/in_range.comp
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(gpuScene_.lightCount()))) {
+        // Each batch after the first adds to the counts the one before it stored.
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        setLightBatch(inRangeProgram_, batch);
+        glDispatchCompute(static_cast<GLuint>((width() + kGroupSize - 1) / kGroupSize),
+                          static_cast<GLuint>((height() + kGroupSize - 1) / kGroupSize), 1);
+    }
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
     workCounts_.lightEvaluations = sumOfTexels(targets_->lightEvaluations);
     workCounts_.inRangePairs = sumOfTexels(targets_->inRangeCounts);

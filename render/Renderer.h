@@ -45,6 +45,14 @@ public:
     // With counting on, each frame also counts its work (lastWorkCounts). The technique must
     // have been made with TechniqueOptions::countWork.
     void setCountWork(bool count) { countWork_ = count; }
+    // in_range_pairs is counted per pixel over the lights that a per-tile cull keeps
+    // (shaders/in_range.comp); with this on, over every light instead: the reference the
+    // tests check the culled count against.
+    void setInRangeBruteForce(bool bruteForce)
+    {
+        inRangeBruteForce_ = bruteForce;
+        inRangeProgram_ = gl::Program();
+    }
 
     // One frame: views Final, LightCount and Volumes run the technique (LightCount needs
     // counting on); the G-buffer views run the geometry pass and show that quantity (the
@@ -87,6 +95,7 @@ private:
     gl::Program shadowingViewProgram_;  // made on first use of the shadow and ssao views
     void prepareShadowing(ViewMode view);
     bool countWork_ = false;
+    bool inRangeBruteForce_ = false;
     WorkCounts workCounts_;
     ViewMode lastView_ = ViewMode::Final;
 };

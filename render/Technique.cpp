@@ -3,6 +3,7 @@
 #include "render/ClusteredTechnique.h"
 #include "render/DeferredTechnique.h"
 #include "render/ForwardTechnique.h"
+#include "render/LightBatches.h"
 #include "render/TiledQuadsTechnique.h"
 #include "render/TiledTechnique.h"
 #include "render/VolumeTechniques.h"
@@ -24,6 +25,7 @@ FrameTargets::FrameTargets(int width_, int height_, GBufferLayout gbufferLayout)
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
     gl::Defines defines = gbufferDefines(options.gbufferLayout);
+    addLightBatchDefines(defines);
     if (options.countWork)
         defines.emplace_back("COUNT_WORK", "1");
     if (options.localShadows)

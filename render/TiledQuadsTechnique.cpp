@@ -15,28 +15,24 @@ namespace {
 
 // Locations and bindings of shaders/tiled_quads.vert and tiled_quads.frag (binding 0 is
 // the light buffer).
-constexpr GLint kFirstTile = 0;
+constexpr GLint kFirstQuad = 0;
 constexpr GLint kTilesX = 1;
 constexpr GLint kTileSize = 2;
 constexpr GLint kImageSize = 3;
 constexpr GLuint kTileOrderBinding = 1;
-constexpr GLuint kTileRangesBinding = 2;
 constexpr GLuint kTileLightsBinding = 3;
 
 gl::Program makeVariant(const TechniqueOptions& options, std::size_t variant)
 {
     gl::Defines defines = shaderDefines(options);
-    std::string label = "tiled quads, unbounded";
-    if (variant < kTileLightBounds.size()) {
-        const std::string bound = std::to_string(kTileLightBounds[variant]);
-        defines.emplace_back("MAX_TILE_LIGHTS", bound + "u");
-        label = "tiled quads, up to " + bound + " lights";
-    }
+    const std::string bound = std::to_string(kTileLightBounds[variant]);
+    defines.emplace_back("MAX_TILE_LIGHTS", bound + "u");
+    const std::string label = "tiled quads, up to " + bound + " lights";
     return gl::Program(label, {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
                        defines);
 }
 
-// The variant that draws a tile with `count` > 0 lights.
+// The variant that draws a quad with 0 < `count` ≤ kLightsPerBatch lights.
 std::size_t variantFor(std::uint32_t count)
 {
     const auto bound = std::lower_bound(kTileLightBounds.begin(), kTileLightBounds.end(), count);
@@ -78,24 +74,28 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     view.tileSize = kDefaultTileSize;
     const TileLightLists& lists = culler_.cull(view, scene.packedLights());
 
-    // Bucket the tiles that have lights by variant (a counting sort), so that each variant
-    // is one instanced draw and the program changes only between buckets.
+    // Each tile's lights in runs of at most a light batch (one quad each), and the quads
+    // bucketed by variant (a counting sort), so that each variant is one instanced draw and
+    // the program changes only between buckets.
+    const auto forEachQuad = [&](auto&& visit) {
+        for (std::size_t tile = 0; tile < lists.tileCount(); ++tile) {
+            const TileRange range = lists.tiles[tile];
+            for (std::uint32_t done = 0; done < range.count; done += kLightsPerBatch)
+                visit(TileQuad{static_cast<std::uint32_t>(tile), range.offset + done,
+                               std::min(range.count - done, kLightsPerBatch), 0});
+        }
+    };
     std::array<std::uint32_t, kVariants> perVariant{};
-    for (const TileRange& range : lists.tiles)
-        if (range.count > 0)
-            ++perVariant[variantFor(range.count)];
+    forEachQuad([&](const TileQuad& quad) { ++perVariant[variantFor(quad.lightCount)]; });
     variantFirst_[0] = 0;
     for (std::size_t v = 0; v < kVariants; ++v)
         variantFirst_[v + 1] = variantFirst_[v] + perVariant[v];
     drawOrder_.resize(variantFirst_[kVariants]);
     std::array<std::uint32_t, kVariants> cursor{};
     std::copy(variantFirst_.begin(), variantFirst_.end() - 1, cursor.begin());
-    for (std::size_t tile = 0; tile < lists.tileCount(); ++tile)
-        if (lists.tiles[tile].count > 0)
-            drawOrder_[cursor[variantFor(lists.tiles[tile].count)]++] = static_cast<std::uint32_t>(tile);
+    forEachQuad([&](const TileQuad& quad) { drawOrder_[cursor[variantFor(quad.lightCount)]++] = quad; });
 
-    upload<TileRange>(tileRanges_, "tile light ranges", lists.tiles);
-    upload<std::uint32_t>(tileOrder_, "tile draw order", drawOrder_);
+    upload<TileQuad>(tileOrder_, "tile quads", drawOrder_);
     upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
 }
 
@@ -106,7 +106,6 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
     const TileLightLists& lists = culler_.lists();
     scene.bind();
     tileOrder_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileOrderBinding);
-    tileRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileRangesBinding);
     lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
     const glm::vec2 imageSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
     // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
@@ -117,7 +116,7 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
         if (tiles == 0)
             continue;
         const gl::Program& program = variants_[v];
-        program.set(kFirstTile, variantFirst_[v]);
+        program.set(kFirstQuad, variantFirst_[v]);
         program.set(kTilesX, lists.tilesX);
         program.set(kTileSize, lists.tileSize);
         program.set(kImageSize, imageSize);

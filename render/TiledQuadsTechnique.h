@@ -9,16 +9,20 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "render/LightBatches.h"
 #include "render/Technique.h"
 #include "render/TileCulling.h"
 
 namespace manylights {
 
-// The shader variants: tiles are bucketed by their light count, and a tile with n lights is
-// drawn by the variant with the smallest bound ≥ n (the last has no bound). Its loop then
-// has a constant trip limit, which shader compilers can unroll and schedule for: the
-// classic way this technique kept per-tile loops cheap on hardware with weak dynamic loops.
-inline constexpr std::array<std::uint32_t, 8> kTileLightBounds = {8, 16, 32, 64, 128, 256, 512, 1024};
+// The shader variants: tiles are bucketed by their light count, and a quad with n lights is
+// drawn by the variant with the smallest bound ≥ n. Its loop then has a constant trip limit,
+// which shader compilers can unroll and schedule for: the classic way this technique kept
+// per-tile loops cheap on hardware with weak dynamic loops. The last bound is a light batch
+// (render/LightBatches.h): a tile with more lights is drawn as several quads, one per run of
+// that many of its lights, added together.
+inline constexpr std::array<std::uint32_t, 9> kTileLightBounds = {8, 16, 32, 64, 128, 256, 512, 1024,
+                                                                  kLightsPerBatch};
 
 class TiledQuadsTechnique : public Technique {
 public:
@@ -30,7 +34,16 @@ public:
     const TileLightLists& lastLists() const { return culler_.lists(); }
 
 private:
-    static constexpr std::size_t kVariants = kTileLightBounds.size() + 1;
+    static constexpr std::size_t kVariants = kTileLightBounds.size();
+
+    // One instance of a variant's draw: a tile and a run of its lights (std430 uvec4 of
+    // shaders/tiled_quads.vert).
+    struct TileQuad {
+        std::uint32_t tile;
+        std::uint32_t firstLight;  // in TileLightLists::lightIndices
+        std::uint32_t lightCount;
+        std::uint32_t unused;
+    };
 
     // Culls, buckets the tiles by variant and uploads what the quads read.
     void cullAndUpload(const GpuScene& scene, const FrameTargets& targets);
@@ -39,11 +52,10 @@ private:
     gl::Program global_;
     std::array<gl::Program, kVariants> variants_;
     TileCuller culler_;
-    // The tiles to draw (those with lights), grouped by variant: variant v draws
+    // The quads to draw (tiles with lights), grouped by variant: variant v draws
     // drawOrder_[variantFirst_[v] .. variantFirst_[v + 1]).
-    std::vector<std::uint32_t> drawOrder_;
+    std::vector<TileQuad> drawOrder_;
     std::array<std::uint32_t, kVariants + 1> variantFirst_{};
-    gl::Buffer tileRanges_;
     gl::Buffer tileOrder_;
     gl::Buffer lightIndices_;
 };

@@ -1,6 +1,8 @@
 #version 450 core
-// deferred: one full-screen pass, each covered pixel loops over all lights.
+// deferred: one full-screen pass per light batch (lib/light_batch.glsl), each covered pixel
+// loops over all the batch's lights.
 #include "lib/lighting.glsl"
+#include "lib/light_batch.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(early_fragment_tests) in;
@@ -10,9 +12,9 @@ void main()
 {
     Surface s = gbufferSurface(ivec2(gl_FragCoord.xy));
     vec3 V = viewVector(s.position);
-    vec3 color = shadeGlobal(s, V);
-    for (uint i = 0u; i < frame.counts.x; ++i)
+    vec3 color = isFirstLightBatch() ? shadeGlobal(s, V) : vec3(0.0);
+    for (uint i = lightBatch.x; i < lightBatch.y; ++i)
         color += shadeLocal(i, s, V);
-    recordLightEvaluations(frame.counts.x);
+    recordLightEvaluations(lightBatch.y - lightBatch.x);
     outColor = vec4(color, 1.0);
 }

@@ -2,25 +2,80 @@
 // in_range_pairs (SPEC.md §3): for every pixel holding a surface, how many lights reach it
 // (A·S > 0). The least work any technique can do; a technique's culling efficiency is this
 // over its light evaluations.
+//
+// Exact per pixel, culled per tile: one workgroup per 16x16 tile marks, in a bit mask of
+// the light batch, the lights that may reach the tile's frustum cut to its surfaces' depth
+// range (the conservative test of lib/culling.glsl), and each pixel counts the marked lights
+// that reach it with the lighting function's own test. BRUTE_FORCE marks every light, for
+// the test that checks the culling against counting every pair. One dispatch per light
+// batch, adding to the counts. Loop iterations: ≤ 2 to clear the mask, ≤ 33 to cull, and
+// ≤ 2 · 257 + one batch to count: under the bound of render/LightBatches.h.
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
+#include "lib/light_batch.glsl"
 #include "lib/gbuffer.glsl"
+#include "lib/culling.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 1, r32ui) uniform writeonly uimage2D inRangeCounts;
+layout(binding = 1, r32ui) uniform uimage2D inRangeCounts;
+
+const uint THREADS = 256u;
+
+shared uint depthMinBits;  // float bits: positive floats order like their bits
+shared uint depthMaxBits;
+shared uint candidates[LIGHTS_PER_BATCH / 32];
 
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, imageSize(inRangeCounts))))
+    bool inside = all(lessThan(pixel, imageSize(inRangeCounts)));
+    bool covered = inside && texelFetch(sceneDepth, pixel, 0).r < 1.0;
+    uint words = (lightBatch.y - lightBatch.x + 31u) / 32u;
+    for (uint w = gl_LocalInvocationIndex; w < words; w += THREADS)
+        candidates[w] = 0u;
+    if (gl_LocalInvocationIndex == 0u) {
+        depthMinBits = floatBitsToUint(3.0e38);
+        depthMaxBits = 0u;
+    }
+    barrier();
+    vec3 position = vec3(0.0);
+    if (covered) {
+        position = gbufferPosition(pixel);
+        uint depthBits = floatBitsToUint(max(viewDepth(position), 0.0));
+        atomicMin(depthMinBits, depthBits);
+        atomicMax(depthMaxBits, depthBits);
+    }
+    barrier();
+    if (depthMaxBits != 0u) {
+        TileFrustum frustum = makeTileFrustum(vec2(gl_WorkGroupID.xy * 16u),
+                                              min(vec2((gl_WorkGroupID.xy + 1u) * 16u), frame.viewport.xy),
+                                              uintBitsToFloat(depthMinBits), uintBitsToFloat(depthMaxBits));
+        for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
+#ifndef BRUTE_FORCE
+            if (!lightMayReachTile(lights[i], frustum))
+                continue;
+#endif
+            uint bit = i - lightBatch.x;
+            atomicOr(candidates[bit / 32u], 1u << (bit % 32u));
+        }
+    }
+    barrier();
+    if (!inside)
         return;
     uint count = 0u;
-    if (texelFetch(sceneDepth, pixel, 0).r < 1.0) {
-        vec3 position = gbufferPosition(pixel);
-        for (uint i = 0u; i < frame.counts.x; ++i)
-            if (lightReach(lights[i], position).w > 0.0)
-                ++count;
+    if (covered) {
+        for (uint w = 0u; w < words; ++w) {
+            uint bits = candidates[w];
+            while (bits != 0u) {
+                uint bit = uint(findLSB(bits));
+                bits &= bits - 1u;
+                if (lightReach(lights[lightBatch.x + w * 32u + bit], position).w > 0.0)
+                    ++count;
+            }
+        }
     }
+    if (!isFirstLightBatch())
+        count += imageLoad(inRangeCounts, pixel).r;
     imageStore(inRangeCounts, pixel, uvec4(count));
 }

@@ -1,15 +1,20 @@
 #version 450 core
 // tiled (Lauritzen, SIGGRAPH 2010): one workgroup per 16x16 tile. It finds the tile's
 // depth range among its surfaces, culls every light against the tile's frustum cut to that
-// range into a list in shared memory, and shades its pixels with that list.
+// range into a list in shared memory, and shades its pixels with that list. One dispatch per
+// light batch (lib/light_batch.glsl); the later ones add to the lit image. Loop iterations
+// per invocation: the culling loop (a batch / 256 ≤ 32, with the frustum's four planes), the
+// sort (≤ 55 stages of ≤ 4) and the shading loop (≤ one batch): under the bound of
+// render/LightBatches.h.
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
+#include "lib/light_batch.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/culling.glsl"
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 2, rgba32f) uniform writeonly image2D litImage;
+layout(binding = 2, rgba32f) uniform image2D litImage;
 layout(std430, binding = 6) buffer TileStatistics {
     uint overflowedTiles;  // tiles whose lights did not fit TILE_CAPACITY
 };
@@ -74,37 +79,12 @@ void main()
     if (tileDepthMax == 0u)
         return;  // no surface in this tile
 
-    // The tile's frustum: four planes through the eye (normals point inwards), cut to the
-    // depth range of its surfaces, widened slightly so rounding cannot cut a surface off.
-    float depthMin = uintBitsToFloat(tileDepthMin) * 0.999;
-    float depthMax = uintBitsToFloat(tileDepthMax) * 1.001;
-    vec2 pixelLo = vec2(gl_WorkGroupID.xy * uint(TILE_SIZE));
-    vec2 pixelHi = min(pixelLo + float(TILE_SIZE), frame.viewport.xy);
-    vec2 slopeLo = (pixelLo * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
-    vec2 slopeHi = (pixelHi * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
-    vec3 planes[4] = vec3[4](normalize(vec3(1.0, 0.0, slopeLo.x)), normalize(vec3(-1.0, 0.0, -slopeHi.x)),
-                             normalize(vec3(0.0, 1.0, slopeLo.y)), normalize(vec3(0.0, -1.0, -slopeHi.y)));
-    vec3 boxLo = vec3(min(slopeLo * depthMin, slopeLo * depthMax), -depthMax);
-    vec3 boxHi = vec3(max(slopeHi * depthMin, slopeHi * depthMax), -depthMin);
-    vec3 boxCentre = 0.5 * (boxLo + boxHi);
-    float boxRadius = 0.5 * length(boxHi - boxLo);
-
-    for (uint i = gl_LocalInvocationIndex; i < frame.counts.x; i += THREADS) {
-        GpuLight light = lights[i];
-        float radius = light.positionRadius.w;
-        if (radius <= 0.0)
+    TileFrustum frustum = makeTileFrustum(vec2(gl_WorkGroupID.xy * uint(TILE_SIZE)),
+                                          min(vec2((gl_WorkGroupID.xy + 1u) * uint(TILE_SIZE)), frame.viewport.xy),
+                                          uintBitsToFloat(tileDepthMin), uintBitsToFloat(tileDepthMax));
+    for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
+        if (!lightMayReachTile(lights[i], frustum))
             continue;
-        if (radius < UNBOUNDED_RADIUS) {
-            vec3 centre = (frame.view * vec4(light.positionRadius.xyz, 1.0)).xyz;
-            if (-centre.z - radius > depthMax || -centre.z + radius < depthMin)
-                continue;
-            if (dot(planes[0], centre) < -radius || dot(planes[1], centre) < -radius ||
-                dot(planes[2], centre) < -radius || dot(planes[3], centre) < -radius)
-                continue;
-            vec3 axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
-            if (!coneTouchesSphere(centre, axis, light.spotAxisCosCutoff.w, boxCentre, boxRadius))
-                continue;
-        }
         uint slot = atomicAdd(tileLightCount, 1u);
         if (slot < uint(TILE_CAPACITY))
             tileLights[slot] = i;
@@ -121,17 +101,19 @@ void main()
         return;
 
     vec3 V = viewVector(s.position);
-    vec3 color = shadeGlobal(s, V);
+    vec3 color = isFirstLightBatch() ? shadeGlobal(s, V) : vec3(0.0);
     if (overflowed) {
         // More lights reach the tile than its list holds: nothing is dropped, the tile's
-        // pixels evaluate every light instead (slow, and reported in --stats).
-        for (uint i = 0u; i < frame.counts.x; ++i)
+        // pixels evaluate every light of the batch instead (slow, and reported in --stats).
+        for (uint i = lightBatch.x; i < lightBatch.y; ++i)
             color += shadeLocal(i, s, V);
-        recordLightEvaluationsAt(pixel, frame.counts.x);
+        recordLightEvaluationsAt(pixel, lightBatch.y - lightBatch.x);
     } else {
         for (uint i = 0u; i < count; ++i)
             color += shadeLocal(tileLights[i], s, V);
         recordLightEvaluationsAt(pixel, count);
     }
+    if (!isFirstLightBatch())
+        color += imageLoad(litImage, pixel).rgb;
     imageStore(litImage, pixel, vec4(color, 1.0));
 }

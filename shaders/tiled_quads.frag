@@ -1,7 +1,7 @@
 #version 450 core
-// tiled-quads: the local lights of this pixel's tile, added by blending onto the global
-// terms. Compiled once per light-count bucket with MAX_TILE_LIGHTS set to the bucket's
-// bound, and once without it for the tiles beyond the largest bound.
+// tiled-quads: the local lights of this pixel's tile (a run of at most a light batch of
+// them per quad), added by blending onto the global terms. Compiled once per light-count
+// bucket with MAX_TILE_LIGHTS set to the bucket's bound.
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 
@@ -22,17 +22,12 @@ void main()
     uint first = lightRange.x;
     uint count = lightRange.y;
     vec3 color = vec3(0.0);
-#ifdef MAX_TILE_LIGHTS
-    // A constant trip limit; the CPU puts only tiles with count ≤ MAX_TILE_LIGHTS here.
+    // A constant trip limit; the CPU puts only quads with count ≤ MAX_TILE_LIGHTS here.
     for (uint i = 0u; i < MAX_TILE_LIGHTS; ++i) {
         if (i == count)
             break;
         color += shadeLocal(tileLights[first + i], s, V);
     }
-#else
-    for (uint i = 0u; i < count; ++i)
-        color += shadeLocal(tileLights[first + i], s, V);
-#endif
     recordLightEvaluations(count);
     outColor = vec4(color, 0.0);
 }

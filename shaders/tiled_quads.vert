@@ -3,16 +3,14 @@
 // (depth 1). Drawn with the depth test GL_GREATER against the scene's depth, like every
 // full-screen pass, so only the tile's pixels that hold a surface run the fragment shader.
 
-// The tiles of this draw (one light-count bucket), as tile numbers.
-layout(std430, binding = 1) readonly buffer TileOrder {
-    uint tileOrder[];
-};
-// Per tile number: (offset, count) of its lights in the index list.
-layout(std430, binding = 2) readonly buffer TileRanges {
-    uvec2 tileRanges[];
+// The quads of every draw, grouped by light-count bucket: (tile number, offset and count of
+// its run of lights in the index list, unused). A tile has one quad per run of at most a
+// light batch of its lights.
+layout(std430, binding = 1) readonly buffer TileQuads {
+    uvec4 tileQuads[];
 };
 
-layout(location = 0) uniform uint firstTile;  // where this draw's tiles begin in tileOrder
+layout(location = 0) uniform uint firstQuad;  // where this draw's quads begin in tileQuads
 layout(location = 1) uniform int tilesX;      // tiles per row
 layout(location = 2) uniform int tileSize;    // pixels
 layout(location = 3) uniform vec2 imageSize;  // pixels
@@ -21,8 +19,9 @@ layout(location = 0) flat out uvec2 lightRange;
 
 void main()
 {
-    uint tile = tileOrder[firstTile + uint(gl_InstanceID)];
-    lightRange = tileRanges[tile];
+    uvec4 quad = tileQuads[firstQuad + uint(gl_InstanceID)];
+    uint tile = quad.x;
+    lightRange = quad.yz;
     ivec2 tileXY = ivec2(int(tile) % tilesX, int(tile) / tilesX);
     // Triangle strip: (0, 0), (1, 0), (0, 1), (1, 1). The last row and column of tiles are
     // cut at the image's edge. Pixel edges lie half a pixel from every pixel centre, so the

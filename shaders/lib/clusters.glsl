@@ -1,95 +1,92 @@
 // The cluster grid of the clustered technique (render/ClusteredTechnique.h): screen tiles of
-// CLUSTER_TILE_SIZE pixels times CLUSTER_SLICES depth slices spaced exponentially between
-// the nearest and the farthest visible surface of the frame (found by
-// cluster_depth_range.comp), so that no slice is spent on empty depth before or after the
-// scene.
+// CLUSTER_TILE_SIZE pixels, each cut into CLUSTER_SLICES depth slices spaced exponentially
+// from the nearest surface seen through that tile to the farthest (so no slice is spent on
+// empty depth before or after the tile's surfaces).
 //
-// Per cluster: an occupancy flag (does any pixel's surface fall in it), the number of lights
-// that reach it, and the offset of its list in one global index buffer.
-layout(std430, binding = 2) buffer ClusterOccupancy {
-    uint clusterOccupied[];
+// Per tile: its depth range and which of its slices hold a surface. Per cluster and light
+// batch: a bit mask over the batch's lights (bit i: light first + i may reach the cluster)
+// and, one bit per mask word, which words are not empty, so that shading skips empty words.
+// Bit masks rather than lists: building them needs no counting pass, prefix sum or sort,
+// their size is known before the frame (nothing can overflow, nothing is read back), and a
+// pixel walks its lights in index order, the order forward adds them in.
+layout(std430, binding = 2) buffer ClusterTileDepths {
+    vec2 tileDepthRange[];  // view depth of the tile's slice 0 start and last slice end; 0 when empty
 };
-layout(std430, binding = 3) buffer ClusterCounts {
-    uint clusterCounts[];
+layout(std430, binding = 3) buffer ClusterTileSlices {
+    uint tileOccupiedSlices[];  // bit k: slice k holds at least one pixel's surface
 };
-layout(std430, binding = 4) buffer ClusterOffsets {
-    uint clusterOffsets[];  // one more entry than clusters: the total
+layout(std430, binding = 4) buffer ClusterLightMasks {
+    uint clusterLightMasks[];  // cluster c, word w: [c * clusterMaskWords() + w]
 };
-layout(std430, binding = 5) buffer ClusterLightIndices {
-    uint clusterLightIndices[];
-};
-layout(std430, binding = 7) buffer ClusterDepthRange {
-    uint sceneDepthBits[2];  // nearest and farthest surface depth, as float bits
+layout(std430, binding = 5) buffer ClusterMaskSummaries {
+    uint clusterMaskSummaries[];  // cluster c: [c * clusterSummaryWords() + w / 32], bit w % 32
 };
 
-// The depth range the slices span, widened a little so that rounding cannot put the
-// nearest or farthest surface outside it.
-float slicedNear()
+uvec2 clusterTileGrid()
 {
-    return max(uintBitsToFloat(sceneDepthBits[0]) * 0.99, frame.projection.z * 0.5);
+    return (uvec2(frame.viewport.xy) + uint(CLUSTER_TILE_SIZE - 1)) / uint(CLUSTER_TILE_SIZE);
 }
 
-float slicedFar()
+uint clusterTileOfPixel(uvec2 pixel)
 {
-    return max(uintBitsToFloat(sceneDepthBits[1]) * 1.01, slicedNear() * 1.01);
+    uvec2 tile = pixel / uint(CLUSTER_TILE_SIZE);
+    return tile.y * clusterTileGrid().x + tile.x;
 }
 
-uvec3 clusterGridSize()
+// The log of the depth ratio from one slice to the next in a tile spanning `range`: the
+// range divided evenly in log space. (A floor on the ratio, slices no thinner than 5% of
+// their depth, was measured: it culled worse and shaded slower, docs/techniques.md.)
+float sliceLogRatio(vec2 range)
 {
-    return uvec3((uvec2(frame.viewport.xy) + uint(CLUSTER_TILE_SIZE - 1)) / uint(CLUSTER_TILE_SIZE),
-                 uint(CLUSTER_SLICES));
+    return log(range.y / range.x) / float(CLUSTER_SLICES);
 }
 
-uint clusterIndex(uvec3 cluster)
+// The slice coordinate of view depth z in a tile spanning `range`: slice k holds
+// k ≤ coordinate < k + 1. Depths outside the range fall in the end slices.
+float sliceCoordinate(float z, vec2 range)
 {
-    uvec3 grid = clusterGridSize();
-    return (cluster.z * grid.y + cluster.y) * grid.x + cluster.x;
+    return log(max(z, range.x) / range.x) / sliceLogRatio(range);
 }
 
-// The slice holding view depth z; depths outside [near, far] fall in the end slices.
-uint sliceOfDepth(float z)
+uint sliceOfDepth(float z, vec2 range)
 {
-    float near = slicedNear();
-    float far = slicedFar();
-    float slice = floor(log(max(z, near) / near) / log(far / near) * float(CLUSTER_SLICES));
-    return uint(clamp(slice, 0.0, float(CLUSTER_SLICES - 1)));
+    return uint(clamp(floor(sliceCoordinate(z, range)), 0.0, float(CLUSTER_SLICES - 1)));
 }
 
-// The view depth where slice k begins.
-float sliceStart(uint k)
+// Words of one cluster's mask, and of its summary, for the current light batch.
+uint clusterMaskWords()
 {
-    float near = slicedNear();
-    float far = slicedFar();
-    return near * pow(far / near, float(k) / float(CLUSTER_SLICES));
+    return (lightBatch.y - lightBatch.x + 31u) / 32u;
 }
 
-uvec3 clusterOfPixel(vec2 pixel, float depth)
+uint clusterSummaryWords()
 {
-    return uvec3(uvec2(pixel) / uint(CLUSTER_TILE_SIZE), sliceOfDepth(depth));
+    return (clusterMaskWords() + 31u) / 32u;
 }
 
-// The view-space box around a cluster (the camera looks down -Z). It is grown by a small
-// margin: a pixel is assigned its cluster with floating-point logs, so a surface on a slice
-// boundary must be inside the boxes of both neighbours, or a light could miss it.
-void clusterBox(uvec3 cluster, out vec3 lo, out vec3 hi)
+// The view-space box around the part of tile `tile`'s frustum between view depths zNear and
+// zFar (the camera looks down -Z), grown by a small margin: a pixel finds its slice with
+// floating-point logs, so a surface on a slice boundary must be inside the boxes of both
+// neighbours, or a light could miss it.
+void tileFrustumBox(uint tile, float zNear, float zFar, out vec3 lo, out vec3 hi)
 {
-    vec2 pixelLo = vec2(cluster.xy * uint(CLUSTER_TILE_SIZE));
+    uvec2 grid = clusterTileGrid();
+    vec2 pixelLo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(CLUSTER_TILE_SIZE));
     vec2 pixelHi = min(pixelLo + float(CLUSTER_TILE_SIZE), frame.viewport.xy);
-    vec2 ndcLo = pixelLo * frame.viewport.zw * 2.0 - 1.0;
-    vec2 ndcHi = pixelHi * frame.viewport.zw * 2.0 - 1.0;
-    float zNear = sliceStart(cluster.z);
-    float zFar = cluster.z + 1u == uint(CLUSTER_SLICES) ? slicedFar() : sliceStart(cluster.z + 1u);
-    if (cluster.z == 0u)
-        zNear = 0.0;  // everything in front of the first boundary, the eye included
+    vec2 slopeLo = (pixelLo * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
+    vec2 slopeHi = (pixelHi * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
     zNear *= 0.999;
     zFar *= 1.001;
-    lo = vec3(1e30);
-    hi = vec3(-1e30);
-    for (int corner = 0; corner < 8; ++corner) {
-        vec2 ndc = vec2((corner & 1) != 0 ? ndcHi.x : ndcLo.x, (corner & 2) != 0 ? ndcHi.y : ndcLo.y);
-        float z = (corner & 4) != 0 ? zFar : zNear;
-        vec3 p = vec3(ndc * frame.projection.xy * z, -z);
-        lo = min(lo, p);
-        hi = max(hi, p);
-    }
+    lo = vec3(min(slopeLo * zNear, slopeLo * zFar), -zFar);
+    hi = vec3(max(slopeHi * zNear, slopeHi * zFar), -zNear);
+}
+
+// The box of slice k of a tile spanning `range`; the first reaches back to the range's
+// start and the last on to its end.
+void clusterBox(uint tile, vec2 range, uint k, out vec3 lo, out vec3 hi)
+{
+    float logRatio = sliceLogRatio(range);
+    float zNear = k == 0u ? range.x : range.x * exp(logRatio * float(k));
+    float zFar = k + 1u == uint(CLUSTER_SLICES) ? range.y : min(range.x * exp(logRatio * float(k + 1u)), range.y);
+    tileFrustumBox(tile, zNear, max(zFar, zNear), lo, hi);
 }

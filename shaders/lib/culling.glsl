@@ -21,3 +21,49 @@ bool coneTouchesSphere(vec3 apex, vec3 axis, float cosCutoff, vec3 centre, float
     float distanceToCone = cosCutoff * across - sinCutoff * along;
     return distanceToCone <= radius * 1.001 + 1e-4 && along >= -radius;
 }
+
+// A screen tile's frustum (pixels pixelLo..pixelHi) cut to the view-depth range of the
+// surfaces seen through it: four planes through the eye (normals point inwards) and the
+// depth range, widened slightly so rounding cannot cut a surface off, and a sphere around
+// the cut frustum's bounding box for the cone test.
+struct TileFrustum {
+    vec3 planes[4];
+    float depthMin;
+    float depthMax;
+    vec3 boxCentre;
+    float boxRadius;
+};
+
+TileFrustum makeTileFrustum(vec2 pixelLo, vec2 pixelHi, float depthMin, float depthMax)
+{
+    TileFrustum tile;
+    tile.depthMin = depthMin * 0.999;
+    tile.depthMax = depthMax * 1.001;
+    vec2 slopeLo = (pixelLo * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
+    vec2 slopeHi = (pixelHi * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
+    tile.planes = vec3[4](normalize(vec3(1.0, 0.0, slopeLo.x)), normalize(vec3(-1.0, 0.0, -slopeHi.x)),
+                          normalize(vec3(0.0, 1.0, slopeLo.y)), normalize(vec3(0.0, -1.0, -slopeHi.y)));
+    vec3 boxLo = vec3(min(slopeLo * tile.depthMin, slopeLo * tile.depthMax), -tile.depthMax);
+    vec3 boxHi = vec3(max(slopeHi * tile.depthMin, slopeHi * tile.depthMax), -tile.depthMin);
+    tile.boxCentre = 0.5 * (boxLo + boxHi);
+    tile.boxRadius = 0.5 * length(boxHi - boxLo);
+    return tile;
+}
+
+// Whether `light` may reach a surface in the tile's frustum (conservative).
+bool lightMayReachTile(GpuLight light, TileFrustum tile)
+{
+    float radius = light.positionRadius.w;
+    if (radius <= 0.0)
+        return false;
+    if (radius >= UNBOUNDED_RADIUS)
+        return true;
+    vec3 centre = (frame.view * vec4(light.positionRadius.xyz, 1.0)).xyz;
+    if (-centre.z - radius > tile.depthMax || -centre.z + radius < tile.depthMin)
+        return false;
+    for (int i = 0; i < 4; ++i)
+        if (dot(tile.planes[i], centre) < -radius)
+            return false;
+    vec3 axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
+    return coneTouchesSphere(centre, axis, light.spotAxisCosCutoff.w, tile.boxCentre, tile.boxRadius);
+}

@@ -15,6 +15,7 @@
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
 #include "render/GBuffer.h"
+#include "render/LightBatches.h"
 #include "core/Error.h"
 
 namespace manylights {
@@ -190,6 +191,74 @@ TEST_F(GlTest, QueriesCountFragmentsAndTime)
     EXPECT_GE(counted, 16u * 8u);
     EXPECT_LE(counted, 2u * 16u * 8u);
     EXPECT_GT(time.result(), 0u);
+}
+
+}  // namespace
+}  // namespace manylights
+
+namespace manylights {
+namespace {
+
+// What render/LightBatches.h works around: how many iterations a compute invocation really
+// runs of a loop asked to run `requested` times, nested `inner` deep per iteration (inner
+// loops with a trip count from a uniform, which no compiler can unroll).
+std::uint32_t iterationsRun(std::uint32_t requested, std::uint32_t inner)
+{
+    auto reader = memoryReader({{"loop.comp", R"(#version 450 core
+layout(local_size_x = 1) in;
+layout(location = 0) uniform uint requested;
+layout(location = 1) uniform uint inner;
+layout(std430, binding = 0) buffer Result { uint iterations; uint innerIterations; };
+void main()
+{
+    uint count = 0u;
+    uint innerCount = 0u;
+    for (uint i = 0u; i < requested; ++i) {
+#ifdef NESTED
+        for (uint j = 0u; j < inner; ++j)
+            ++innerCount;
+#endif
+        ++count;
+    }
+    iterations = count;
+    innerIterations = innerCount;
+}
+)"}});
+    gl::Defines defines;
+    if (inner > 0)
+        defines.emplace_back("NESTED", "1");
+    const gl::Program program("loop limit", {{GL_COMPUTE_SHADER, "loop.comp"}}, defines, reader);
+    gl::Buffer result("loop result", 2 * sizeof(std::uint32_t), nullptr);
+    result.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    program.set(0, requested);
+    program.set(1, inner);
+    program.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t iterations = 0;
+    glGetNamedBufferSubData(result.id(), 0, sizeof(iterations), &iterations);
+    return iterations;
+}
+
+class LoopLimit : public GlContextTest {};
+
+TEST_F(LoopLimit, LlvmpipeEndsLoopsAfter65535IterationsInAll)
+{
+    // Every driver runs a loop of 16,384 iterations (render/LightBatches.h's bound), nested
+    // loops included.
+    EXPECT_EQ(iterationsRun(kMaxLoopIterations, 0), kMaxLoopIterations);
+    EXPECT_EQ(iterationsRun(kMaxLoopIterations / 4, 3), kMaxLoopIterations / 4);
+    const std::uint32_t ran = iterationsRun(70000, 0);
+    if (context().description().find("llvmpipe") == std::string::npos) {
+        EXPECT_EQ(ran, 70000u) << "a conformant driver without a loop limiter";
+        return;
+    }
+    // llvmpipe stops at 65,535 without an error: the reason no shader here loops over every
+    // light. The limit counts the iterations of all loops of the invocation together, and a
+    // nested loop's final test counts as one more: with 3 inner iterations per outer one, each
+    // outer iteration costs 1 + 3 + 1 of the 65,535.
+    EXPECT_EQ(ran, 65535u);
+    EXPECT_EQ(iterationsRun(70000, 3), 65535u / 5);
 }
 
 }  // namespace

@@ -37,19 +37,24 @@ TEST(Overflow, TiledListsOverflowAndStillMatchForward)
     EXPECT_GT(lit, 1000);
 }
 
-TEST(Overflow, ClusteredListsGrowWithTheLights)
+TEST(Overflow, ClusteredMasksHoldEveryLightInEveryCluster)
 {
-    // The clustered index buffer has no fixed capacity: with every light in every cluster
-    // it holds lights × occupied clusters entries, and the image still matches forward.
+    // The clustered masks have a bit for every light of a batch, so a cluster reached by all
+    // of them keeps all of them: every covered pixel evaluates all 1200 lights, exactly the
+    // pairs in range, and the image matches forward.
     const auto dir = test::scratchDirectory();
     const std::string scene = MANYLIGHTS_SOURCE_DIR "/tests/scenes/every_light_everywhere.json";
     const Image forward = test::renderPfm(scene, dir / "forward.pfm", {"--size", "64x48", "--technique", "forward"});
-    const Image clustered = test::renderPfm(scene, dir / "clustered.pfm",
-                                            {"--size", "64x48", "--gbuffer", "seed", "--technique", "clustered", "--stats",
-                                             (dir / "stats.json").string()});
+    const Image clustered =
+        test::renderPfm(scene, dir / "clustered.pfm",
+                        {"--size", "64x48", "--gbuffer", "seed", "--technique", "clustered", "--count-work", "--stats",
+                         (dir / "stats.json").string()});
     std::ifstream in(dir / "stats.json");
     const nlohmann::json stats = nlohmann::json::parse(in);
-    EXPECT_GE(stats["cluster_light_indices"].get<double>(), 1200.0 * 4.0);
+    const auto inRange = stats["in_range_pairs"].get<std::uint64_t>();
+    EXPECT_GT(inRange, 1200u * 1000u);
+    EXPECT_EQ(inRange % 1200u, 0u);
+    EXPECT_EQ(stats["light_evaluations"].get<std::uint64_t>(), inRange);
     for (std::size_t i = 0; i < forward.rgb.size(); ++i)
         ASSERT_NEAR(clustered.rgb[i], forward.rgb[i], 1e-5 * std::abs(forward.rgb[i]) + 1e-6) << "value " << i;
 }

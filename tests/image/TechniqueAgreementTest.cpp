@@ -23,7 +23,9 @@
 // compact layout against the seed layout.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "TestSupport.h"
 #include "render/Technique.h"
@@ -179,6 +181,32 @@ INSTANTIATE_TEST_SUITE_P(
                       // and SSAO: every technique samples the same maps at the same positions.
                       AgreementCase{"shadows_and_ssao", kScenes + "shadows_and_ssao.json",
                                     {"--size", "160x120", "--shadow-lights", "24"}}),
+    [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
+
+// The sizes people render at. A light whose sphere covers much of the view reaches tens of
+// thousands of clusters there, and clustered once dropped such lights from 640x480 up while
+// matching forward at every thumbnail size above (issue 11): the camera cases and a big
+// light again, at 1280x720 and 800x600.
+AgreementCase atSize(const std::string& scene, const std::string& size)
+{
+    std::string sizeName = size;
+    std::replace(sizeName.begin(), sizeName.end(), 'x', '_');
+    return AgreementCase{std::filesystem::path(scene).stem().string() + "_" + sizeName, kScenes + scene, {"--size", size}};
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    UserSizes, TechniqueAgreement,
+    ::testing::Values(atSize("big_light.json", "1280x720"), atSize("big_light.json", "800x600"),
+                      atSize("camera_inside_point_light.json", "1280x720"),
+                      atSize("camera_inside_point_light.json", "800x600"),
+                      atSize("camera_inside_spot_cone.json", "1280x720"),
+                      atSize("camera_inside_spot_cone.json", "800x600"),
+                      atSize("light_cut_by_near_plane.json", "1280x720"),
+                      atSize("light_cut_by_near_plane.json", "800x600"),
+                      atSize("light_beyond_far_plane.json", "1280x720"),
+                      atSize("light_beyond_far_plane.json", "800x600"), atSize("spot_cutoff_120.json", "1280x720"),
+                      atSize("spot_cutoff_120.json", "800x600"), atSize("unbounded_light.json", "1280x720"),
+                      atSize("unbounded_light.json", "800x600"), atSize("spots_and_points.json", "1280x720")),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace

@@ -1,0 +1,39 @@
+#include "render/LightBatches.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/Error.h"
+#include "render/ShadowMaps.h"
+
+namespace manylights {
+
+// A pixel's worst case: a batch of lights with their bit-mask walk, and the directional and
+// every shadowed local light through a 3x3 filter of 3 + 1 outer and 3 · (3 + 1) inner
+// iterations.
+static_assert(kLightsPerBatch + 2 * (kLightsPerBatch / 32) + 64 + 16 * (kMaxShadowLights + 1) <= kMaxLoopIterations);
+
+std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t perBatch)
+{
+    ML_ASSERT(perBatch > 0 && perBatch <= kLightsPerBatch);
+    std::vector<LightBatch> batches;
+    std::uint32_t first = 0;
+    do {
+        const std::uint32_t end = first + std::min(perBatch, lightCount - first);
+        batches.push_back({first, end});
+        first = end;
+    } while (first < lightCount);
+    return batches;
+}
+
+void setLightBatch(const gl::Program& program, const LightBatch& batch)
+{
+    glProgramUniform2ui(program.id(), kLightBatchLocation, batch.first, batch.end);
+}
+
+void addLightBatchDefines(gl::Defines& defines)
+{
+    defines.emplace_back("LIGHT_BATCH_LOCATION", std::to_string(kLightBatchLocation));
+}
+
+}  // namespace manylights

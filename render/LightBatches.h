@@ -1,0 +1,55 @@
+// Light batches: why no shader loops over more than kLightsPerBatch lights.
+//
+// Mesa's llvmpipe ends every shader loop without a word once one invocation has run 65,535
+// iterations of all its loops together (gallivm's loop limiter, LP_MAX_TGSI_LOOP_ITERATIONS:
+// one counter per invocation, decremented at the end of every iteration of every loop);
+// tests/gl/GlTest.cpp (LoopLimit) shows it. A pixel that looped over 131,072 lights in one
+// invocation silently got the first 65,535 of them. So every pass whose per-pixel loop runs
+// over lights takes at most kLightsPerBatch of them, with the batch's bounds in a uniform
+// (shaders/lib/light_batch.glsl); a frame with more lights runs the pass once per batch,
+// adding to the lit image. The first batch also adds the light-independent terms.
+//
+// The rule for every shader in this project: no invocation iterates more than
+// kMaxLoopIterations times in all, whatever the scene, size or light count. A batch's loops
+// stay under it with room for the iterations around them: word walks of bit masks and
+// per-tile culling, which each shader's comment counts, and the 3x3 shadow filters of
+// shaders/lib/shadows.glsl (at most 13 iterations each, should a compiler not unroll them)
+// for the shadowed lights, at most kMaxShadowLights (LightBatches.cpp checks the sum).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gl/Program.h"
+
+namespace manylights {
+
+inline constexpr std::uint32_t kMaxLoopIterations = 16384;
+inline constexpr std::uint32_t kLightsPerBatch = 8192;
+static_assert(kLightsPerBatch + 2 * (kLightsPerBatch / 32) + 64 <= kMaxLoopIterations,
+              "a batch's light loop and its bit-mask word walk must fit the iteration bound");
+
+// Location of `lightBatch` in shaders/lib/light_batch.glsl (the shaders get it as
+// LIGHT_BATCH_LOCATION, so the number lives here only).
+inline constexpr int kLightBatchLocation = 40;
+
+// Lights [first, end) of the scene's light buffer.
+struct LightBatch {
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+
+    bool isFirst() const { return first == 0; }
+    std::uint32_t size() const { return end - first; }
+};
+
+// The batches that cover `lightCount` lights, `perBatch` at most each, in order. Always at
+// least one, so that a scene without local lights still gets its light-independent terms.
+std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t perBatch = kLightsPerBatch);
+
+// Makes `batch` the one `program` loops over.
+void setLightBatch(const gl::Program& program, const LightBatch& batch);
+
+// LIGHT_BATCH_LOCATION, for programs that include lib/light_batch.glsl.
+void addLightBatchDefines(gl::Defines& defines);
+
+}  // namespace manylights

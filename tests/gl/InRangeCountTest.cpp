@@ -1,0 +1,50 @@
+// in_range_pairs, the least work any technique can do, is counted per pixel over the lights
+// a per-tile cull keeps (shaders/in_range.comp): minutes of brute force became seconds. The
+// cull may only skip lights that reach no pixel of the tile, so the count must equal the
+// brute-force count, every light tested at every pixel, exactly.
+#include <gtest/gtest.h>
+
+#include "GlContextTest.h"
+#include "render/Renderer.h"
+#include "render/Technique.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+namespace {
+
+struct InRangeCase {
+    std::string scene;  // under the source tree
+    std::optional<int> lights;
+    int width;
+    int height;
+};
+
+class InRangeCount : public GlContextTest, public ::testing::WithParamInterface<InRangeCase> {};
+
+TEST_P(InRangeCount, CulledCountEqualsBruteForce)
+{
+    const InRangeCase& c = GetParam();
+    const Scene scene = loadSceneFile(std::string(MANYLIGHTS_SOURCE_DIR) + "/" + c.scene);
+    const std::vector<Light> lights = expandLights(scene, c.lights);
+    Renderer renderer(scene, lights, c.width, c.height);
+    renderer.setCountWork(true);
+    const std::unique_ptr<Technique> technique = makeTechnique("deferred", {.countWork = true});
+    renderer.renderFrame(*technique, ViewMode::Final);
+    const std::uint64_t culled = renderer.lastWorkCounts().inRangePairs;
+    renderer.setInRangeBruteForce(true);
+    renderer.renderFrame(*technique, ViewMode::Final);
+    const std::uint64_t bruteForce = renderer.lastWorkCounts().inRangePairs;
+    EXPECT_GT(bruteForce, 1000u);
+    EXPECT_EQ(culled, bruteForce);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, InRangeCount,
+                         ::testing::Values(InRangeCase{"bench/courtyard.json", 4096, 640, 360},
+                                           InRangeCase{"tests/scenes/spots_and_points.json", 300, 160, 120},
+                                           InRangeCase{"tests/scenes/big_light.json", std::nullopt, 320, 240},
+                                           InRangeCase{"tests/scenes/camera_inside_spot_cone.json", std::nullopt,
+                                                       160, 120}));
+
+}  // namespace
+}  // namespace manylights
