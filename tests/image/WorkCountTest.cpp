@@ -156,7 +156,7 @@ TEST(WorkCounts, TiledAndClusteredCullingOnTheBenchmarkScene)
 {
     // The benchmark courtyard at 4096 lights, whose radii keep the lights per pixel
     // constant. Measured: clustered 2.5 x and tiled 4.7 x the in-range pairs at this size
-    // (1.8 x and 3.0 x at 1280x720); the bounds leave room for scene tweaks, not for a
+    // (1.7 x and 3.0 x at 1280x720); the bounds leave room for scene tweaks, not for a
     // culling bug, which costs whole multiples.
     const auto dir = test::scratchDirectory();
     const std::string scene = MANYLIGHTS_SOURCE_DIR "/bench/courtyard.json";
