@@ -34,6 +34,8 @@ GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupS
 
 std::uint32_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
 
+int tilesAlong(int pixels) { return (pixels + kClusterTileSize - 1) / kClusterTileSize; }
+
 }  // namespace
 
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
@@ -47,17 +49,16 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
 
 std::uint32_t ClusteredTechnique::lightsPerBatch(int width, int height)
 {
-    const auto tiles = static_cast<std::size_t>((width + kClusterTileSize - 1) / kClusterTileSize) *
-                       static_cast<std::size_t>((height + kClusterTileSize - 1) / kClusterTileSize);
-    const std::size_t clusters = tiles * kClusterSlices;
+    const std::size_t clusters =
+        static_cast<std::size_t>(tilesAlong(width)) * static_cast<std::size_t>(tilesAlong(height)) * kClusterSlices;
     const std::size_t affordableWords = kClusterMaskBudgetBytes / (sizeof(std::uint32_t) * clusters);
     return static_cast<std::uint32_t>(std::clamp<std::size_t>(affordableWords * 32, 32, kLightsPerBatch));
 }
 
-void ClusteredTechnique::resizeGrid(int width, int height, std::uint32_t lightCount)
+void ClusteredTechnique::resizeGrid(int width, int height, std::uint32_t largestBatch)
 {
-    gridWidth_ = (width + kClusterTileSize - 1) / kClusterTileSize;
-    gridHeight_ = (height + kClusterTileSize - 1) / kClusterTileSize;
+    gridWidth_ = tilesAlong(width);
+    gridHeight_ = tilesAlong(height);
     const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
     clusterCount_ = tiles * kClusterSlices;
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
@@ -66,13 +67,21 @@ void ClusteredTechnique::resizeGrid(int width, int height, std::uint32_t lightCo
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, 0);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
-    const std::uint32_t words = wordsFor(std::min(lightCount, lightsPerBatch(width, height)));
-    const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * std::max(words, 1u);
-    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * std::max(wordsFor(words), 1u);
+    const std::uint32_t words = std::max(wordsFor(largestBatch), 1u);
+    const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * words;
+    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * wordsFor(words);
     if (!masks_ || masks_.size() < maskBytes)
         masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
     if (!summaries_ || summaries_.size() < summaryBytes)
         summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
+}
+
+void ClusteredTechnique::bindGrid() const
+{
+    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
+    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+    masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
+    summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
 }
 
 void ClusteredTechnique::findTileRanges(const GpuScene& scene, FrameTargets& targets)
@@ -80,8 +89,7 @@ void ClusteredTechnique::findTileRanges(const GpuScene& scene, FrameTargets& tar
     scene.bind();
     targets.gbuffer.bindForReading();
     targets.depthStencil.bindUnit(kDepthUnit);
-    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
-    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+    bindGrid();
     tiles_.use();
     glDispatchCompute(groupsFor(static_cast<std::uint32_t>(gridWidth_ * gridHeight_), kTileGroupSize), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -101,10 +109,7 @@ void ClusteredTechnique::assignLights(const GpuScene& scene, const LightBatch& b
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scene.bind();
-    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
-    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
-    masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
-    summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+    bindGrid();
     setLightBatch(assign_, batch);
     // Bands of whole rows, at most kTilesPerBand tiles (the shader's loop bound).
     const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth_));
@@ -123,12 +128,12 @@ std::vector<TechniqueCounter> ClusteredTechnique::counters() const
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
 {
     targets.gbuffer.fill(scene, profiler);
-    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
-    const std::vector<LightBatch> batches = lightBatches(lightCount, lightsPerBatch(targets.width, targets.height));
+    const std::vector<LightBatch> batches =
+        lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(targets.width, targets.height));
     batchCount_ = static_cast<std::uint32_t>(batches.size());
     {
         auto pass = profiler.pass("clusters");
-        resizeGrid(targets.width, targets.height, lightCount);
+        resizeGrid(targets.width, targets.height, batches.front().size());
         findTileRanges(scene, targets);
     }
     for (const LightBatch& batch : batches) {
@@ -137,10 +142,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
             assignLights(scene, batch);
         }
         auto pass = profiler.pass("lighting");
-        masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
-        summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
-        tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
-        tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
+        bindGrid();
         shadeCoveredPixels(scene, targets, lighting_, batch);
     }
 }

@@ -40,7 +40,9 @@ public:
     static std::uint32_t lightsPerBatch(int width, int height);
 
 private:
-    void resizeGrid(int width, int height, std::uint32_t lightCount);
+    // Sizes the grid's buffers for the image and the frame's largest light batch.
+    void resizeGrid(int width, int height, std::uint32_t largestBatch);
+    void bindGrid() const;
     void findTileRanges(const GpuScene& scene, FrameTargets& targets);
     void assignLights(const GpuScene& scene, const LightBatch& batch);
 

@@ -20,13 +20,10 @@ void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::
                         const LightBatch& batch)
 {
     targets.litFramebuffer.bind();
-    if (batch.isFirst()) {
+    if (batch.isFirst())
         glDisable(GL_BLEND);
-    } else {
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
-    }
+    else
+        beginAddingToCoveredPixels();
     scene.bind();
     targets.gbuffer.bindForReading();
     setLightBatch(program, batch);

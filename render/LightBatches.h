@@ -25,9 +25,7 @@
 namespace manylights {
 
 inline constexpr std::uint32_t kMaxLoopIterations = 16384;
-inline constexpr std::uint32_t kLightsPerBatch = 8192;
-static_assert(kLightsPerBatch + 2 * (kLightsPerBatch / 32) + 64 <= kMaxLoopIterations,
-              "a batch's light loop and its bit-mask word walk must fit the iteration bound");
+inline constexpr std::uint32_t kLightsPerBatch = 8192;  // LightBatches.cpp checks it against the bound
 
 // Location of `lightBatch` in shaders/lib/light_batch.glsl (the shaders get it as
 // LIGHT_BATCH_LOCATION, so the number lives here only).

@@ -19,7 +19,7 @@ constexpr GLint kFirstQuad = 0;
 constexpr GLint kTilesX = 1;
 constexpr GLint kTileSize = 2;
 constexpr GLint kImageSize = 3;
-constexpr GLuint kTileOrderBinding = 1;
+constexpr GLuint kTileQuadsBinding = 1;
 constexpr GLuint kTileLightsBinding = 3;
 
 gl::Program makeVariant(const TechniqueOptions& options, std::size_t variant)
@@ -95,7 +95,7 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     std::copy(variantFirst_.begin(), variantFirst_.end() - 1, cursor.begin());
     forEachQuad([&](const TileQuad& quad) { drawOrder_[cursor[variantFor(quad.lightCount)]++] = quad; });
 
-    upload<TileQuad>(tileOrder_, "tile quads", drawOrder_);
+    upload<TileQuad>(tileQuads_, "tile quads", drawOrder_);
     upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
 }
 
@@ -105,7 +105,7 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
         return;
     const TileLightLists& lists = culler_.lists();
     scene.bind();
-    tileOrder_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileOrderBinding);
+    tileQuads_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileQuadsBinding);
     lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
     const glm::vec2 imageSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
     // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the

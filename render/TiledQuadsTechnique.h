@@ -56,7 +56,7 @@ private:
     // drawOrder_[variantFirst_[v] .. variantFirst_[v + 1]).
     std::vector<TileQuad> drawOrder_;
     std::array<std::uint32_t, kVariants + 1> variantFirst_{};
-    gl::Buffer tileOrder_;
+    gl::Buffer tileQuads_;
     gl::Buffer lightIndices_;
 };
 

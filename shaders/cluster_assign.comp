@@ -6,7 +6,7 @@
 // invocation's work small and alike: a light that covers the whole screen is spread over all
 // bands instead of walking every cluster on one thread. A band has rowsPerBand rows, at most
 // 1,024 tiles in all (render/ClusteredTechnique.cpp), so loop iterations per invocation stay
-// under (1,024 + 2 · rowsPerBand) · (CLUSTER_SLICES + 2), about 10,300, within the bound of
+// under 1,025 tiles · (CLUSTER_SLICES + 1) slices, about 9,200, within the bound of
 // render/LightBatches.h.
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
@@ -45,11 +45,63 @@ bool sphereTileRect(vec3 centre, float radius, uvec2 grid, out uvec2 first, out 
     return true;
 }
 
-// Whether a light's sphere and cone can reach the view-space box lo..hi.
-bool lightTouchesBox(vec3 centre, float radius, vec3 axis, float cosCutoff, vec3 lo, vec3 hi)
+// A light of the batch as the culling sees it, in view space.
+struct ViewLight {
+    vec3 centre;
+    float radius;
+    bool unbounded;  // reaches every surface: no test can reject it
+    vec3 axis;       // a spot's unit axis
+    float cosCutoff;  // a spot's cos(cutoff); -2 for point lights
+};
+
+// Whether the light's sphere and cone can reach the view-space box lo..hi.
+bool lightTouchesBox(ViewLight light, vec3 lo, vec3 hi)
 {
-    return sphereTouchesBox(centre, radius, lo, hi) &&
-           coneTouchesSphere(centre, axis, cosCutoff, 0.5 * (lo + hi), 0.5 * length(hi - lo));
+    return light.unbounded ||
+           (sphereTouchesBox(light.centre, light.radius, lo, hi) &&
+            coneTouchesSphere(light.centre, light.axis, light.cosCutoff, 0.5 * (lo + hi), 0.5 * length(hi - lo)));
+}
+
+// The box around slice k of a tile whose pixels are pixelLo..pixelHi and whose slices span
+// `range`: the first slice reaches back to the range's start and the last on to its end.
+void sliceBox(vec2 pixelLo, vec2 pixelHi, vec2 range, uint k, out vec3 lo, out vec3 hi)
+{
+    float logRatio = sliceLogRatio(range);
+    float zNear = k == 0u ? range.x : range.x * exp(logRatio * float(k));
+    float zFar = k + 1u == uint(CLUSTER_SLICES) ? range.y : min(range.x * exp(logRatio * float(k + 1u)), range.y);
+    frustumSectionBox(pixelLo, pixelHi, zNear, max(zFar, zNear), lo, hi);
+}
+
+// Sets the light's bit (`word`, `wordBit` of the batch's masks) in every occupied cluster
+// of `tile` that the light may reach.
+void addLightToTile(ViewLight light, uint tile, uint word, uint wordBit)
+{
+    uint slices = tileOccupiedSlices[tile];
+    if (slices == 0u)
+        return;
+    vec2 range = tileDepthRange[tile];
+    uvec2 pixelLo;
+    uvec2 pixelHi;
+    clusterTilePixels(tile, pixelLo, pixelHi);
+    vec3 lo;
+    vec3 hi;
+    // The whole tile first: most lights that reach its rectangle miss its surfaces' depths.
+    frustumSectionBox(vec2(pixelLo), vec2(pixelHi), range.x, range.y, lo, hi);
+    if (!lightTouchesBox(light, lo, hi))
+        return;
+    uint words = clusterMaskWords();
+    uint summaryWords = clusterSummaryWords();
+    while (slices != 0u) {
+        uint k = uint(findLSB(slices));
+        slices &= slices - 1u;
+        sliceBox(vec2(pixelLo), vec2(pixelHi), range, k, lo, hi);
+        if (!lightTouchesBox(light, lo, hi))
+            continue;
+        uint cluster = tile * uint(CLUSTER_SLICES) + k;
+        // The first bit set in a word marks the word in the summary.
+        if (atomicOr(clusterLightMasks[cluster * words + word], wordBit) == 0u)
+            atomicOr(clusterMaskSummaries[cluster * summaryWords + word / 32u], 1u << (word % 32u));
+    }
 }
 
 void main()
@@ -59,57 +111,29 @@ void main()
     uint lightIndex = lightBatch.x + bit;
     if (lightIndex >= lightBatch.y)
         return;
-    GpuLight light = lights[lightIndex];
-    float radius = light.positionRadius.w;
-    if (radius <= 0.0)
+    GpuLight gpuLight = lights[lightIndex];
+    ViewLight light;
+    light.radius = gpuLight.positionRadius.w;
+    if (light.radius <= 0.0)
         return;
-    bool unbounded = radius >= UNBOUNDED_RADIUS;
-    vec3 centre = (frame.view * vec4(light.positionRadius.xyz, 1.0)).xyz;
-    vec3 axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
-    float cosCutoff = light.spotAxisCosCutoff.w;
+    light.unbounded = light.radius >= UNBOUNDED_RADIUS;
+    light.centre = (frame.view * vec4(gpuLight.positionRadius.xyz, 1.0)).xyz;
+    light.axis = mat3(frame.view) * gpuLight.spotAxisCosCutoff.xyz;
+    light.cosCutoff = gpuLight.spotAxisCosCutoff.w;
     uvec2 grid = clusterTileGrid();
     uvec2 first = uvec2(0u);
     uvec2 last = grid - 1u;
-    if (!unbounded && (-centre.z + radius < frame.projection.z || !sphereTileRect(centre, radius, grid, first, last)))
+    if (!light.unbounded && (-light.centre.z + light.radius < frame.projection.z ||
+                             !sphereTileRect(light.centre, light.radius, grid, first, last)))
         return;
-    uint firstRow = max(first.y, band * rowsPerBand);
-    uint lastRow = min(last.y, band * rowsPerBand + rowsPerBand - 1u);
-    if (firstRow > lastRow)
+    // This band's rows of the light's tile rectangle, walked as one run of tiles.
+    first.y = max(first.y, band * rowsPerBand);
+    last.y = min(last.y, band * rowsPerBand + rowsPerBand - 1u);
+    if (first.y > last.y)
         return;
-
-    uint words = clusterMaskWords();
-    uint summaryWords = clusterSummaryWords();
-    uint word = bit / 32u;
-    uint wordBit = 1u << (bit % 32u);
-    uint summaryBit = 1u << (word % 32u);
-    for (uint row = firstRow; row <= lastRow; ++row)
-    for (uint x = first.x; x <= last.x; ++x) {
-        uint tile = row * grid.x + x;
-        uint slices = tileOccupiedSlices[tile];
-        if (slices == 0u)
-            continue;
-        vec2 range = tileDepthRange[tile];
-        if (!unbounded) {
-            vec3 lo;
-            vec3 hi;
-            tileFrustumBox(tile, range.x, range.y, lo, hi);
-            if (!lightTouchesBox(centre, radius, axis, cosCutoff, lo, hi))
-                continue;
-        }
-        while (slices != 0u) {
-            uint k = uint(findLSB(slices));
-            slices &= slices - 1u;
-            if (!unbounded) {
-                vec3 lo;
-                vec3 hi;
-                clusterBox(tile, range, k, lo, hi);
-                if (!lightTouchesBox(centre, radius, axis, cosCutoff, lo, hi))
-                    continue;
-            }
-            uint cluster = tile * uint(CLUSTER_SLICES) + k;
-            // The first bit set in a word marks the word in the summary.
-            if (atomicOr(clusterLightMasks[cluster * words + word], wordBit) == 0u)
-                atomicOr(clusterMaskSummaries[cluster * summaryWords + word / 32u], summaryBit);
-        }
-    }
+    uint columns = last.x - first.x + 1u;
+    uint tiles = columns * (last.y - first.y + 1u);
+    for (uint i = 0u; i < tiles; ++i)
+        addLightToTile(light, (first.y + i / columns) * grid.x + first.x + i % columns, bit / 32u,
+                       1u << (bit % 32u));
 }

@@ -28,8 +28,11 @@ void main()
     uint tile = gl_GlobalInvocationID.x;
     if (tile >= grid.x * grid.y)
         return;
-    ivec2 first = ivec2(uvec2(tile % grid.x, tile / grid.x) * uint(CLUSTER_TILE_SIZE));
-    ivec2 end = min(first + CLUSTER_TILE_SIZE, ivec2(frame.viewport.xy));
+    uvec2 tileLo;
+    uvec2 tileHi;
+    clusterTilePixels(tile, tileLo, tileHi);
+    ivec2 first = ivec2(tileLo);
+    ivec2 end = ivec2(tileHi);
     float nearest = 3.0e38;
     float farthest = 0.0;
     for (int y = first.y; y < end.y; ++y)

@@ -17,13 +17,13 @@
 #include "lib/culling.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
+// After the workgroup size, which it reads.
+#include "lib/tile_depth_range.glsl"
 layout(binding = 5) uniform sampler2D sceneDepth;
 layout(binding = 1, r32ui) uniform uimage2D inRangeCounts;
 
 const uint THREADS = 256u;
 
-shared uint depthMinBits;  // float bits: positive floats order like their bits
-shared uint depthMaxBits;
 shared uint candidates[LIGHTS_PER_BATCH / 32];
 
 void main()
@@ -34,23 +34,17 @@ void main()
     uint words = (lightBatch.y - lightBatch.x + 31u) / 32u;
     for (uint w = gl_LocalInvocationIndex; w < words; w += THREADS)
         candidates[w] = 0u;
-    if (gl_LocalInvocationIndex == 0u) {
-        depthMinBits = floatBitsToUint(3.0e38);
-        depthMaxBits = 0u;
-    }
+    if (gl_LocalInvocationIndex == 0u)
+        clearTileDepthRange();
     barrier();
     vec3 position = vec3(0.0);
     if (covered) {
         position = gbufferPosition(pixel);
-        uint depthBits = floatBitsToUint(max(viewDepth(position), 0.0));
-        atomicMin(depthMinBits, depthBits);
-        atomicMax(depthMaxBits, depthBits);
+        addToTileDepthRange(viewDepth(position));
     }
     barrier();
-    if (depthMaxBits != 0u) {
-        TileFrustum frustum = makeTileFrustum(vec2(gl_WorkGroupID.xy * 16u),
-                                              min(vec2((gl_WorkGroupID.xy + 1u) * 16u), frame.viewport.xy),
-                                              uintBitsToFloat(depthMinBits), uintBitsToFloat(depthMaxBits));
+    if (tileHasSurface()) {
+        TileFrustum frustum = workgroupTileFrustum();
         for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
 #ifndef BRUTE_FORCE
             if (!lightMayReachTile(lights[i], frustum))

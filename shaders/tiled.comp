@@ -13,6 +13,8 @@
 #include "lib/culling.glsl"
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
+// After the workgroup size, which it reads.
+#include "lib/tile_depth_range.glsl"
 layout(binding = 5) uniform sampler2D sceneDepth;
 layout(binding = 2, rgba32f) uniform image2D litImage;
 layout(std430, binding = 6) buffer TileStatistics {
@@ -22,8 +24,6 @@ layout(std430, binding = 6) buffer TileStatistics {
 const uint THREADS = uint(TILE_SIZE * TILE_SIZE);
 const uint NO_LIGHT = 0xFFFFFFFFu;
 
-shared uint tileDepthMin;  // float bits: positive floats order like their bits
-shared uint tileDepthMax;
 shared uint tileLightCount;
 shared uint tileLights[TILE_CAPACITY];
 
@@ -62,8 +62,7 @@ void main()
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     bool covered = all(lessThan(pixel, ivec2(frame.viewport.xy))) && texelFetch(sceneDepth, pixel, 0).r < 1.0;
     if (gl_LocalInvocationIndex == 0u) {
-        tileDepthMin = floatBitsToUint(3.0e38);
-        tileDepthMax = 0u;
+        clearTileDepthRange();
         tileLightCount = 0u;
     }
     barrier();
@@ -71,17 +70,13 @@ void main()
     Surface s;
     if (covered) {
         s = gbufferSurface(pixel);
-        uint depthBits = floatBitsToUint(max(viewDepth(s.position), 0.0));
-        atomicMin(tileDepthMin, depthBits);
-        atomicMax(tileDepthMax, depthBits);
+        addToTileDepthRange(viewDepth(s.position));
     }
     barrier();
-    if (tileDepthMax == 0u)
-        return;  // no surface in this tile
+    if (!tileHasSurface())
+        return;
 
-    TileFrustum frustum = makeTileFrustum(vec2(gl_WorkGroupID.xy * uint(TILE_SIZE)),
-                                          min(vec2((gl_WorkGroupID.xy + 1u) * uint(TILE_SIZE)), frame.viewport.xy),
-                                          uintBitsToFloat(tileDepthMin), uintBitsToFloat(tileDepthMax));
+    TileFrustum frustum = workgroupTileFrustum();
     for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
         if (!lightMayReachTile(lights[i], frustum))
             continue;

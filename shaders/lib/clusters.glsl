@@ -27,6 +27,14 @@ uvec2 clusterTileGrid()
     return (uvec2(frame.viewport.xy) + uint(CLUSTER_TILE_SIZE - 1)) / uint(CLUSTER_TILE_SIZE);
 }
 
+// The pixels of tile `tile`: lo ≤ pixel < hi, cut at the image's edge.
+void clusterTilePixels(uint tile, out uvec2 lo, out uvec2 hi)
+{
+    uvec2 grid = clusterTileGrid();
+    lo = uvec2(tile % grid.x, tile / grid.x) * uint(CLUSTER_TILE_SIZE);
+    hi = min(lo + uint(CLUSTER_TILE_SIZE), uvec2(frame.viewport.xy));
+}
+
 uint clusterTileOfPixel(uvec2 pixel)
 {
     uvec2 tile = pixel / uint(CLUSTER_TILE_SIZE);
@@ -62,31 +70,4 @@ uint clusterMaskWords()
 uint clusterSummaryWords()
 {
     return (clusterMaskWords() + 31u) / 32u;
-}
-
-// The view-space box around the part of tile `tile`'s frustum between view depths zNear and
-// zFar (the camera looks down -Z), grown by a small margin: a pixel finds its slice with
-// floating-point logs, so a surface on a slice boundary must be inside the boxes of both
-// neighbours, or a light could miss it.
-void tileFrustumBox(uint tile, float zNear, float zFar, out vec3 lo, out vec3 hi)
-{
-    uvec2 grid = clusterTileGrid();
-    vec2 pixelLo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(CLUSTER_TILE_SIZE));
-    vec2 pixelHi = min(pixelLo + float(CLUSTER_TILE_SIZE), frame.viewport.xy);
-    vec2 slopeLo = (pixelLo * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
-    vec2 slopeHi = (pixelHi * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
-    zNear *= 0.999;
-    zFar *= 1.001;
-    lo = vec3(min(slopeLo * zNear, slopeLo * zFar), -zFar);
-    hi = vec3(max(slopeHi * zNear, slopeHi * zFar), -zNear);
-}
-
-// The box of slice k of a tile spanning `range`; the first reaches back to the range's
-// start and the last on to its end.
-void clusterBox(uint tile, vec2 range, uint k, out vec3 lo, out vec3 hi)
-{
-    float logRatio = sliceLogRatio(range);
-    float zNear = k == 0u ? range.x : range.x * exp(logRatio * float(k));
-    float zFar = k + 1u == uint(CLUSTER_SLICES) ? range.y : min(range.x * exp(logRatio * float(k + 1u)), range.y);
-    tileFrustumBox(tile, zNear, max(zFar, zNear), lo, hi);
 }

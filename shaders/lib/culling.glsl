@@ -34,17 +34,38 @@ struct TileFrustum {
     float boxRadius;
 };
 
+// The view-space slope (x/z, y/z magnitudes) of the ray through window position `pixel`.
+vec2 pixelSlope(vec2 pixel)
+{
+    return (pixel * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
+}
+
+// The view-space box around the part of the frustum through the pixels pixelLo..pixelHi
+// between view depths zNear and zFar (the camera looks down -Z), grown by 0.1% in depth so
+// that rounding cannot cut a surface off: a surface on the boundary between two such
+// sections is inside the boxes of both.
+void frustumSectionBox(vec2 pixelLo, vec2 pixelHi, float zNear, float zFar, out vec3 lo, out vec3 hi)
+{
+    vec2 slopeLo = pixelSlope(pixelLo);
+    vec2 slopeHi = pixelSlope(pixelHi);
+    zNear *= 0.999;
+    zFar *= 1.001;
+    lo = vec3(min(slopeLo * zNear, slopeLo * zFar), -zFar);
+    hi = vec3(max(slopeHi * zNear, slopeHi * zFar), -zNear);
+}
+
 TileFrustum makeTileFrustum(vec2 pixelLo, vec2 pixelHi, float depthMin, float depthMax)
 {
     TileFrustum tile;
     tile.depthMin = depthMin * 0.999;
     tile.depthMax = depthMax * 1.001;
-    vec2 slopeLo = (pixelLo * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
-    vec2 slopeHi = (pixelHi * frame.viewport.zw * 2.0 - 1.0) * frame.projection.xy;
+    vec2 slopeLo = pixelSlope(pixelLo);
+    vec2 slopeHi = pixelSlope(pixelHi);
     tile.planes = vec3[4](normalize(vec3(1.0, 0.0, slopeLo.x)), normalize(vec3(-1.0, 0.0, -slopeHi.x)),
                           normalize(vec3(0.0, 1.0, slopeLo.y)), normalize(vec3(0.0, -1.0, -slopeHi.y)));
-    vec3 boxLo = vec3(min(slopeLo * tile.depthMin, slopeLo * tile.depthMax), -tile.depthMax);
-    vec3 boxHi = vec3(max(slopeHi * tile.depthMin, slopeHi * tile.depthMax), -tile.depthMin);
+    vec3 boxLo;
+    vec3 boxHi;
+    frustumSectionBox(pixelLo, pixelHi, depthMin, depthMax, boxLo, boxHi);
     tile.boxCentre = 0.5 * (boxLo + boxHi);
     tile.boxRadius = 0.5 * length(boxHi - boxLo);
     return tile;
