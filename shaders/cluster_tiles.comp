@@ -3,8 +3,9 @@
 // seen through the tile (its slices divide that range), then marks the slices that hold a
 // pixel's surface. Only those get lights. A thread per tile walking its pixels, rather than
 // a workgroup per tile meeting at barriers: llvmpipe runs barriers by switching between
-// the workgroup's invocations, which cost more than the walk. Loop iterations: two walks of
-// CLUSTER_TILE_SIZE² pixels, 2 · (256 + 17) for 16-pixel tiles.
+// the workgroup's invocations, which cost more than the walk. The first walk keeps each
+// pixel's depth for the second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
+// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels, 2 · (256 + 17) for 16-pixel tiles.
 #include "lib/frame.glsl"
 #include "lib/light_batch.glsl"
 #include "lib/clusters.glsl"
@@ -35,9 +36,11 @@ void main()
     ivec2 end = ivec2(tileHi);
     float nearest = 3.0e38;
     float farthest = 0.0;
+    float depths[CLUSTER_TILE_SIZE * CLUSTER_TILE_SIZE];
     for (int y = first.y; y < end.y; ++y)
         for (int x = first.x; x < end.x; ++x) {
             float depth = surfaceDepth(ivec2(x, y));
+            depths[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x] = depth;
             if (depth > 0.0) {
                 nearest = min(nearest, depth);
                 farthest = max(farthest, depth);
@@ -54,7 +57,7 @@ void main()
     uint occupied = 0u;
     for (int y = first.y; y < end.y; ++y)
         for (int x = first.x; x < end.x; ++x) {
-            float depth = surfaceDepth(ivec2(x, y));
+            float depth = depths[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x];
             if (depth > 0.0) {
                 // The lighting pass computes the slice again in another program, whose
                 // rounding may differ: a surface within a hundredth of a slice of a boundary
