@@ -15,6 +15,7 @@
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
 #include "render/GBuffer.h"
+#include "render/ClusteredTechnique.h"
 #include "render/LightBatches.h"
 #include "core/Error.h"
 
@@ -259,6 +260,30 @@ TEST_F(LoopLimit, LlvmpipeEndsLoopsAfter65535IterationsInAll)
     // outer iteration costs 1 + 3 + 1 of the 65,535.
     EXPECT_EQ(ran, 65535u);
     EXPECT_EQ(iterationsRun(70000, 3), 65535u / 5);
+}
+
+}  // namespace
+}  // namespace manylights
+
+namespace manylights {
+namespace {
+
+// The clustered masks of one batch take a bit per light per cluster. At sizes people render
+// a batch is a full kLightsPerBatch lights; at the largest sizes GL allows the batches shrink
+// (in whole mask words) so the masks stay within kClusterMaskBudgetBytes.
+TEST(ClusteredBatches, FitTheMaskBudgetAtEverySize)
+{
+    EXPECT_EQ(ClusteredTechnique::lightsPerBatch(1280, 720), kLightsPerBatch);
+    EXPECT_EQ(ClusteredTechnique::lightsPerBatch(1920, 1080), kLightsPerBatch);
+    for (const auto& [width, height] : {std::pair{3840, 2160}, std::pair{8192, 8192}, std::pair{16384, 16384}}) {
+        const std::uint32_t lights = ClusteredTechnique::lightsPerBatch(width, height);
+        const std::size_t clusters = static_cast<std::size_t>((width + kClusterTileSize - 1) / kClusterTileSize) *
+                                     ((height + kClusterTileSize - 1) / kClusterTileSize) * kClusterSlices;
+        EXPECT_EQ(lights % 32, 0u) << width << "x" << height;
+        EXPECT_GE(lights, 32u) << width << "x" << height;
+        EXPECT_LE(clusters * (lights / 32) * sizeof(std::uint32_t), kClusterMaskBudgetBytes) << width << "x" << height;
+    }
+    EXPECT_LT(ClusteredTechnique::lightsPerBatch(8192, 8192), kLightsPerBatch);
 }
 
 }  // namespace
