@@ -12,7 +12,7 @@ int fullMipmapLevels(int width, int height)
     return levels;
 }
 
-float MipmappedTexture2D::anisotropy()
+float MipmappedTexture2D::maxAnisotropy()
 {
     // GL_TEXTURE_MAX_ANISOTROPY (0x84FE) is the same enum in GL 4.6 core, ARB and EXT.
     const bool supported = epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
@@ -21,7 +21,15 @@ float MipmappedTexture2D::anisotropy()
         return 1.0f;
     GLfloat maximum = 1.0f;
     glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maximum);
-    return std::clamp(maximum, 1.0f, kMaxAnisotropy);
+    return std::max(maximum, 1.0f);
+}
+
+void MipmappedTexture2D::setAnisotropy(float anisotropy) const
+{
+    // Without the extension the parameter does not exist (setting it would be a GL error), and
+    // 1 is what the texture filters with anyway.
+    if (maxAnisotropy() > 1.0f)
+        glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, std::clamp(anisotropy, 1.0f, maxAnisotropy()));
 }
 
 MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
@@ -43,8 +51,6 @@ MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFo
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    if (const float anisotropic = anisotropy(); anisotropic > 1.0f)
-        glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropic);
 }
 
 }  // namespace manylights::gl

@@ -1,6 +1,6 @@
-// A sampled 2D texture with a full mipmap chain and trilinear (plus anisotropic, where the
-// driver has it) filtering: material maps, unlike the render targets of gl/Texture.h, are
-// minified and filtered.
+// A sampled 2D texture with a full mipmap chain and trilinear filtering (plus anisotropic, when
+// asked for and the driver has it): material maps, unlike the render targets of gl/Texture.h,
+// are minified and filtered.
 #pragma once
 
 #include <cstdint>
@@ -26,12 +26,12 @@ public:
     GLenum format() const { return format_; }
     void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
 
-    // Anisotropic filtering applied to material textures where the driver supports it
-    // (GL 4.6 core or GL_ARB/EXT_texture_filter_anisotropic): up to this, clamped to the
-    // driver's maximum. 8 keeps oblique floors sharp at a small cost.
-    static constexpr float kMaxAnisotropy = 8.0f;
-    // The anisotropy actually set (1 where the driver has no anisotropic filtering).
-    static float anisotropy();
+    // The largest anisotropy the driver filters with: GL_MAX_TEXTURE_MAX_ANISOTROPY where it
+    // has anisotropic filtering (GL 4.6 core or GL_ARB/EXT_texture_filter_anisotropic), else 1.
+    static float maxAnisotropy();
+    // Samples up to `anisotropy` (≥ 1, at most maxAnisotropy()) texels along the footprint's
+    // long axis; 1 is plain trilinear filtering.
+    void setAnisotropy(float anisotropy) const;
 
 private:
     int width_ = 0;

@@ -106,6 +106,8 @@ public:
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
     const TextureCache& textures() const { return textures_; }
+    // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
+    void setAnisotropy(int requested) { textures_.setAnisotropy(requested); }
     const Scene& scene() const { return scene_; }
     // Changes whenever an object's transform or shape changes (cached shadow maps compare it);
     // setTime calls noteTransformsChanged() when anything moved.

@@ -39,6 +39,9 @@ public:
     // Recomputes the camera matrices after the scene's camera changed (the viewer moves it).
     void refreshCamera() { gpuScene_.setViewport(width(), height()); }
     void setLightingTerms(const glm::vec3& terms) { gpuScene_.setLightingTerms(terms); }
+    // --anisotropy: kAutoAnisotropy (the renderer's default) or 1 to kMaxRequestedAnisotropy.
+    void setAnisotropy(int requested) { gpuScene_.setAnisotropy(requested); }
+    float anisotropy() const { return gpuScene_.textures().anisotropy(); }
     // The lit image and the G-buffer of the last frame (the viewer shows the lit image).
     const FrameTargets& targets() const { return *targets_; }
 

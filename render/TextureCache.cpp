@@ -10,6 +10,7 @@
 #include <stb/stb_image.h>
 
 #include "core/Error.h"
+#include "gl/Driver.h"
 
 namespace manylights {
 
@@ -97,7 +98,22 @@ const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, Texture
         isEmbedded ? decodeImageMemory(path, embedded->bytes, maxSide) : decodeImageFile(path, maxSide);
     const GLenum format = space == TextureColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
     gl::MipmappedTexture2D texture("texture " + path, format, image.width, image.height, image.rgba);
+    texture.setAnisotropy(anisotropy_);
     return textures_.emplace(key, std::move(texture)).first->second;
+}
+
+float resolveAnisotropy(int requested)
+{
+    const float wanted =
+        requested == kAutoAnisotropy ? (gl::isSoftwareRenderer() ? 1.0f : kHardwareAnisotropy) : float(requested);
+    return std::clamp(wanted, 1.0f, gl::MipmappedTexture2D::maxAnisotropy());
+}
+
+void TextureCache::setAnisotropy(int requested)
+{
+    anisotropy_ = resolveAnisotropy(requested);
+    for (const auto& [key, texture] : textures_)
+        texture.setAnisotropy(anisotropy_);
 }
 
 }  // namespace manylights

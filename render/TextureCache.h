@@ -40,11 +40,26 @@ DecodedImage decodeImageFile(const std::string& path, int maxSide);
 // the messages call it.
 DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide);
 
+// Anisotropic filtering of material textures (--anisotropy). kAutoAnisotropy picks per
+// renderer: none (1) on a software rasteriser, where llvmpipe filters every anisotropic tap in
+// software (8x cost 40% of the geometry pass on the LearnOpenGL scene, docs/performance.md),
+// kHardwareAnisotropy on a GPU, where the texture units do it nearly for free and oblique
+// floors stay sharp.
+inline constexpr int kAutoAnisotropy = 0;
+inline constexpr int kHardwareAnisotropy = 8;
+inline constexpr int kMaxRequestedAnisotropy = 16;  // the largest any driver offers
+// The anisotropy `requested` (kAutoAnisotropy, or 1 to kMaxRequestedAnisotropy) gives on the
+// current GL context: clamped to what the driver filters with.
+float resolveAnisotropy(int requested);
+
 class TextureCache {
 public:
     // `embedded`: images carried in the scene (Scene::encodedImages); a path equal to one's key
-    // is that image, not a file. They must outlive the cache.
-    explicit TextureCache(std::span<const EncodedImage> embedded = {}) : embedded_(embedded) {}
+    // is that image, not a file. They must outlive the cache. Needs a current GL context.
+    explicit TextureCache(std::span<const EncodedImage> embedded = {})
+        : embedded_(embedded), anisotropy_(resolveAnisotropy(kAutoAnisotropy))
+    {
+    }
 
     // The texture of `path` in `space`, loaded on first request. Throws manylights::Error (see
     // decodeImageFile) for a broken file or one beyond GL_MAX_TEXTURE_SIZE or kMaxTextureSide.
@@ -53,8 +68,14 @@ public:
     // How many textures have been loaded (each file once per colour space).
     std::size_t size() const { return textures_.size(); }
 
+    // Filters every texture, loaded or to come, with resolveAnisotropy(requested).
+    void setAnisotropy(int requested);
+    // The anisotropy the textures are filtered with (1: trilinear only).
+    float anisotropy() const { return anisotropy_; }
+
 private:
     std::span<const EncodedImage> embedded_;
+    float anisotropy_;
     std::map<std::pair<std::string, TextureColourSpace>, gl::MipmappedTexture2D> textures_;
 };
 

@@ -7,6 +7,7 @@
 
 #include "apps/cli/CommandSupport.h"
 #include "render/GBuffer.h"
+#include "render/TextureCache.h"
 
 namespace CLI {
 class App;
@@ -25,6 +26,7 @@ struct BenchOptions {
     std::string plotPath;  // empty: no plot
     bool countWork = false;
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)
     // When a technique's median frame exceeds this at one light count, its later (larger)
     // counts at that size are skipped: a sweep to a million lights need not wait hours for
     // forward. 0: no budget.

@@ -10,6 +10,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "render/TextureCache.h"
 
 namespace manylights {
 
@@ -27,6 +28,11 @@ std::string parseSize(const std::string& text, ImageSize& size)
                std::to_string(kMaxImageDimension) + ", got " + text;
     size = {width, height};
     return {};
+}
+
+int anisotropyLevel(const std::string& choice)
+{
+    return choice == "auto" ? kAutoAnisotropy : std::stoi(choice);
 }
 
 std::string formatSize(const ImageSize& size)

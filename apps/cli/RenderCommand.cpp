@@ -23,7 +23,7 @@ constexpr int kWarmupFrames = 1;
 
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
                               const std::vector<FrameSample>& frames, const std::string& device,
-                              const Technique& technique, const WorkCounts* work)
+                              float anisotropy, const Technique& technique, const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -36,6 +36,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["lights"] = lightCount;
     stats["frames"] = frames.size();
     stats["shadow_lights"] = options.shadowLights;
+    stats["anisotropy"] = anisotropy;
     stats["warmup_frames"] = kWarmupFrames;
     const auto summaryJson = [](const std::vector<double>& values) {
         const Statistics summary = summarize(values);
@@ -124,6 +125,7 @@ void runRender(const RenderOptions& options)
     HeadlessContext context({.debug = defaultDebugContext()});
     Renderer renderer(scene, lights, options.width, options.height, options.gbufferLayout);
     renderer.setTime(options.time);
+    renderer.setAnisotropy(options.anisotropy);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount;
     renderer.setCountWork(countWork);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
@@ -149,7 +151,8 @@ void runRender(const RenderOptions& options)
     if (measuring) {
         const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
         nlohmann::json stats =
-            statisticsJson(options, scene, lights.size(), frames, context.description(), *technique, work);
+            statisticsJson(options, scene, lights.size(), frames, context.description(),
+                           renderer.anisotropy(), *technique, work);
         stats["load_ms"] = loadMs;
         writeTextFileAtomically(options.statsPath, "statistics", stats.dump(2) + "\n");
     }

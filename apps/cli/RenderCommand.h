@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render/GBuffer.h"
+#include "render/TextureCache.h"
 #include "apps/cli/Recording.h"
 #include "render/Views.h"
 
@@ -22,6 +23,7 @@ struct RenderOptions {
     std::string statsPath;
     bool countWork = false;
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)
     // Recording: with a time range, `output` is a pattern (apps/cli/Recording.h) and every
     // frame of the range at `fps` is written.
     std::optional<TimeRange> timeRange;

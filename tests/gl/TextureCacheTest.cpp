@@ -3,6 +3,7 @@
 // usable images.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "GlContextTest.h"
 #include "core/Error.h"
 #include "gl/Buffer.h"
+#include "gl/Driver.h"
 #include "gl/Program.h"
 #include "render/GpuScene.h"
 #include "render/TextureCache.h"
@@ -145,6 +147,41 @@ TEST_F(TextureCacheTest, FullMipmapChainIsGeneratedAndFiltered)
     glGetTextureImage(texture.id(), 3, GL_RGBA, GL_UNSIGNED_BYTE, sizeof last, last);
     EXPECT_NEAR(last[0], 127.5, 1.0);
     EXPECT_EQ(last[3], 255);
+}
+
+TEST_F(TextureCacheTest, AnisotropyIsSetOnLoadedAndLaterTextures)
+{
+    const float maximum = gl::MipmappedTexture2D::maxAnisotropy();
+    if (maximum < 4.0f)
+        GTEST_SKIP() << "this driver filters with at most " << maximum << "x anisotropy";
+    const auto anisotropyOf = [](const gl::MipmappedTexture2D& texture) {
+        GLfloat value = 0.0f;
+        glGetTextureParameterfv(texture.id(), GL_TEXTURE_MAX_ANISOTROPY, &value);
+        return value;
+    };
+    TextureCache cache;
+    const gl::MipmappedTexture2D& first = cache.get(writePng("a.png", 2, 2, std::vector<unsigned char>(12, 9)),
+                                                    TextureColourSpace::Linear);
+    EXPECT_EQ(anisotropyOf(first), gl::isSoftwareRenderer() ? 1.0f : std::min(maximum, float(kHardwareAnisotropy)));
+    cache.setAnisotropy(4);
+    EXPECT_EQ(cache.anisotropy(), 4.0f);
+    EXPECT_EQ(anisotropyOf(first), 4.0f);
+    const gl::MipmappedTexture2D& second = cache.get(writePng("b.png", 2, 2, std::vector<unsigned char>(12, 9)),
+                                                     TextureColourSpace::Linear);
+    EXPECT_EQ(anisotropyOf(second), 4.0f);
+    // Beyond the driver's maximum: its maximum.
+    cache.setAnisotropy(kMaxRequestedAnisotropy);
+    EXPECT_EQ(anisotropyOf(second), std::min(maximum, float(kMaxRequestedAnisotropy)));
+    cache.setAnisotropy(1);
+    EXPECT_EQ(anisotropyOf(first), 1.0f);
+}
+
+TEST(Driver, SoftwareRenderersAreRecognisedByName)
+{
+    EXPECT_TRUE(gl::isSoftwareRendererName("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(gl::isSoftwareRendererName("softpipe"));
+    EXPECT_FALSE(gl::isSoftwareRendererName("NVIDIA H200/PCIe/SSE2"));
+    EXPECT_FALSE(gl::isSoftwareRendererName("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)"));
 }
 
 TEST_F(TextureCacheTest, BrokenFilesAreOneLineErrorsNamingTheFile)

@@ -92,6 +92,8 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"negative_shadow_lights", "", {"--shadow-lights", "-1"}, 2, {"--shadow-lights"}},
         FailureCase{"too_many_shadow_lights", "", {"--shadow-lights", "257"}, 2, {"--shadow-lights"}},
         FailureCase{"shadow_lights_not_a_number", "", {"--shadow-lights", "all"}, 2, {"--shadow-lights"}},
+        FailureCase{"anisotropy_not_a_level", "", {"--anisotropy", "3"}, 2, {"--anisotropy", "auto"}},
+        FailureCase{"anisotropy_not_a_number", "", {"--anisotropy", "nan"}, 2, {"--anisotropy"}},
         FailureCase{"ssao_radius_zero", std::string("{\"ssao\": {\"radius\": 0}, ") + kPlane + "}", {}, 1,
                     {"scene.json", "/ssao/radius"}}),
     [](const ::testing::TestParamInfo<FailureCase>& param) { return param.param.name; });
@@ -170,6 +172,29 @@ TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
     ASSERT_EQ(stats["passes"].size(), 2u);
     EXPECT_EQ(stats["passes"][0]["name"], "geometry");
     EXPECT_EQ(stats["passes"][1]["name"], "lighting");
+    // --anisotropy auto: none on a software rasteriser, 8 on a GPU (within the driver's maximum).
+    const double anisotropy = stats["anisotropy"];
+    if (stats["device"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(anisotropy, 1.0);
+    } else {
+        EXPECT_GE(anisotropy, 1.0);
+    }
+}
+
+TEST(Cli, AnisotropyLevelReachesTheTexturesAndTheStats)
+{
+    const auto dir = scratchDirectory();
+    const test::ProcessResult result =
+        runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "64x36", "--anisotropy", "4",
+                       "--stats", (dir / "stats.json").string()});
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    std::ifstream in(dir / "stats.json");
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    // Every conformant driver with the extension offers at least 2; llvmpipe offers 16.
+    EXPECT_LE(stats["anisotropy"].get<double>(), 4.0);
+    if (stats["device"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(stats["anisotropy"].get<double>(), 4.0);
+    }
 }
 
 }  // namespace

@@ -1,0 +1,14 @@
+// What the GL implementation in use is, where that changes what is cheap.
+#pragma once
+
+#include <string_view>
+
+namespace manylights::gl {
+
+// True when GL_RENDERER names a rasteriser that runs on the CPU (Mesa's llvmpipe, softpipe or
+// swrast), where texture filtering and shader arithmetic cost CPU time per pixel instead of
+// running in fixed-function hardware.
+bool isSoftwareRenderer();
+bool isSoftwareRendererName(std::string_view renderer);
+
+}  // namespace manylights::gl
