@@ -143,7 +143,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
         }
         auto pass = profiler.pass("lighting");
         bindGrid();
-        shadeCoveredPixels(scene, targets, lighting_, batch);
+        shadeCoveredPixels(scene, targets, lighting_.variant(scene.lightingFeatures()), batch);
     }
 }
 

@@ -14,6 +14,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "render/LightBatches.h"
+#include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -48,7 +49,7 @@ private:
 
     gl::Program tiles_;
     gl::Program assign_;
-    gl::Program lighting_;
+    LightingProgram lighting_;
     int gridWidth_ = 0;
     int gridHeight_ = 0;
     std::uint32_t clusterCount_ = 0;

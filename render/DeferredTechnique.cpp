@@ -41,9 +41,22 @@ void beginAddingToCoveredPixels()
     glDepthMask(GL_FALSE);
 }
 
+namespace {
+
+gl::Defines deferredDefines(const TechniqueOptions& options, bool lightWindows)
+{
+    gl::Defines defines = shaderDefines(options);
+    if (lightWindows)
+        addLightWindowDefines(defines);
+    return defines;
+}
+
+}  // namespace
+
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
-    : lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
-                shaderDefines(options))
+    : lightWindows_(lightWindowsSupported()),
+      lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
+                deferredDefines(options, lightWindows_))
 {
 }
 
@@ -51,8 +64,13 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pas
 {
     targets.gbuffer.fill(scene, profiler);
     auto pass = profiler.pass("lighting");
-    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount())))
-        shadeCoveredPixels(scene, targets, lighting_, batch);
+    const gl::Program& program = lighting_.variant(scene.lightingFeatures());
+    const std::uint32_t perBatch = lightWindows_ ? kLightsPerWindow : kLightsPerBatch;
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch)) {
+        if (lightWindows_)
+            scene.bindLightWindow(batch);
+        shadeCoveredPixels(scene, targets, program, batch);
+    }
 }
 
 }  // namespace manylights

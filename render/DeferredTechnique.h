@@ -3,6 +3,7 @@
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
 #include "render/LightBatches.h"
+#include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -16,7 +17,8 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 
 private:
-    gl::Program lighting_;
+    bool lightWindows_;  // the lights as uniform windows (render/LightBatches.h)
+    LightingProgram lighting_;
 };
 
 // Draws one triangle over the screen at depth 1 with the depth test GL_GREATER against the

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gl/Program.h"
+#include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -12,7 +13,7 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 
 private:
-    gl::Program program_;
+    LightingProgram program_;
 };
 
 }  // namespace manylights

@@ -87,7 +87,10 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
 }
 
 GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
-    : scene_(scene), textures_(scene.encodedImages), restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
+    : scene_(scene),
+      textures_(scene.encodedImages),
+      lightingFeatures_(lightingFeaturesOf(lights, scene.directional)),
+      restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
       vertexArray_("scene vertices")
 {
     std::vector<Vertex> allVertices;
@@ -168,8 +171,9 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     for (const Light& light : lights)
         packedLights_.push_back(packLight(light, scene.attenuationThreshold));
     // Dynamic storage: setTime rewrites it every frame of an animation.
-    lightBuffer_ = gl::Buffer("lights", std::max<std::size_t>(1, packedLights_.size()) * sizeof(GpuLight), nullptr,
-                              GL_DYNAMIC_STORAGE_BIT);
+    // Whole windows (bindLightWindow), so that every window bound is backed by the buffer.
+    const std::size_t windows = std::max<std::size_t>(1, (packedLights_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
+    lightBuffer_ = gl::Buffer("lights", windows * kLightWindowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
     setTime(0.0);
     setViewport(1, 1);
@@ -322,6 +326,15 @@ void GpuScene::writeInstances()
     // One update for the whole frame.
     if (!instances_.empty())
         instanceBuffer_.update(0, instances_.size() * sizeof(GpuInstance), instances_.data());
+}
+
+static_assert(kLightsPerWindow * sizeof(GpuLight) == kLightWindowBytes);
+
+void GpuScene::bindLightWindow(const LightBatch& batch) const
+{
+    ML_ASSERT(batch.first % kLightsPerWindow == 0);
+    glBindBufferRange(GL_UNIFORM_BUFFER, kLightWindowBinding, lightBuffer_.id(),
+                      static_cast<GLintptr>(batch.first * sizeof(GpuLight)), kLightWindowBytes);
 }
 
 void GpuScene::bind() const

@@ -13,6 +13,8 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
+#include "render/LightBatches.h"
+#include "render/LightingPrograms.h"
 #include "render/TextureCache.h"
 #include "scene/Scene.h"
 
@@ -103,9 +105,14 @@ public:
     static Mesh lightMarkerMesh();
 
     std::size_t lightCount() const { return lightCount_; }
+    // The kinds of light the scene has, which the lighting programs are specialised for.
+    const LightingFeatures& lightingFeatures() const { return lightingFeatures_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
     const TextureCache& textures() const { return textures_; }
+    // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
+    // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
+    void bindLightWindow(const LightBatch& batch) const;
     // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
     void setAnisotropy(int requested) { textures_.setAnisotropy(requested); }
     const Scene& scene() const { return scene_; }
@@ -152,6 +159,7 @@ private:
 
     const Scene& scene_;
     TextureCache textures_;
+    LightingFeatures lightingFeatures_;
     std::vector<MaterialMaps> materialMaps_;  // per scene material
     MaterialMaps noMaps_;                     // light markers' materials have no textures
     std::vector<Light> restLights_;     // the lights at rest; their animations move them

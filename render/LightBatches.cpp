@@ -36,4 +36,17 @@ void addLightBatchDefines(gl::Defines& defines)
     defines.emplace_back("LIGHT_BATCH_LOCATION", std::to_string(kLightBatchLocation));
 }
 
+bool lightWindowsSupported()
+{
+    GLint maxBlockSize = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
+    return static_cast<std::size_t>(maxBlockSize) >= kLightWindowBytes;
+}
+
+void addLightWindowDefines(gl::Defines& defines)
+{
+    defines.emplace_back("LIGHT_WINDOW_BINDING", std::to_string(kLightWindowBinding));
+    defines.emplace_back("LIGHTS_PER_WINDOW", std::to_string(kLightsPerWindow));
+}
+
 }  // namespace manylights

@@ -50,4 +50,20 @@ void setLightBatch(const gl::Program& program, const LightBatch& batch);
 // LIGHT_BATCH_LOCATION, for programs that include lib/light_batch.glsl.
 void addLightBatchDefines(gl::Defines& defines);
 
+// Light windows: a batch's lights as a uniform block (shaders/lib/lights.glsl, built with
+// LIGHT_WINDOW_BINDING) instead of the storage buffer, for passes where every pixel walks the
+// same lights in order (deferred). llvmpipe reads a uniform block with one vector gather per
+// value and a storage buffer lane by lane, testing each lane's bounds (a quarter of the
+// deferred lighting pass on LearnOpenGL's scene, docs/performance.md); a GPU broadcasts a
+// uniform read that every thread shares. A window is 64 KiB of lights, the uniform block size
+// of desktop drivers (GL guarantees only 16 KiB: lightWindowsSupported says), so such passes
+// take batches of kLightsPerWindow.
+inline constexpr std::size_t kLightWindowBytes = 64 * 1024;
+inline constexpr std::uint32_t kLightsPerWindow = 1024;  // GpuScene.cpp checks it fills the window
+inline constexpr unsigned kLightWindowBinding = 2;  // uniform buffer binding; 0 and 1 are lib/frame.glsl's and lib/shadows.glsl's
+// Whether GL_MAX_UNIFORM_BLOCK_SIZE holds a window.
+bool lightWindowsSupported();
+// LIGHT_WINDOW_BINDING and LIGHTS_PER_WINDOW.
+void addLightWindowDefines(gl::Defines& defines);
+
 }  // namespace manylights

@@ -42,12 +42,13 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, PassPr
     // Make the lit image's clear to the background visible to the image stores' neighbours.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     glBindImageTexture(kLitImageUnit, targets.lit.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    program_.use();
+    const gl::Program& program = program_.variant(scene.lightingFeatures());
+    program.use();
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
     for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()))) {
         // Each batch after the first adds to what the one before it stored.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        setLightBatch(program_, batch);
+        setLightBatch(program, batch);
         glDispatchCompute(groups(targets.width), groups(targets.height), 1);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |

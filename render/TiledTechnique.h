@@ -9,6 +9,7 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -24,7 +25,7 @@ public:
     std::vector<TechniqueCounter> counters() const override;
 
 private:
-    gl::Program program_;
+    LightingProgram program_;
     gl::Buffer statistics_;
     std::uint32_t lastOverflowedTiles_ = 0;
 };

@@ -1,8 +1,9 @@
 #version 450 core
 // deferred: one full-screen pass per light batch (lib/light_batch.glsl), each covered pixel
 // loops over all the batch's lights.
-#include "lib/lighting.glsl"
+// lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
+#include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(early_fragment_tests) in;

@@ -15,55 +15,75 @@ struct Surface {
 };
 
 // brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
+// Written without branches: llvmpipe runs 8 or 16 pixels in lock step and would execute a
+// branch's body under a lane mask anyway, paying for the mask on top (docs/performance.md).
+// The selects also drop the NaN that H = normalize(0) gives where L = −V.
 vec3 blinnPhong(Surface s, vec3 L, vec3 V)
 {
     float NdotL = dot(s.normal, L);
-    if (NdotL <= 0.0)
-        return vec3(0.0);
     vec3 H = normalize(L + V);
-    return frame.terms.y * s.diffuse * NdotL + frame.terms.z * s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+    vec3 brdf = frame.terms.y * s.diffuse * NdotL +
+                frame.terms.z * s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+    return NdotL > 0.0 ? brdf : vec3(0.0);
 }
 
 // The light-independent terms: ke + ambient ⊙ kd · ao + the directional light times its
-// shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off).
+// shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off). A program
+// built with NO_DIRECTIONAL_LIGHT (lightingFeatureDefines) is for scenes without one, whose
+// term is zero.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
     vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * s.diffuse * ambientOcclusion(s.position);
+#ifndef NO_DIRECTIONAL_LIGHT
     color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V) *
              directionalShadow(s.position);
+#endif
     return color;
 }
 
 // The unit direction L towards a point or spot light from `position` (xyz), and A(d) · S
 // (w). w is zero where the light does not reach; the culling of every technique may only
 // skip pairs for which it is zero.
+//
+// A program may be specialised for the lights of its scene (render/LightingPrograms.h):
+// NO_SPOT_LIGHTS (S = 1 for every light), ONLY_CLASSIC_FALLOFF or ONLY_RANGE_FALLOFF (one
+// kind of A). Without them every kind is evaluated and the light's own is selected, since on
+// llvmpipe a branch costs both sides: 2 of the 3 pow per pair in the general program.
 vec4 lightReach(GpuLight light, vec3 position)
 {
-    vec3 v = position - light.positionRadius.xyz;
-    float d = length(v);
+    vec3 toLight = light.positionRadius.xyz - position;
+    float d = length(toLight);
     // At d = 0 the direction to the light is undefined; the point gets nothing from it.
-    if (d >= light.positionRadius.w || d == 0.0)
-        return vec4(0.0);
-    vec3 toSurface = v / d;
+    bool reaches = d < light.positionRadius.w && d != 0.0;
+    vec3 L = toLight / d;
+#if defined(ONLY_CLASSIC_FALLOFF)
+    float A = classicAttenuation(d, light.positionRadius.w, light.attenuation.x, light.attenuation.y,
+                                 light.attenuation.z);
+#elif defined(ONLY_RANGE_FALLOFF)
+    float A = rangeAttenuation(d, light.attenuation.x);
+#else
     float A = light.attenuation.w == 0.0
                   ? classicAttenuation(d, light.positionRadius.w, light.attenuation.x, light.attenuation.y,
                                        light.attenuation.z)
                   : rangeAttenuation(d, light.attenuation.x);
-    float S = spotFactor(dot(toSurface, light.spotAxisCosCutoff.xyz), light.spotAxisCosCutoff.w,
-                         light.intensityExponent.w);
-    return vec4(-toSurface, A * S);
+#endif
+#ifdef NO_SPOT_LIGHTS
+    float S = 1.0;
+#else
+    float S = spotFactor(dot(-L, light.spotAxisCosCutoff.xyz), light.spotAxisCosCutoff.w, light.intensityExponent.w);
+#endif
+    return reaches ? vec4(L, A * S) : vec4(0.0);
 }
 
 // intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, times its shadow factor when it
 // has a shadow map (lib/shadows.glsl); exactly zero where A·S is zero.
 vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
 {
-    GpuLight light = lights[lightIndex];
+    GpuLight light = batchLight(lightIndex);
     vec4 reach = lightReach(light, s.position);
-    if (reach.w == 0.0)
-        return vec3(0.0);
-    return light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w *
-           localShadow(lightIndex, light.positionRadius.xyz, s.position);
+    vec3 color = light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w *
+                 localShadow(lightIndex, light.positionRadius.xyz, s.position);
+    return reach.w != 0.0 ? color : vec3(0.0);
 }
 
 // Work counting (--count-work): the shaders of each technique report how many (pixel,

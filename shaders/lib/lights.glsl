@@ -10,3 +10,24 @@ struct GpuLight {
 layout(std430, binding = 0) readonly buffer Lights {
     GpuLight lights[];
 };
+
+#ifdef LIGHT_WINDOW_BINDING
+// The batch's lights as a uniform block bound to their range of the same buffer
+// (render/LightBatches.h: light windows), for passes where every pixel walks the batch in
+// order; light i of the scene is element i − lightBatch.x. Such a shader includes
+// lib/light_batch.glsl before this file (an #include here would count as done even where this
+// block is compiled out, and leave other shaders without it).
+layout(std140, binding = LIGHT_WINDOW_BINDING) uniform LightWindow {
+    GpuLight windowLights[LIGHTS_PER_WINDOW];
+};
+
+GpuLight batchLight(uint lightIndex)
+{
+    return windowLights[lightIndex - lightBatch.x];
+}
+#else
+GpuLight batchLight(uint lightIndex)
+{
+    return lights[lightIndex];
+}
+#endif

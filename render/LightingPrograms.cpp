@@ -1,0 +1,40 @@
+#include "render/LightingPrograms.h"
+
+#include <algorithm>
+
+namespace manylights {
+
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional)
+{
+    const auto any = [&](auto predicate) { return std::any_of(lights.begin(), lights.end(), predicate); };
+    return {
+        .spotLights = any([](const Light& light) { return light.type == LightType::Spot; }),
+        .classicFalloff = any([](const Light& light) { return light.falloff == Falloff::Classic; }),
+        .rangeFalloff = any([](const Light& light) { return light.falloff != Falloff::Classic; }),
+        .directionalLight = directional.has_value(),
+    };
+}
+
+gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines)
+{
+    if (!features.spotLights)
+        defines.emplace_back("NO_SPOT_LIGHTS", "1");
+    // A scene without local lights takes either; nothing is evaluated.
+    if (!features.rangeFalloff)
+        defines.emplace_back("ONLY_CLASSIC_FALLOFF", "1");
+    else if (!features.classicFalloff)
+        defines.emplace_back("ONLY_RANGE_FALLOFF", "1");
+    if (!features.directionalLight)
+        defines.emplace_back("NO_DIRECTIONAL_LIGHT", "1");
+    return defines;
+}
+
+const gl::Program& LightingProgram::variant(const LightingFeatures& features) const
+{
+    auto found = variants_.find(features);
+    if (found == variants_.end())
+        found = variants_.emplace(features, gl::Program(label_, stages_, lightingFeatureDefines(features, defines_))).first;
+    return found->second;
+}
+
+}  // namespace manylights

@@ -1,0 +1,57 @@
+// Lighting programs specialised for the kinds of light a scene has.
+//
+// On llvmpipe a shader runs 8 or 16 pixels in lock step and executes both sides of every
+// branch under a lane mask, so code for a kind of light the scene lacks still costs every
+// (pixel, light) pair: a spot factor's pow, the other falloff. Each lighting program is
+// therefore compiled per LightingFeatures, on first use, with the #defines of
+// shaders/lib/lighting.glsl that leave out what the scene cannot need (docs/performance.md).
+// A program built without them (gl::Program with shaderDefines alone) handles every scene.
+#pragma once
+
+#include <compare>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/Program.h"
+#include "scene/Scene.h"
+
+namespace manylights {
+
+struct LightingFeatures {
+    bool spotLights = true;
+    bool classicFalloff = true;
+    bool rangeFalloff = true;
+    bool directionalLight = true;
+
+    auto operator<=>(const LightingFeatures&) const = default;
+};
+
+// What `lights` and the scene's directional light use. Animation moves lights but never
+// changes their kind, so this holds for every frame of a scene.
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional);
+
+// `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF and
+// NO_DIRECTIONAL_LIGHT as `features` allow.
+gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
+
+class LightingProgram {
+public:
+    LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
+        : label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines))
+    {
+    }
+
+    // The variant for `features`, compiled the first time it is asked for (throws
+    // manylights::Error as gl::Program does).
+    const gl::Program& variant(const LightingFeatures& features) const;
+
+private:
+    std::string label_;
+    std::vector<gl::ShaderStage> stages_;
+    gl::Defines defines_;
+    mutable std::map<LightingFeatures, gl::Program> variants_;
+};
+
+}  // namespace manylights
