@@ -45,6 +45,14 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
       lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
                 gridDefines(shaderDefines(options)))
 {
+    if (lightWindowsSupported()) {
+        gl::Defines defines = gridDefines(shaderDefines(options));
+        addLightWindowDefines(defines);
+        windowLighting_.emplace("clustered lighting",
+                                std::vector<gl::ShaderStage>{{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                             {GL_FRAGMENT_SHADER, "clustered.frag"}},
+                                defines);
+    }
 }
 
 std::uint32_t ClusteredTechnique::lightsPerBatch(int width, int height)
@@ -143,7 +151,11 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
         }
         auto pass = profiler.pass("lighting");
         bindGrid();
-        shadeCoveredPixels(scene, targets, lighting_.variant(scene.lightingFeatures()), batch);
+        const bool oneWindow = windowLighting_ && scene.lightCount() <= kLightsPerWindow;
+        if (oneWindow)
+            scene.bindLightWindow(batch);
+        shadeCoveredPixels(scene, targets, (oneWindow ? *windowLighting_ : lighting_).variant(scene.lightingFeatures()),
+                           batch);
     }
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -50,6 +51,9 @@ private:
     gl::Program tiles_;
     gl::Program assign_;
     LightingProgram lighting_;
+    // The same with the lights as one uniform window (render/LightBatches.h), for scenes whose
+    // lights fit in one: batches stay as large as the mask budget allows above that.
+    std::optional<LightingProgram> windowLighting_;
     int gridWidth_ = 0;
     int gridHeight_ = 0;
     std::uint32_t clusterCount_ = 0;

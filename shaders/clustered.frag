@@ -4,8 +4,9 @@
 // summary marks as not empty) and each word bit by bit, in light index order. Loop
 // iterations: at most 9 summary words, 256 + 1 per mask-word walk and one per light of the
 // batch plus one per word: about 8,700, under the bound of render/LightBatches.h.
-#include "lib/lighting.glsl"
+// lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
+#include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/clusters.glsl"
 
