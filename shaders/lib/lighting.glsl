@@ -48,7 +48,8 @@ vec3 shadeGlobal(Surface s, vec3 V)
 // A program may be specialised for the lights of its scene (render/LightingPrograms.h):
 // NO_SPOT_LIGHTS (S = 1 for every light), ONLY_CLASSIC_FALLOFF or ONLY_RANGE_FALLOFF (one
 // kind of A). Without them every kind is evaluated and the light's own is selected, since on
-// llvmpipe a branch costs both sides: 2 of the 3 pow per pair in the general program.
+// llvmpipe a branch costs both sides: the spot factor's pow and the unused falloff are paid
+// by every pair in the general program.
 vec4 lightReach(GpuLight light, vec3 position)
 {
     vec3 toLight = light.positionRadius.xyz - position;
