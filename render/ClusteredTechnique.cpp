@@ -43,16 +43,9 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
              gridDefines(gbufferDefines(options.gbufferLayout))),
       assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, gridDefines({})),
       lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                gridDefines(shaderDefines(options)))
+                gridDefines(shaderDefines(options))),
+      lightWindows_(lightWindowsSupported())
 {
-    if (lightWindowsSupported()) {
-        gl::Defines defines = gridDefines(shaderDefines(options));
-        addLightWindowDefines(defines);
-        windowLighting_.emplace("clustered lighting",
-                                std::vector<gl::ShaderStage>{{GL_VERTEX_SHADER, "fullscreen.vert"},
-                                                             {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                                defines);
-    }
 }
 
 std::uint32_t ClusteredTechnique::lightsPerBatch(int width, int height)
@@ -144,6 +137,11 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
         resizeGrid(targets.width, targets.height, batches.front().size());
         findTileRanges(scene, targets);
     }
+    const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
+    if (oneWindow)
+        scene.bindLightWindow(batches.front());
+    const gl::Program& program = lighting_.variant(
+        scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
     for (const LightBatch& batch : batches) {
         {
             auto pass = profiler.pass("clusters");
@@ -151,11 +149,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
         }
         auto pass = profiler.pass("lighting");
         bindGrid();
-        const bool oneWindow = windowLighting_ && scene.lightCount() <= kLightsPerWindow;
-        if (oneWindow)
-            scene.bindLightWindow(batch);
-        shadeCoveredPixels(scene, targets, (oneWindow ? *windowLighting_ : lighting_).variant(scene.lightingFeatures()),
-                           batch);
+        shadeCoveredPixels(scene, targets, program, batch);
     }
 }
 

@@ -10,7 +10,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -51,9 +50,9 @@ private:
     gl::Program tiles_;
     gl::Program assign_;
     LightingProgram lighting_;
-    // The same with the lights as one uniform window (render/LightBatches.h), for scenes whose
-    // lights fit in one: batches stay as large as the mask budget allows above that.
-    std::optional<LightingProgram> windowLighting_;
+    // A frame of one batch that fits a uniform window reads its lights from it
+    // (render/LightBatches.h); larger frames keep batches as large as the mask budget allows.
+    bool lightWindows_;
     int gridWidth_ = 0;
     int gridHeight_ = 0;
     std::uint32_t clusterCount_ = 0;

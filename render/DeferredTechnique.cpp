@@ -41,22 +41,10 @@ void beginAddingToCoveredPixels()
     glDepthMask(GL_FALSE);
 }
 
-namespace {
-
-gl::Defines deferredDefines(const TechniqueOptions& options, bool lightWindows)
-{
-    gl::Defines defines = shaderDefines(options);
-    if (lightWindows)
-        addLightWindowDefines(defines);
-    return defines;
-}
-
-}  // namespace
-
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
     : lightWindows_(lightWindowsSupported()),
       lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
-                deferredDefines(options, lightWindows_))
+                shaderDefines(options))
 {
 }
 
@@ -64,7 +52,8 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pas
 {
     targets.gbuffer.fill(scene, profiler);
     auto pass = profiler.pass("lighting");
-    const gl::Program& program = lighting_.variant(scene.lightingFeatures());
+    const gl::Program& program = lighting_.variant(
+        scene.lightingFeatures(), lightWindows_ ? LightSource::UniformWindow : LightSource::StorageBuffer);
     const std::uint32_t perBatch = lightWindows_ ? kLightsPerWindow : kLightsPerBatch;
     for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch)) {
         if (lightWindows_)

@@ -36,6 +36,11 @@ void addLightBatchDefines(gl::Defines& defines)
     defines.emplace_back("LIGHT_BATCH_LOCATION", std::to_string(kLightBatchLocation));
 }
 
+bool fitsOneLightWindow(const std::vector<LightBatch>& batches)
+{
+    return batches.size() == 1 && batches.front().size() <= kLightsPerWindow;
+}
+
 bool lightWindowsSupported()
 {
     GLint maxBlockSize = 0;

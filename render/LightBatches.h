@@ -52,7 +52,7 @@ void addLightBatchDefines(gl::Defines& defines);
 
 // Light windows: a batch's lights as a uniform block (shaders/lib/lights.glsl, built with
 // LIGHT_WINDOW_BINDING) instead of the storage buffer, for passes where every pixel walks the
-// same lights in order (deferred). llvmpipe reads a uniform block with one vector gather per
+// same lights in order (deferred) and for frames of one small batch (clustered). llvmpipe reads a uniform block with one vector gather per
 // value and a storage buffer lane by lane, testing each lane's bounds (a quarter of the
 // deferred lighting pass on LearnOpenGL's scene, docs/performance.md); a GPU broadcasts a
 // uniform read that every thread shares. A window is 64 KiB of lights, the uniform block size
@@ -61,6 +61,10 @@ void addLightBatchDefines(gl::Defines& defines);
 inline constexpr std::size_t kLightWindowBytes = 64 * 1024;
 inline constexpr std::uint32_t kLightsPerWindow = 1024;  // GpuScene.cpp checks it fills the window
 inline constexpr unsigned kLightWindowBinding = 2;  // uniform buffer binding; 0 and 1 are lib/frame.glsl's and lib/shadows.glsl's
+// Whether a frame lit in `batches` can read its lights from one window: a single batch of at
+// most kLightsPerWindow. (Windows start at multiples of kLightsPerWindow; batches sized for
+// another budget, such as clustered's masks at 8192x4096, need not.)
+bool fitsOneLightWindow(const std::vector<LightBatch>& batches);
 // Whether GL_MAX_UNIFORM_BLOCK_SIZE holds a window.
 bool lightWindowsSupported();
 // LIGHT_WINDOW_BINDING and LIGHTS_PER_WINDOW.

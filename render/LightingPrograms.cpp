@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "render/LightBatches.h"
+
 namespace manylights {
 
 LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional)
@@ -29,11 +31,16 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
     return defines;
 }
 
-const gl::Program& LightingProgram::variant(const LightingFeatures& features) const
+const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source) const
 {
-    auto found = variants_.find(features);
-    if (found == variants_.end())
-        found = variants_.emplace(features, gl::Program(label_, stages_, lightingFeatureDefines(features, defines_))).first;
+    const auto key = std::make_pair(features, source);
+    auto found = variants_.find(key);
+    if (found == variants_.end()) {
+        gl::Defines defines = lightingFeatureDefines(features, defines_);
+        if (source == LightSource::UniformWindow)
+            addLightWindowDefines(defines);
+        found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;
+    }
     return found->second;
 }
 

@@ -6,12 +6,15 @@
 // therefore compiled per LightingFeatures, on first use, with the #defines of
 // shaders/lib/lighting.glsl that leave out what the scene cannot need (docs/performance.md).
 // A program built without them (gl::Program with shaderDefines alone) handles every scene.
+// The same variants also choose where the lights are read from (LightSource).
 #pragma once
 
 #include <compare>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/Program.h"
@@ -36,6 +39,13 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std:
 // NO_DIRECTIONAL_LIGHT as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
+// Where a lighting program reads the lights (shaders/lib/lights.glsl).
+enum class LightSource : std::uint8_t {
+    StorageBuffer,  // the whole light buffer, any light by index
+    UniformWindow,  // the batch's window (render/LightBatches.h: light windows); the caller
+                    // binds it with GpuScene::bindLightWindow
+};
+
 class LightingProgram {
 public:
     LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
@@ -43,15 +53,15 @@ public:
     {
     }
 
-    // The variant for `features`, compiled the first time it is asked for (throws
-    // manylights::Error as gl::Program does).
-    const gl::Program& variant(const LightingFeatures& features) const;
+    // The variant for `features` reading the lights from `source`, compiled the first time it
+    // is asked for (throws manylights::Error as gl::Program does).
+    const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer) const;
 
 private:
     std::string label_;
     std::vector<gl::ShaderStage> stages_;
     gl::Defines defines_;
-    mutable std::map<LightingFeatures, gl::Program> variants_;
+    mutable std::map<std::pair<LightingFeatures, LightSource>, gl::Program> variants_;
 };
 
 }  // namespace manylights

@@ -286,5 +286,20 @@ TEST(ClusteredBatches, FitTheMaskBudgetAtEverySize)
     EXPECT_LT(ClusteredTechnique::lightsPerBatch(8192, 8192), kLightsPerBatch);
 }
 
+TEST(LightWindows, OnlyAFrameOfOneSmallBatchFitsOne)
+{
+    EXPECT_TRUE(fitsOneLightWindow(lightBatches(0)));
+    EXPECT_TRUE(fitsOneLightWindow(lightBatches(kLightsPerWindow)));
+    EXPECT_FALSE(fitsOneLightWindow(lightBatches(kLightsPerWindow + 1)));
+    // clustered at 8192x4096: batches of 512 by the mask budget. The second would start at
+    // light 512, inside the first window: it rendered with an assertion failure before this.
+    const std::uint32_t clusteredBatch = ClusteredTechnique::lightsPerBatch(8192, 4096);
+    ASSERT_LT(clusteredBatch, 1000u);
+    EXPECT_FALSE(fitsOneLightWindow(lightBatches(1000, clusteredBatch)));
+    // Deferred's own batches are whole windows, each starting at a multiple of the window.
+    for (const LightBatch& batch : lightBatches(3 * kLightsPerWindow + 5, kLightsPerWindow))
+        EXPECT_EQ(batch.first % kLightsPerWindow, 0u);
+}
+
 }  // namespace
 }  // namespace manylights

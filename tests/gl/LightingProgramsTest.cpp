@@ -1,12 +1,15 @@
 // The specialisation of the lighting programs (render/LightingPrograms.h): which features a
 // scene's lights have, which #defines they give, and one compiled variant per feature set.
-// That each variant shades correctly is the image tests' work: the analytic scenes cover
-// points only, spots, both falloffs and the directional light, each through its own variant.
+// That each variant shades correctly is the image tests' work: every technique against
+// forward and the analytic scenes, over scenes of points only (ONLY_RANGE_FALLOFF,
+// NO_DIRECTIONAL_LIGHT), spots with classic falloff, and spots_and_points, whose spots, both
+// falloffs and directional light need the general program (also a golden image).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "GlContextTest.h"
+#include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
@@ -77,6 +80,12 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
     EXPECT_NE(specialised.id(), general.id());
     EXPECT_EQ(&program.variant(points), &specialised);
     EXPECT_EQ(&program.variant(LightingFeatures{}), &general);
+    // The light window is one more axis of the same cache.
+    if (lightWindowsSupported()) {
+        const gl::Program& windowed = program.variant(points, LightSource::UniformWindow);
+        EXPECT_NE(windowed.id(), specialised.id());
+        EXPECT_EQ(&program.variant(points, LightSource::UniformWindow), &windowed);
+    }
 }
 
 }  // namespace
