@@ -28,8 +28,8 @@ void MipmappedTexture2D::setAnisotropy(float anisotropy) const
 {
     // Without the extension the parameter does not exist (setting it would be a GL error), and
     // 1 is what the texture filters with anyway.
-    if (maxAnisotropy() > 1.0f)
-        glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, std::clamp(anisotropy, 1.0f, maxAnisotropy()));
+    if (const float maximum = maxAnisotropy(); maximum > 1.0f)
+        glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, std::clamp(anisotropy, 1.0f, maximum));
 }
 
 MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,

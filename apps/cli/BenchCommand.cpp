@@ -412,12 +412,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             "--gbuffer", [&options](const std::string& name) { options.gbufferLayout = *parseGBufferLayout(name); },
             "G-buffer layout of the deferred techniques (seed or compact; default compact)")
         ->check(CLI::IsMember({"seed", "compact"}));
-    bench
-        ->add_option_function<std::string>(
-            "--anisotropy", [&options](const std::string& choice) { options.anisotropy = anisotropyLevel(choice); },
-            "Anisotropic filtering of material textures (auto: none on a software rasteriser, 8 on a GPU)")
-        ->check(CLI::IsMember(kAnisotropyChoices))
-        ->default_str("auto");
+    addAnisotropyOption(*bench, options.anisotropy);
     bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
         ->check(CLI::Range(0, kMaxShadowLights))
         ->capture_default_str();

@@ -54,12 +54,7 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_option("--gbuffer", gbufferLayout, "G-buffer layout of the deferred techniques")
         ->check(CLI::IsMember({"seed", "compact"}))
         ->capture_default_str();
-    renderCommand
-        ->add_option_function<std::string>(
-            "--anisotropy", [&render](const std::string& choice) { render.anisotropy = anisotropyLevel(choice); },
-            "Anisotropic filtering of material textures (auto: none on a software rasteriser, 8 on a GPU)")
-        ->check(CLI::IsMember(kAnisotropyChoices))
-        ->default_str("auto");
+    addAnisotropyOption(*renderCommand, render.anisotropy);
     renderCommand
         ->add_option("--shadow-lights", render.shadowLights,
                      "Local lights that cast shadows (chosen by screen coverage x intensity)")

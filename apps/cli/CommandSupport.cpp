@@ -30,9 +30,15 @@ std::string parseSize(const std::string& text, ImageSize& size)
     return {};
 }
 
-int anisotropyLevel(const std::string& choice)
+void addAnisotropyOption(CLI::App& command, int& level)
 {
-    return choice == "auto" ? kAutoAnisotropy : std::stoi(choice);
+    command
+        .add_option_function<std::string>(
+            "--anisotropy",
+            [&level](const std::string& choice) { level = choice == "auto" ? kAutoAnisotropy : std::stoi(choice); },
+            "Anisotropic filtering of material textures (auto: none on a software rasteriser, 8 on a GPU)")
+        ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
+        ->default_str("auto");
 }
 
 std::string formatSize(const ImageSize& size)

@@ -63,10 +63,9 @@ std::string parseSize(const std::string& text, ImageSize& size);
 // "1280x720".
 std::string formatSize(const ImageSize& size);
 
-// --anisotropy of render and bench: "auto" (kAutoAnisotropy) or one of these levels.
-inline const std::vector<std::string> kAnisotropyChoices = {"auto", "1", "2", "4", "8", "16"};
-// One of kAnisotropyChoices as TextureCache::setAnisotropy takes it.
-int anisotropyLevel(const std::string& choice);
+// --anisotropy of render and bench: "auto", 1, 2, 4, 8 or 16, stored in `level` as
+// TextureCache::setAnisotropy takes it (kAutoAnisotropy for "auto").
+void addAnisotropyOption(CLI::App& command, int& level);
 
 // Median (the mean of the middle two for an even count), min and max; `values` not empty.
 struct Statistics {

@@ -82,8 +82,10 @@ vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
 {
     GpuLight light = batchLight(lightIndex);
     vec4 reach = lightReach(light, s.position);
-    vec3 color = light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w *
-                 localShadow(lightIndex, light.positionRadius.xyz, s.position);
+    // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
+    // skips its texture taps for the pairs out of reach.
+    float shadow = reach.w != 0.0 ? localShadow(lightIndex, light.positionRadius.xyz, s.position) : 0.0;
+    vec3 color = light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w * shadow;
     return reach.w != 0.0 ? color : vec3(0.0);
 }
 
