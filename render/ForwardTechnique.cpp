@@ -23,7 +23,6 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     scene.bind();
-    const gl::Program& program = program_.variant(scene.lightingFeatures());
     // One draw of the objects per light batch. The later ones add their batch's light to the
     // fragments the first one left visible: the same program draws the same triangles, so
     // the depth test GL_EQUAL passes exactly those (GL's invariance rule).
@@ -35,8 +34,11 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
         }
-        setLightBatch(program, batch);
-        scene.drawObjects(program);
+        scene.drawObjects([&](MaterialMapSet maps) -> const gl::Program& {
+            const gl::Program& program = program_.variant(scene.lightingFeatures(), LightSource::StorageBuffer, maps);
+            setLightBatch(program, batch);
+            return program;
+        });
     }
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);

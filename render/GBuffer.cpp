@@ -42,8 +42,8 @@ GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBuff
     : layout_(layout),
       targets_(makeTargets(width, height, layout)),
       framebuffer_("gbuffer", {&targets_[0], &targets_[1], &targets_[2], &targets_[3], &targets_[4]}, &depthStencil),
-      program_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
-               gbufferDefines(layout))
+      programs_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                gbufferDefines(layout))
 {
 }
 
@@ -68,7 +68,10 @@ void GBuffer::fill(const GpuScene& scene) const
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     scene.bind();
-    scene.drawObjects(program_);
+    // The pass evaluates no light: the variants differ only in the material's maps.
+    scene.drawObjects([&](MaterialMapSet maps) -> const gl::Program& {
+        return programs_.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
+    });
 }
 
 void GBuffer::bindForReading() const

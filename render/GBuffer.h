@@ -10,6 +10,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "render/LightingPrograms.h"
 
 namespace manylights {
 
@@ -111,7 +112,7 @@ private:
     GBufferLayout layout_;
     std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
     gl::Framebuffer framebuffer_;
-    gl::Program program_;
+    LightingProgram programs_;  // one per set of material maps
     bool current_ = false;  // filled since the last invalidate()
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -218,20 +219,20 @@ bool instanceable(const Object* object, bool hasMaps)
 
 void GpuScene::groupDrawsIntoBatches()
 {
-    // Items of one mesh range next to each other, in scene order within a range (a stable
-    // sort), so coplanar surfaces of one range tie under GL_LESS as before. Moving items of
-    // different ranges past each other could change which of two coplanar surfaces of
-    // different meshes wins a tie; no scene in the goldens and agreement tests has such a pair
-    // (their images are bit-identical to drawing in scene order). The order is fixed here,
-    // once; poses change only the records.
+    // Items of one mesh range next to each other (a stable sort), so that runs of them can be
+    // instanced. The grouping is fixed here, once; poses change only the records. The draw
+    // order is orderFrontToBack's: nearest first, which decides which of two coplanar surfaces
+    // wins a tie under GL_LESS; every technique draws in the same order, so they agree, and no
+    // scene in the goldens has such a pair.
     const auto rangeKey = [](const DrawItem& draw) {
         return std::make_tuple(draw.range.baseVertex, draw.range.firstIndex, draw.range.indexCount);
     };
     std::stable_sort(draws_.begin(), draws_.end(),
                      [&](const DrawItem& a, const DrawItem& b) { return rangeKey(a) < rangeKey(b); });
+    for (std::size_t i = 0; i < draws_.size(); ++i)
+        draws_[i].groupedIndex = i;
     const auto canShare = [](const DrawItem& draw) {
-        const MaterialMaps& maps = *draw.maps;
-        return instanceable(draw.object, maps.diffuse || maps.specular || maps.normal || maps.emissive);
+        return instanceable(draw.object, mapSet(*draw.maps) != 0);
     };
     batches_.clear();
     for (std::size_t i = 0; i < draws_.size(); ++i) {
@@ -252,6 +253,8 @@ void GpuScene::setViewport(int width, int height)
     frame_.time = glm::vec4(static_cast<float>(time_), 0.0f, 0.0f, 0.0f);
     frame_.terms = terms_;
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+    orderFrontToBack();
+    writeInstances();
 }
 
 void GpuScene::setLightingTerms(const glm::vec3& terms)
@@ -270,6 +273,40 @@ void GpuScene::setTime(double t)
     poseDraws();
     frame_.time = glm::vec4(static_cast<float>(t), 0.0f, 0.0f, 0.0f);
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+    orderFrontToBack();
+    writeInstances();
+}
+
+void GpuScene::orderFrontToBack()
+{
+    // An item's key is the nearest view depth of its world bounds (a light marker's, of its
+    // centre): the box's centre depth less its half extent along the view axis. Ties keep the
+    // grouped order, so the order is a function of the scene, the pose and the camera.
+    const glm::vec3 eye(frame_.eye);
+    const glm::vec3 axis(frame_.viewAxis);
+    const auto key = [&](const DrawItem& draw) {
+        const Bounds& bounds = draw.worldBounds;
+        const glm::vec3 centre = bounds.empty() ? glm::vec3(draw.model[3]) : 0.5f * (bounds.min + bounds.max);
+        const glm::vec3 halfExtent = bounds.empty() ? glm::vec3(0.0f) : 0.5f * (bounds.max - bounds.min);
+        return std::make_pair(glm::dot(centre - eye, axis) - glm::dot(glm::abs(axis), halfExtent), draw.groupedIndex);
+    };
+    std::vector<std::pair<float, std::size_t>> batchKeys(batches_.size());
+    for (std::size_t b = 0; b < batches_.size(); ++b) {
+        const auto first = draws_.begin() + static_cast<std::ptrdiff_t>(batches_[b].firstItem);
+        const auto last = first + static_cast<std::ptrdiff_t>(batches_[b].itemCount);
+        // The instances of one draw are rasterised in order too. Light markers are small and
+        // stay in light order: sorting thousands of them every frame would cost more than it saves.
+        if (!first->markedLight)
+            std::sort(first, last, [&](const DrawItem& a, const DrawItem& c) { return key(a) < key(c); });
+        float nearest = std::numeric_limits<float>::max();
+        for (auto item = first; item != last; ++item)
+            nearest = std::min(nearest, key(*item).first);
+        batchKeys[b] = {nearest, b};
+    }
+    std::sort(batchKeys.begin(), batchKeys.end());
+    frontToBack_.resize(batchKeys.size());
+    for (std::size_t k = 0; k < batchKeys.size(); ++k)
+        frontToBack_[k] = batchKeys[k].second;
 }
 
 void GpuScene::packLights()
@@ -308,7 +345,6 @@ void GpuScene::poseDraws()
     posedTime_ = time_;
     if (moved || reshaped)
         noteTransformsChanged();
-    writeInstances();
 }
 
 void GpuScene::writeInstances()
@@ -369,49 +405,48 @@ void GpuScene::drawInstances(const gl::Program& program, std::size_t firstItem, 
                                       static_cast<GLsizei>(itemCount), range.baseVertex);
 }
 
-void GpuScene::drawObjects(const gl::Program& program) const
+void GpuScene::drawObjects(const MeshProgramFor& programFor) const
 {
-    program.use();
     instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
-    for (const DrawBatch& batch : batches_) {
+    const gl::Program* current = nullptr;
+    for (const std::size_t index : frontToBack_) {
+        const DrawBatch& batch = batches_[index];
         // Every item of a batch of several has no maps and no revolution: the first item's
         // uniforms hold for all of them.
         const DrawItem& first = draws_[batch.firstItem];
+        const gl::Program& program = programFor(mapSet(*first.maps));
+        if (&program != current) {
+            program.use();
+            current = &program;
+        }
         setObjectUniforms(program, first);
         bindMaterial(program, *first.material, *first.maps);
         drawInstances(program, batch.firstItem, batch.itemCount);
     }
 }
 
+MaterialMapSet GpuScene::mapSet(const MaterialMaps& maps)
+{
+    return static_cast<MaterialMapSet>((maps.diffuse ? kDiffuseMapBit : 0) | (maps.specular ? kSpecularMapBit : 0) |
+                                       (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0));
+}
+
 void GpuScene::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const
 {
-    // Locations and units of shaders/lib/material.glsl (its constants come from the instance
-    // record, GpuScene::writeInstances).
-    enum : GLint {
-        kMaps = 14,
-        kNormalScale = 15,
-    };
+    // Location and units of shaders/lib/material.glsl (its constants come from the instance
+    // record, GpuScene::writeInstances; which maps it samples, from the program: mapSet).
+    enum : GLint { kNormalScale = 15 };
     enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
-    enum : int { kHasDiffuseMap = 1, kHasSpecularMap = 2, kHasNormalMap = 4, kHasEmissiveMap = 8 };
-    int present = 0;
-    if (maps.diffuse) {
+    if (maps.diffuse)
         maps.diffuse->bindUnit(kDiffuseUnit);
-        present |= kHasDiffuseMap;
-    }
-    if (maps.specular) {
+    if (maps.specular)
         maps.specular->bindUnit(kSpecularUnit);
-        present |= kHasSpecularMap;
-    }
     if (maps.normal) {
         maps.normal->bindUnit(kNormalUnit);
-        present |= kHasNormalMap;
+        program.set(kNormalScale, material.normalScale);  // inactive, so unset, without the map
     }
-    if (maps.emissive) {
+    if (maps.emissive)
         maps.emissive->bindUnit(kEmissiveUnit);
-        present |= kHasEmissiveMap;
-    }
-    program.set(kMaps, present);
-    program.set(kNormalScale, material.normalScale);
 }
 
 Bounds GpuScene::objectsWorldBounds() const

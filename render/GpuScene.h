@@ -76,11 +76,14 @@ public:
         std::size_t itemCount;
     };
 
-    // Draws every object with `program` (shaders/mesh.vert with lib/material.glsl): binds the
-    // instance buffer, and per batch sets its first record, the revolution uniforms and the
-    // material's maps (texture units 6-8, 15). Items sharing a mesh range without maps or a
-    // surface of revolution are one instanced draw (see batches()).
-    void drawObjects(const gl::Program& program) const;
+    // Draws every object (shaders/mesh.vert with lib/material.glsl): binds the instance buffer,
+    // and per batch uses programFor(the material's set of maps) (mesh programs are compiled per
+    // set, render/LightingPrograms.h; programFor may set the program's own uniforms), sets the
+    // batch's first record, the revolution uniforms and binds the material's maps (texture
+    // units 6-8, 15). Items sharing a mesh range without maps or a surface of revolution are
+    // one instanced draw (see batches()).
+    using MeshProgramFor = std::function<const gl::Program&(MaterialMapSet)>;
+    void drawObjects(const MeshProgramFor& programFor) const;
     // The union of the drawn objects' world bounds.
     Bounds objectsWorldBounds() const;
     // Depth-only passes (shadow maps, shaders/shadow_depth.vert): draws the items whose world
@@ -97,7 +100,8 @@ public:
     // Changes whenever the lights move, for passes that cache data derived from them.
     std::uint64_t lightsVersion() const { return lightsVersion_; }
 
-    // The draw calls drawObjects makes, in order; their item counts sum to drawItemCount().
+    // The draw calls drawObjects makes (it makes them nearest first); their item counts sum to
+    // drawItemCount().
     const std::vector<DrawBatch>& batches() const { return batches_; }
     // Draw items: one per object sub-mesh and per light marker (one instance record each).
     std::size_t drawItemCount() const { return draws_.size(); }
@@ -146,8 +150,10 @@ private:
         std::optional<std::size_t> markedLight;  // the light a marker follows
         Bounds meshBounds;   // object space; empty for light markers, which cast no shadows
         Bounds worldBounds;  // for culling depth-only passes against a light's volume
+        std::size_t groupedIndex = 0;  // place after groupDrawsIntoBatches; breaks draw-order ties
     };
 
+    static MaterialMapSet mapSet(const MaterialMaps& maps);
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
     void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
     void addLightMarkers(float radius);
@@ -156,6 +162,11 @@ private:
     void writeInstances();
     void drawInstances(const gl::Program& program, std::size_t firstItem, std::size_t itemCount) const;
     void packLights();
+    // Opaque surfaces drawn nearest first let what lies behind them fail the depth test before
+    // its fragments are shaded (docs/performance.md). Orders the items within each batch of
+    // objects and the batches (frontToBack_) whenever the camera or the pose changes; the
+    // caller then rewrites the instance records.
+    void orderFrontToBack();
 
     const Scene& scene_;
     TextureCache textures_;
@@ -171,6 +182,7 @@ private:
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;  // grouped by mesh range (groupDrawsIntoBatches)
     std::vector<DrawBatch> batches_;
+    std::vector<std::size_t> frontToBack_;  // indices into batches_, the order drawObjects draws
     std::vector<GpuInstance> instances_;  // draws_[i]'s record is instances_[i]
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;

@@ -31,14 +31,23 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
     return defines;
 }
 
-const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source) const
+gl::Defines materialMapDefines(MaterialMapSet maps, gl::Defines defines)
 {
-    const auto key = std::make_pair(features, source);
+    defines.emplace_back("MATERIAL_MAPS", std::to_string(maps));
+    return defines;
+}
+
+const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source,
+                                            std::optional<MaterialMapSet> maps) const
+{
+    const auto key = std::make_tuple(features, source, maps);
     auto found = variants_.find(key);
     if (found == variants_.end()) {
         gl::Defines defines = lightingFeatureDefines(features, defines_);
         if (source == LightSource::UniformWindow)
             addLightWindowDefines(defines);
+        if (maps)
+            defines = materialMapDefines(*maps, std::move(defines));
         found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;
     }
     return found->second;

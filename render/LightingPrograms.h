@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,19 @@ enum class LightSource : std::uint8_t {
                     // binds it with GpuScene::bindLightWindow
 };
 
+// Which texture maps a material has, one bit each. A mesh program (shaders/mesh.vert with a
+// fragment shader calling lib/material.glsl's meshSurface()) is compiled per set, with the set
+// as the constant MATERIAL_MAPS: llvmpipe runs both sides of a branch, so a branch on a uniform
+// would pay every map's lookups for every fragment (docs/performance.md).
+using MaterialMapSet = std::uint8_t;
+inline constexpr MaterialMapSet kDiffuseMapBit = 1;
+inline constexpr MaterialMapSet kSpecularMapBit = 2;
+inline constexpr MaterialMapSet kNormalMapBit = 4;
+inline constexpr MaterialMapSet kEmissiveMapBit = 8;
+
+// `defines` plus MATERIAL_MAPS = `maps`.
+gl::Defines materialMapDefines(MaterialMapSet maps, gl::Defines defines);
+
 class LightingProgram {
 public:
     LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
@@ -53,15 +67,17 @@ public:
     {
     }
 
-    // The variant for `features` reading the lights from `source`, compiled the first time it
-    // is asked for (throws manylights::Error as gl::Program does).
-    const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer) const;
+    // The variant for `features` reading the lights from `source`, for a mesh program also for
+    // the material's `maps`, compiled the first time it is asked for (throws manylights::Error
+    // as gl::Program does).
+    const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer,
+                               std::optional<MaterialMapSet> maps = std::nullopt) const;
 
 private:
     std::string label_;
     std::vector<gl::ShaderStage> stages_;
     gl::Defines defines_;
-    mutable std::map<std::pair<LightingFeatures, LightSource>, gl::Program> variants_;
+    mutable std::map<std::tuple<LightingFeatures, LightSource, std::optional<MaterialMapSet>>, gl::Program> variants_;
 };
 
 }  // namespace manylights

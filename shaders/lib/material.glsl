@@ -9,9 +9,14 @@ layout(location = 4) flat in vec3 materialDiffuse;
 layout(location = 5) flat in vec3 materialSpecular;
 layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
-// Which maps the material has (render/GpuScene.cpp: bindMaterial): bit 0 diffuse, bit 1
-// specular, bit 2 normal, bit 3 emissive. A missing map leaves the constant as it is.
-layout(location = 14) uniform int materialMaps;
+// Which maps the material has: bit 0 diffuse, bit 1 specular, bit 2 normal, bit 3 emissive
+// (render/LightingPrograms.h: MaterialMapSet). A missing map leaves the constant as it is.
+// A compile-time constant, one program per set: llvmpipe runs both sides of a branch under a
+// lane mask, so branching on a uniform would pay every map's lookups for every fragment.
+#ifndef MATERIAL_MAPS
+#error "a mesh program is compiled for one set of material maps (MATERIAL_MAPS)"
+#endif
+const int materialMaps = MATERIAL_MAPS;
 layout(location = 15) uniform float materialNormalScale;  // glTF normalTexture.scale
 
 layout(binding = 6) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
@@ -53,8 +58,8 @@ Surface meshSurface()
     s.normal = normalize(worldNormal);
     s.diffuse = materialDiffuse;
     s.specular = materialSpecular;
-    // materialMaps is uniform, so these branches are uniform control flow and the implicit
-    // derivatives of texture() are defined.
+    // materialMaps is a constant, so the compiler drops the branches of absent maps and the
+    // implicit derivatives of texture() are defined.
     if ((materialMaps & kHasDiffuseMap) != 0)
         s.diffuse *= texture(diffuseMap, uv).rgb;
     if ((materialMaps & kHasSpecularMap) != 0)

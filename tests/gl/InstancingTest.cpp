@@ -102,11 +102,15 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     EXPECT_EQ(gpuScene.batches().back().itemCount, markers);
 
     // The GL draws every instance: every object's triangles and every marker's.
-    gl::Program program("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}});
+    const LightingProgram programs("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                                   {});
+    const auto programFor = [&](MaterialMapSet maps) -> const gl::Program& {
+        return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
+    };
     gpuScene.setViewport(64, 64);
     gpuScene.bind();
     const std::size_t markerTriangles = GpuScene::lightMarkerMesh().indices.size() / 3;
-    EXPECT_EQ(primitivesGenerated([&] { gpuScene.drawObjects(program); }), objectTriangles + markers * markerTriangles);
+    EXPECT_EQ(primitivesGenerated([&] { gpuScene.drawObjects(programFor); }), objectTriangles + markers * markerTriangles);
 
     // Shadow casters: every object and no marker, with or without culling splitting batches.
     gl::Program depthProgram("shadow depth",

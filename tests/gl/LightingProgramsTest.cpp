@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "GlContextTest.h"
+#include "core/Error.h"
 #include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
 #include "render/Technique.h"
@@ -86,6 +87,25 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
         EXPECT_NE(windowed.id(), specialised.id());
         EXPECT_EQ(&program.variant(points, LightSource::UniformWindow), &windowed);
     }
+}
+
+TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
+{
+    const LightingProgram program("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                                  {});
+    const gl::Program& plain = program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{0});
+    const gl::Program& textured =
+        program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{kDiffuseMapBit | kSpecularMapBit});
+    EXPECT_NE(plain.id(), textured.id());
+    EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{0}), &plain);
+    // The normal map's scale is a uniform only of the programs that sample a normal map
+    // (render/GpuScene.cpp sets it only for them).
+    EXPECT_EQ(glGetUniformLocation(textured.id(), "materialNormalScale"), -1);
+    const gl::Program& normalMapped = program.variant(LightingFeatures{}, LightSource::StorageBuffer, kNormalMapBit);
+    EXPECT_NE(glGetUniformLocation(normalMapped.id(), "materialNormalScale"), -1);
+    // A mesh program must say which maps it samples.
+    const std::vector<gl::ShaderStage> stages = {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}};
+    EXPECT_THROW(gl::Program("no maps given", stages), Error);
 }
 
 }  // namespace
