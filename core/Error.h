@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace manylights {
 
@@ -17,6 +18,10 @@ class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
+
+// `text` with its control characters escaped (\n, \t, \r, \xNN), so that a message naming a
+// file whose name holds a newline is still one line. Every error message is printed through it.
+std::string printableLine(std::string_view text);
 
 [[noreturn]] inline void assertionFailed(const char* expression, const char* function, const char* file,
                                          int line)

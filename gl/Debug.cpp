@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
+
+#include "core/Error.h"
 
 namespace manylights::gl {
 
@@ -18,6 +21,11 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
     // Compile and link failures reach the caller through the info log (gl::Program throws
     // with the file and line); only API errors are fatal here.
     if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER)
+        return;
+    // Running out of memory is the machine's limit, not a mistake in the code: the allocation
+    // that failed reports it as a manylights::Error (throwIfOutOfMemory). Mesa and the vendor
+    // drivers begin the message with the error's name.
+    if (std::string_view(message, static_cast<std::size_t>(length)).find("GL_OUT_OF_MEMORY") != std::string_view::npos)
         return;
     std::fprintf(stderr, "manylights: GL error (id %u): %.*s\n", id, static_cast<int>(length), message);
     std::abort();
@@ -39,6 +47,20 @@ void checkNoError(const char* where)
         std::fprintf(stderr, "manylights: GL error 0x%04x at %s\n", error, where);
         std::abort();
     }
+}
+
+void throwIfOutOfMemory(const std::string& what)
+{
+    bool outOfMemory = false;
+    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+        if (error != GL_OUT_OF_MEMORY) {
+            std::fprintf(stderr, "manylights: GL error 0x%04x allocating %s\n", error, what.c_str());
+            std::abort();
+        }
+        outOfMemory = true;
+    }
+    if (outOfMemory)
+        throw Error("out of memory allocating " + what);
 }
 
 DebugGroup::DebugGroup(std::string_view name)

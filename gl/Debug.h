@@ -1,6 +1,7 @@
 // Debug labels, debug groups and the KHR_debug error callback.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "gl/GlObject.h"
@@ -15,6 +16,11 @@ void installErrorCallback();
 // Aborts naming `where` if glGetError reports an error: a cheap check for the end of a test
 // or a frame when no debug context is present.
 void checkNoError(const char* where);
+
+// After an allocation (texture or buffer storage): throws manylights::Error "out of memory
+// allocating WHAT" if the driver reported GL_OUT_OF_MEMORY, which a user meets by asking for
+// an image too large for the machine; aborts on any other GL error, as checkNoError does.
+void throwIfOutOfMemory(const std::string& what);
 
 // Brackets a pass in debuggers and profilers (glPushDebugGroup / glPopDebugGroup).
 class DebugGroup {

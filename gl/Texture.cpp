@@ -1,5 +1,9 @@
 #include "gl/Texture.h"
 
+#include <string>
+
+#include "gl/Debug.h"
+
 namespace manylights::gl {
 
 Texture2D::Texture2D(std::string_view label, GLenum internalFormat, int width, int height)
@@ -7,6 +11,8 @@ Texture2D::Texture2D(std::string_view label, GLenum internalFormat, int width, i
 {
     setLabel(GL_TEXTURE, id(), label);
     glTextureStorage2D(id(), 1, internalFormat, width, height);
+    throwIfOutOfMemory("the " + std::to_string(width) + "x" + std::to_string(height) + " texture '" +
+                       std::string(label) + "'");
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 
@@ -20,27 +21,51 @@ unsigned char toByte(float value)
     return static_cast<unsigned char>(std::lround(255.0f * std::min(value, 1.0f)));
 }
 
+std::string encodePfm(const Image& image)
+{
+    // Scale −1: little-endian floats. Rows run bottom to top.
+    std::string bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1\n";
+    const std::size_t rowBytes = sizeof(float) * 3 * static_cast<std::size_t>(image.width);
+    for (int y = image.height - 1; y >= 0; --y)
+        bytes.append(reinterpret_cast<const char*>(image.pixel(0, y)), rowBytes);
+    return bytes;
+}
+
+std::string encodePng(const Image& image)
+{
+    std::vector<unsigned char> pixels(image.rgb.size());
+    std::transform(image.rgb.begin(), image.rgb.end(), pixels.begin(), toByte);
+    std::string bytes;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    };
+    // Encoding to memory cannot fail but for memory, which throws; the file is written by
+    // one checked writer (core/AtomicFile.h).
+    if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, pixels.data(), image.width * 3) == 0)
+        throw Error("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
+    return bytes;
+}
+
+std::string encodeImage(const Image& image, const std::filesystem::path& path)
+{
+    return hasExtension(path, ".pfm") ? encodePfm(image) : encodePng(image);
+}
+
 void writePfm(const Image& image, const std::filesystem::path& path)
 {
-    writeFileAtomically(path, "image", [&](const std::filesystem::path& file) {
-        std::ofstream out(file, std::ios::binary);
-        // Scale −1: little-endian floats. Rows run bottom to top.
-        out << "PF\n" << image.width << " " << image.height << "\n-1\n";
-        for (int y = image.height - 1; y >= 0; --y)
-            out.write(reinterpret_cast<const char*>(image.pixel(0, y)),
-                      static_cast<std::streamsize>(sizeof(float) * 3 * image.width));
-        out.close();
-        return static_cast<bool>(out);
-    });
+    writeFileAtomically(path, "image", encodePfm(image));
 }
 
 void writePng(const Image& image, const std::filesystem::path& path)
 {
-    std::vector<unsigned char> bytes(image.rgb.size());
-    std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), toByte);
-    writeFileAtomically(path, "image", [&](const std::filesystem::path& file) {
-        return stbi_write_png(file.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) != 0;
-    });
+    writeFileAtomically(path, "image", encodePng(image));
+}
+
+bool hasExtension(const std::filesystem::path& path, std::string_view extension)
+{
+    std::string actual = path.extension().string();
+    std::transform(actual.begin(), actual.end(), actual.begin(), [](unsigned char c) { return std::tolower(c); });
+    return actual == extension;
 }
 
 Image readPfm(const std::filesystem::path& path)

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace manylights {
@@ -17,10 +18,17 @@ struct Image {
     const float* pixel(int x, int y) const { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
 };
 
-// Writes to a temporary file next to `path` and renames it into place, so a failed write
-// never leaves a partial image under the requested name. Throws manylights::Error.
+// The bytes of a PFM file (little-endian floats, rows bottom to top).
+std::string encodePfm(const Image& image);
+// The bytes of an 8-bit RGB PNG of round(255 · clamp(v, 0, 1)) per channel, no gamma curve.
+std::string encodePng(const Image& image);
+// encodePfm for a path ending in .pfm (any case), encodePng otherwise.
+std::string encodeImage(const Image& image, const std::filesystem::path& path);
+// Whether `path` ends in `extension` (".png", lower case), ignoring case: out.PNG is a PNG.
+bool hasExtension(const std::filesystem::path& path, std::string_view extension);
+
+// Encodes and writes whole or not at all (core/AtomicFile.h). Throws manylights::Error.
 void writePfm(const Image& image, const std::filesystem::path& path);
-// 8-bit RGB PNG of round(255 · clamp(v, 0, 1)) per channel, no gamma curve.
 void writePng(const Image& image, const std::filesystem::path& path);
 
 // Reads a PFM written by writePfm (or any colour "PF" file). Throws manylights::Error.

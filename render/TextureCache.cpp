@@ -10,6 +10,7 @@
 #include <stb/stb_image.h>
 
 #include "core/Error.h"
+#include "core/InputFile.h"
 #include "gl/Driver.h"
 
 namespace manylights {
@@ -18,10 +19,6 @@ namespace {
 
 struct StbiFree {
     void operator()(stbi_uc* pixels) const { stbi_image_free(pixels); }
-};
-
-struct FileClose {
-    void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
 [[noreturn]] void fail(const std::string& path, const std::string& problem)
@@ -41,15 +38,8 @@ std::string canonicalKey(const std::string& path)
 
 DecodedImage decodeImageFile(const std::string& path, int maxSide)
 {
-    const std::unique_ptr<std::FILE, FileClose> file(std::fopen(path.c_str(), "rb"));
-    if (!file)
-        fail(path, "cannot open texture");
-    std::vector<unsigned char> bytes;
-    unsigned char buffer[1 << 16];
-    for (std::size_t read; (read = std::fread(buffer, 1, sizeof buffer, file.get())) > 0;)
-        bytes.insert(bytes.end(), buffer, buffer + read);
-    if (std::ferror(file.get()))
-        fail(path, "cannot read texture");
+    const std::string text = readInputFile(path, "texture");
+    const std::span<const unsigned char> bytes(reinterpret_cast<const unsigned char*>(text.data()), text.size());
     return decodeImageMemory(path, bytes, maxSide);
 }
 

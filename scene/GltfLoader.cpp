@@ -27,6 +27,7 @@
 #include <tiny_gltf.h>
 
 #include "core/Error.h"
+#include "core/InputFile.h"
 #include "scene/Meshes.h"
 
 namespace manylights {
@@ -83,6 +84,25 @@ bool noFileRead(std::vector<unsigned char>*, std::string* error, const std::stri
 bool noFileWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*)
 {
     return false;
+}
+// External buffers and images through the one input reader (core/InputFile.h): a FIFO or a
+// device named as a buffer's uri is refused, not read for ever.
+bool inputFileExists(const std::string& path, void*)
+{
+    std::error_code error;
+    return std::filesystem::exists(path, error);
+}
+bool readExternalFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void*)
+{
+    try {
+        const std::string text = readInputFile(path, "the file");
+        bytes->assign(text.begin(), text.end());
+        return true;
+    } catch (const Error& e) {
+        if (error)
+            *error += std::string(e.what()) + "\n";
+        return false;
+    }
 }
 
 // A checked view of an accessor's elements inside its buffer.
@@ -731,6 +751,52 @@ bool isBinaryGltf(const std::vector<unsigned char>& bytes)
     return bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
 }
 
+// tinygltf parses extras and extensions recursively and overflows the stack somewhere past
+// 10,000 levels; no real file nests deeper than a few dozen. Checked on the text first.
+constexpr int kMaxGltfJsonDepth = 512;
+
+void checkJsonNesting(std::string_view json, const std::string& displayName)
+{
+    int depth = 0;
+    int line = 1;
+    std::size_t lineStart = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (c == '\n') {
+            ++line;
+            lineStart = i + 1;
+        } else if (inString) {
+            if (c == '\\')
+                ++i;  // the escaped character cannot end the string
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > kMaxGltfJsonDepth)
+                throw Error(displayName + ":" + std::to_string(line) + ":" + std::to_string(i - lineStart + 1) +
+                            ": JSON nested deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
+        } else if (c == '}' || c == ']') {
+            --depth;
+        }
+    }
+}
+
+// The JSON text of a .gltf file, or of a .glb file's first chunk (empty if it has none).
+std::string_view gltfJsonText(const std::vector<unsigned char>& bytes)
+{
+    const char* data = reinterpret_cast<const char*>(bytes.data());
+    if (!isBinaryGltf(bytes))
+        return {data, bytes.size()};
+    constexpr std::size_t kChunkStart = 20;  // 12-byte header, chunk length and type
+    if (bytes.size() < kChunkStart)
+        return {};
+    std::uint32_t length = 0;
+    std::memcpy(&length, data + 12, sizeof length);  // little-endian, as the format and x86
+    return {data + kChunkStart, std::min<std::size_t>(length, bytes.size() - kChunkStart)};
+}
+
 }  // namespace
 
 Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string& displayName,
@@ -738,9 +804,12 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
 {
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw Error(displayName + ": the file is too large (over 4 GiB)");
+    checkJsonNesting(gltfJsonText(bytes), displayName);
     tinygltf::TinyGLTF context;
     context.SetImageLoader(&keepEncodedImage, nullptr);
-    if (!options.allowExternalFiles)
+    if (options.allowExternalFiles)
+        context.SetFsCallbacks({&inputFileExists, &keepPath, &readExternalFile, &noFileWrite, nullptr});
+    else
         context.SetFsCallbacks({&noFileExists, &keepPath, &noFileRead, &noFileWrite, nullptr});
     tinygltf::Model gltf;
     std::string error;
@@ -768,17 +837,9 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
 
 Model loadGltfFile(const fs::path& path, const GltfOptions& options)
 {
-    const std::string displayName = path.string();
-    std::error_code error;
-    if (fs::is_directory(path, error))
-        throw Error(displayName + ": cannot open the file: it is a directory");
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream)
-        throw Error(displayName + ": cannot open the file: " + std::strerror(errno));
-    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-    if (stream.bad())
-        throw Error(displayName + ": cannot read the file");
-    return loadGltfMemory(bytes, displayName, path.parent_path(), options);
+    const std::string text = readInputFile(path, "the file");
+    const std::vector<unsigned char> bytes(text.begin(), text.end());
+    return loadGltfMemory(bytes, path.string(), path.parent_path(), options);
 }
 
 }  // namespace manylights

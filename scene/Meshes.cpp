@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "core/Error.h"
+#include "core/InputFile.h"
 #include "scene/Tangents.h"
 #include "scene/ObjLoader.h"
 
@@ -357,14 +358,8 @@ Mesh loadObjStream(std::istream& stream, const std::string& displayName)
 
 Mesh loadObjFile(const std::filesystem::path& path)
 {
-    const std::string displayName = path.string();
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        throw Error(displayName + ": cannot open the file: it is a directory");
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream)
-        throw Error(displayName + ": cannot open the file: " + std::strerror(errno));
-    return loadObjStream(stream, displayName);
+    std::istringstream stream(readInputFile(path, "the file"));
+    return loadObjStream(stream, path.string());
 }
 
 }  // namespace manylights

@@ -15,6 +15,7 @@
 #include <tiny_obj_loader.h>
 
 #include "core/Error.h"
+#include "core/InputFile.h"
 #include "scene/Meshes.h"
 
 namespace manylights {
@@ -403,16 +404,13 @@ namespace {
 
 std::optional<std::string> readTextFile(const fs::path& path)
 {
-    std::error_code error;
-    if (!fs::is_regular_file(path, error))
+    if (!inputFileProblem(path).empty())
         return std::nullopt;
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream)
+    try {
+        return readInputFile(path, "the file");
+    } catch (const Error&) {
         return std::nullopt;
-    std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-    if (stream.bad())
-        return std::nullopt;
-    return text;
+    }
 }
 
 }  // namespace
@@ -420,15 +418,7 @@ std::optional<std::string> readTextFile(const fs::path& path)
 Model loadObjModelFile(const fs::path& path)
 {
     const std::string displayName = path.string();
-    std::error_code error;
-    if (fs::is_directory(path, error))
-        fail(displayName, "cannot open the file: it is a directory");
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream)
-        fail(displayName, std::string("cannot open the file: ") + std::strerror(errno));
-    const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-    if (stream.bad())
-        fail(displayName, "cannot read the file");
+    const std::string text = readInputFile(path, "the file");
     const fs::path directory = path.parent_path();
     return loadObjModelText(text, displayName, directory,
                             [&](const std::string& name) { return readTextFile(directory / name); });

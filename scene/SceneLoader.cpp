@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/InputFile.h"
 #include "scene/GltfLoader.h"
 #include "scene/Meshes.h"
 #include "scene/Revolution.h"
@@ -151,14 +152,27 @@ std::size_t editDistance(std::string_view a, std::string_view b)
     return row[b.size()];
 }
 
+// The guess compares names of at most this many bytes, against at most this many candidates:
+// the edit distance costs the product of the lengths, and a 600 KB file of long material
+// names must fail at once, not after hours. A typo of a longer name goes unguessed.
+constexpr std::size_t kMaxGuessedNameLength = 64;
+constexpr std::size_t kMaxGuessCandidates = 4096;
+
 // The candidate the user most likely meant: a small edit away (typos, British spellings,
 // case) or sharing all but the last letter of the shorter word as a prefix.
 std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates)
 {
+    if (word.size() > kMaxGuessedNameLength)
+        return std::nullopt;
     const std::string lowerWord = toLower(word);
     std::optional<std::string> best;
     std::size_t bestDistance = 0;
+    std::size_t compared = 0;
     for (const std::string& candidate : candidates) {
+        if (candidate.size() > kMaxGuessedNameLength)
+            continue;
+        if (++compared > kMaxGuessCandidates)
+            break;
         const std::string lowerCandidate = toLower(candidate);
         std::size_t distance = editDistance(lowerWord, lowerCandidate);
         const std::size_t shorter = std::min(lowerWord.size(), lowerCandidate.size());
@@ -273,32 +287,50 @@ std::optional<std::size_t> findNumberToken(const std::string& text, const std::s
 }
 
 // nlohmann keeps the last of two equal keys in an object; a silently ignored first value is
-// the kind of typo the strict format exists to catch, so the parser callback rejects it,
-// naming the JSON path of the repeated key.
-class DuplicateKeyCheck {
+// the kind of typo the strict format exists to catch, so a first pass over the text rejects
+// it, naming the JSON path of the repeated key. A SAX pass, linear in the text: nlohmann
+// 3.11's parser callback rescans the enclosing container after every value, which made
+// 400,000 inline lights take 50 s to load (docs/performance.md).
+class DuplicateKeyCheck : public nlohmann::json_sax<Json> {
 public:
     explicit DuplicateKeyCheck(const std::string& displayName) : displayName_(displayName) {}
 
-    bool onEvent(Json::parse_event_t event, const Json& parsed)
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override
     {
-        switch (event) {
-        case Json::parse_event_t::object_start: stack_.push_back({true, {}, {}, 0}); break;
-        case Json::parse_event_t::array_start: stack_.push_back({false, {}, {}, 0}); break;
-        case Json::parse_event_t::key: {
-            Frame& top = stack_.back();
-            top.key = parsed.get<std::string>();
-            if (!top.keys.insert(top.key).second)
-                throw Error(displayName_ + ": " + currentPath() + ": duplicate key " + quote(top.key));
-            break;
-        }
-        case Json::parse_event_t::value: advance(); break;
-        case Json::parse_event_t::object_end:
-        case Json::parse_event_t::array_end:
-            stack_.pop_back();
-            advance();
-            break;
-        }
+        stack_.push_back({true, {}, {}, 0});
         return true;
+    }
+    bool key(string_t& name) override
+    {
+        Frame& top = stack_.back();
+        top.key = name;
+        if (!top.keys.insert(top.key).second)
+            throw Error(displayName_ + ": " + currentPath() + ": duplicate key " + quote(top.key));
+        return true;
+    }
+    bool end_object() override { return end(); }
+    bool start_array(std::size_t) override
+    {
+        stack_.push_back({false, {}, {}, 0});
+        return true;
+    }
+    bool end_array() override { return end(); }
+    // Rethrown as its own type (a syntax error, or a number out of range), so that the one
+    // handler in parseJson formats the errors of both passes.
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override
+    {
+        if (const auto* syntax = dynamic_cast<const Json::parse_error*>(&e))
+            throw *syntax;
+        if (const auto* range = dynamic_cast<const Json::out_of_range*>(&e))
+            throw *range;
+        throw Error(displayName_ + ": " + e.what());
     }
 
 private:
@@ -310,10 +342,16 @@ private:
     };
 
     // A finished value moves an enclosing array on to its next index.
-    void advance()
+    bool value()
     {
         if (!stack_.empty() && !stack_.back().isObject)
             ++stack_.back().index;
+        return true;
+    }
+    bool end()
+    {
+        stack_.pop_back();
+        return value();
     }
 
     std::string currentPath() const
@@ -330,11 +368,10 @@ private:
 
 Json parseJson(const std::string& text, const std::string& displayName)
 {
-    DuplicateKeyCheck duplicates(displayName);
     try {
-        return Json::parse(text, [&duplicates](int /*depth*/, Json::parse_event_t event, Json& parsed) {
-            return duplicates.onEvent(event, parsed);
-        });
+        DuplicateKeyCheck duplicates(displayName);
+        Json::sax_parse(text, &duplicates);
+        return Json::parse(text);
     } catch (const Json::parse_error& e) {
         // e.byte is the 1-based index of the last character read: the one that was wrong.
         const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
@@ -1319,21 +1356,7 @@ Scene parseScene(const std::string& jsonText, const std::string& displayName, co
 Scene loadSceneFile(const fs::path& path)
 {
     const std::string displayName = path.string();
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file)
-        throw Error(displayName + ": cannot open scene file: " + std::strerror(errno));
-    std::string text;
-    std::array<char, 65536> buffer{};
-    std::size_t read = 0;
-    while ((read = std::fread(buffer.data(), 1, buffer.size(), file)) > 0)
-        text.append(buffer.data(), read);
-    // A directory opens but fails to read (EISDIR); so does a file on a failing disk.
-    const bool failed = std::ferror(file) != 0;
-    const int readErrno = errno;
-    std::fclose(file);
-    if (failed)
-        throw Error(displayName + ": cannot open scene file: " + std::strerror(readErrno));
-
+    const std::string text = readInputFile(path, "scene file");
     Scene scene = parseScene(text, displayName, path.parent_path());
     scene.source = displayName;
     return scene;

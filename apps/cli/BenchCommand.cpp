@@ -401,7 +401,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     bench->add_option("--csv", options.csvPath, "Write one row per combination as CSV");
     bench->add_option("--budget-ms", options.budgetMs,
                       "Skip a technique's larger light counts once its median frame exceeds this")
-        ->check(CLI::NonNegativeNumber);
+        ->check(numberIn(0.0, 1.0e9));
     bench->add_option("--plot", options.plotPath, "Write frame time against lights as an SVG plot")
         ->check([](const std::string& path) {
             return endsWith(path, ".svg") && path.size() > 4 ? std::string()
@@ -468,12 +468,14 @@ void runBench(const BenchOptions& options)
                 scene.source.c_str(), context.description().c_str(), options.warmup, options.warmup == 1 ? "" : "s",
                 options.frames, options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
     std::fflush(stdout);
+    // Both outputs or neither.
+    AtomicFileSet outputs;
     if (!options.csvPath.empty())
-        writeTextFileAtomically(options.csvPath, "CSV", csvText(results));
+        outputs.stage(options.csvPath, "CSV", csvText(results));
     if (!options.plotPath.empty())
-        writeTextFileAtomically(options.plotPath, "plot",
-                                plotText(results, options, techniques,
-                                         std::filesystem::path(scene.source).filename().string()));
+        outputs.stage(options.plotPath, "plot",
+                      plotText(results, options, techniques, std::filesystem::path(scene.source).filename().string()));
+    outputs.commit();
 }
 
 }  // namespace manylights

@@ -1,6 +1,7 @@
 #include "apps/cli/Cli.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <new>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include "apps/cli/BenchCommand.h"
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/RenderCommand.h"
+#include "core/Numbers.h"
+#include "render/Image.h"
 #include "render/Technique.h"
 #include "core/Error.h"
 
@@ -18,6 +21,10 @@ int runCli(int argc, const char* const* argv)
 {
     CLI::App app{"manylights: many-light deferred rendering techniques, side by side", "manylights"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("manylights ") + MANYLIGHTS_VERSION);
+    // main.cpp hands `manylights view ...` to the viewer before this parser runs; the entry is
+    // here so that --help lists every command.
+    app.add_subcommand("view", "Show the scene in a window, interactively (manylights view --help)");
 
     RenderOptions render;
     std::string size = "1280x720";
@@ -34,7 +41,7 @@ int runCli(int argc, const char* const* argv)
         ->check(CLI::IsMember(viewModeNames()))
         ->capture_default_str();
     CLI::Option* timeOption =
-        renderCommand->add_option("--time", render.time, "Scene time in seconds")->check(CLI::NonNegativeNumber);
+        renderCommand->add_option("--time", render.time, "Scene time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
     std::string timeRange;
     CLI::Option* timeRangeOption =
         renderCommand
@@ -44,7 +51,7 @@ int runCli(int argc, const char* const* argv)
             ->excludes(timeOption);
     CLI::Option* fpsOption =
         renderCommand->add_option("--fps", render.fps, "Frames per second of a --time-range recording")
-            ->check(CLI::Range(0.001, 1000.0))
+            ->check(numberIn(0.001, 1000.0))
             ->capture_default_str();
     renderCommand->add_option("--lights", render.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));
@@ -70,40 +77,41 @@ int runCli(int argc, const char* const* argv)
 
     if (const std::optional<int> status = parseCommandLine(app, argc, argv))
         return *status;
+    const auto usageError = [](const std::string& problem) {
+        std::fprintf(stderr, "manylights: %s\n", printableLine(problem).c_str());
+        return kExitUsage;
+    };
 
-    if (benchCommand->parsed())
+    if (benchCommand->parsed()) {
+        if (!bench.csvPath.empty() && !bench.plotPath.empty() && sameFile(bench.csvPath, bench.plotPath))
+            return usageError("--csv and --plot name the same file '" + bench.csvPath + "'");
         return reportingErrors([&] { runBench(bench); }, "benchmarking");
+    }
 
     ImageSize renderSize;
-    if (std::string problem = parseSize(size, renderSize); !problem.empty()) {
-        std::fprintf(stderr, "manylights: %s\n", problem.c_str());
-        return kExitUsage;
-    }
+    if (std::string problem = parseSize(size, renderSize); !problem.empty())
+        return usageError(problem);
     render.width = renderSize.width;
     render.height = renderSize.height;
-    if (fpsOption->count() > 0 && timeRangeOption->count() == 0) {
-        std::fprintf(stderr, "manylights: --fps applies only to a --time-range recording\n");
-        return kExitUsage;
-    }
+    if (fpsOption->count() > 0 && timeRangeOption->count() == 0)
+        return usageError("--fps applies only to a --time-range recording");
     if (timeRangeOption->count() > 0) {
         TimeRange range;
         std::string problem = parseTimeRange(timeRange, range);
         if (problem.empty())
             problem = checkFramePattern(render.output);
+        if (problem.empty())
+            problem = checkRecordingFrameCount(range, render.fps);
         if (problem.empty() && !render.statsPath.empty())
             problem = "--stats measures one image; it does not combine with --time-range";
-        if (!problem.empty()) {
-            std::fprintf(stderr, "manylights: %s\n", problem.c_str());
-            return kExitUsage;
-        }
+        if (!problem.empty())
+            return usageError(problem);
         render.timeRange = range;
     }
-    const bool pfm = render.output.size() > 4 && render.output.ends_with(".pfm");
-    const bool png = render.output.size() > 4 && render.output.ends_with(".png");
-    if (!pfm && !png) {
-        std::fprintf(stderr, "manylights: the output must end in .png or .pfm, got '%s'\n", render.output.c_str());
-        return kExitUsage;
-    }
+    if (!hasExtension(render.output, ".png") && !hasExtension(render.output, ".pfm"))
+        return usageError("the output must end in .png or .pfm, got '" + render.output + "'");
+    if (!render.statsPath.empty() && sameFile(render.output, render.statsPath))
+        return usageError("--stats and -o name the same file '" + render.output + "'");
     render.view = *parseViewMode(view);
     render.gbufferLayout = *parseGBufferLayout(gbufferLayout);
 

@@ -4,12 +4,14 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <regex>
 
 #include <CLI/CLI.hpp>
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "core/Numbers.h"
 #include "render/TextureCache.h"
 
 namespace manylights {
@@ -55,19 +57,28 @@ Statistics summarize(std::vector<double> values)
     return {median, values.front(), values.back()};
 }
 
+CLI::Validator numberIn(double min, double max)
+{
+    return CLI::Validator(
+        [min, max](const std::string& text) {
+            double value = 0.0;
+            return checkNumber(text, min, max, value);
+        },
+        "NUMBER");
+}
+
+bool sameFile(const std::string& a, const std::string& b)
+{
+    std::error_code error;
+    const auto resolved = [&](const std::string& path) {
+        return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+    };
+    return resolved(a) == resolved(b);
+}
+
 bool endsWith(const std::string& text, const std::string& suffix)
 {
     return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-void checkWritable(const std::string& path, const std::string& what)
-{
-    const std::string temporary = temporarySibling(path).string();
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file)
-        throw Error(path + ": cannot write " + what + ": " + std::strerror(errno));
-    std::fclose(file);
-    std::remove(temporary.c_str());
 }
 
 std::optional<int> parseCommandLine(CLI::App& app, int argc, const char* const* argv)
@@ -77,8 +88,8 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, const char* const* 
     } catch (const CLI::CallForHelp& help) {
         return app.exit(help);
     } catch (const CLI::ParseError& error) {
-        app.exit(error);
-        return kExitUsage;
+        // --version ends the parse too, successfully (exit code 0).
+        return app.exit(error) == 0 ? 0 : kExitUsage;
     }
     return std::nullopt;
 }

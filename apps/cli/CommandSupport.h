@@ -1,6 +1,6 @@
 // What the subcommands share: the parsing of option values, the summary of timed frames and
-// the check that an output can be written (atomic writes themselves are core/AtomicFile.h). One definition each, so `render` and `bench` accept the same sizes and
-// report the same statistics.
+// the reporting of errors. One definition each, so `render` and `bench` accept the same sizes
+// and report the same statistics.
 #pragma once
 
 #include <cstdio>
@@ -16,6 +16,7 @@
 
 namespace CLI {
 class App;
+class Validator;
 }
 
 namespace manylights {
@@ -35,13 +36,13 @@ int reportingErrors(Command command, const std::string& activity)
     try {
         command();
     } catch (const Error& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
+        std::fprintf(stderr, "manylights: %s\n", printableLine(error.what()).c_str());
         return kExitFailure;
     } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "manylights: out of memory %s\n", activity.c_str());
+        std::fprintf(stderr, "manylights: out of memory %s\n", printableLine(activity).c_str());
         return kExitFailure;
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "manylights: %s\n", error.what());
+        std::fprintf(stderr, "manylights: %s\n", printableLine(error.what()).c_str());
         return kExitFailure;
     }
     return 0;
@@ -77,8 +78,11 @@ Statistics summarize(std::vector<double> values);
 
 bool endsWith(const std::string& text, const std::string& suffix);
 
-// Throws manylights::Error when a file cannot be created beside `path` (a missing folder, no
-// permission): checked before a long run, so that it fails in a second rather than at the end.
-void checkWritable(const std::string& path, const std::string& what);
+// Whether two output paths name one file (out.png and ./out.png; a link and its target).
+bool sameFile(const std::string& a, const std::string& b);
+
+// The check of every real-valued option: a finite number in [min, max] (core/Numbers.h).
+CLI::Validator numberIn(double min, double max);
+
 
 }  // namespace manylights

@@ -2,7 +2,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <unistd.h>
+
+#include "core/Numbers.h"
 
 namespace manylights {
 
@@ -69,6 +73,18 @@ std::string parseTimeRange(const std::string& text, TimeRange& range)
         return "--time-range must start at 0 or later, got '" + text + "'";
     if (!(range.end > range.start))
         return "--time-range must end after it starts, got '" + text + "'";
+    if (range.end > kMaxSceneSeconds)
+        return "--time-range must end by " + formatNumber(kMaxSceneSeconds) + " seconds, got '" + text + "'";
+    return {};
+}
+
+std::string checkRecordingFrameCount(const TimeRange& range, double fps)
+{
+    // In double, before any conversion to int can overflow.
+    const double frames = std::ceil((range.end - range.start) * fps - 1e-9);
+    if (!(frames <= kMaxFrameCount))
+        return "--time-range at --fps " + formatNumber(fps) + " is " + formatNumber(frames) + " frames; at most " +
+               formatNumber(kMaxFrameCount) + " can be recorded";
     return {};
 }
 
@@ -110,8 +126,17 @@ std::string formatFramePath(const std::string& pattern, int frame)
 
 void printRecordingProgress(int done, int total)
 {
+    // A bar redrawn in place on a terminal; in a log (stderr not a terminal) a plain line at
+    // every tenth of the frames, with no carriage returns.
+    static const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    if (!terminal) {
+        const int step = std::max(1, total / 10);
+        if (done > 0 && (done % step == 0 || done == total))
+            std::fprintf(stderr, "recorded %d/%d frames\n", done, total);
+        return;
+    }
     constexpr int kBarWidth = 30;
-    const int filled = total > 0 ? done * kBarWidth / total : kBarWidth;
+    const int filled = total > 0 ? static_cast<int>(static_cast<long long>(done) * kBarWidth / total) : kBarWidth;
     std::string bar(static_cast<std::size_t>(filled), '=');
     if (filled < kBarWidth)
         bar += '>';

@@ -11,13 +11,16 @@ struct TimeRange {
     double end = 0.0;
 };
 
-// "START:END" in seconds, 0 ≤ START < END, both finite. Returns the problem as one line
+// "START:END" in seconds, 0 ≤ START < END ≤ kMaxSceneSeconds (core/Numbers.h). Returns the problem as one line
 // (naming --time-range), or an empty string when `text` is a range; then `range` holds it.
 std::string parseTimeRange(const std::string& text, TimeRange& range);
 
 // The frames of [start, end) at `fps`: t_k = start + k / fps for k = 0 .. count − 1, the end
 // excluded (so that a looping animation does not show its first frame twice).
+// The count must first pass checkRecordingFrameCount.
 int recordingFrameCount(const TimeRange& range, double fps);
+// "" when the range at `fps` has at most kMaxFrameCount frames, else the problem as one line.
+std::string checkRecordingFrameCount(const TimeRange& range, double fps);
 double recordingFrameTime(const TimeRange& range, double fps, int frame);
 
 // An output pattern holds exactly one frame-number conversion, %d or %0Nd (N ≤ 9), and may

@@ -1,6 +1,9 @@
 #include "apps/cli/RenderCommand.h"
 
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -80,17 +83,13 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     return stats;
 }
 
-// The renderer's last frame to `path` (.pfm as floats, .png displayable), atomically.
-void writeLastFrame(const Renderer& renderer, ViewMode view, const std::string& path)
+// The renderer's last frame encoded for `path` (.pfm as floats, .png displayable).
+std::string encodeLastFrame(const Renderer& renderer, ViewMode view, const std::string& path)
 {
     Image image = renderer.readColour();
-    if (endsWith(path, ".pfm")) {
-        writePfm(image, path);
-    } else {
-        if (view != ViewMode::Final && view != ViewMode::Volumes)
-            image = displayableView(image, view, renderer.readCoverage());
-        writePng(image, path);
-    }
+    if (!hasExtension(path, ".pfm") && view != ViewMode::Final && view != ViewMode::Volumes)
+        image = displayableView(image, view, renderer.readCoverage());
+    return encodeImage(image, path);
 }
 
 // Every frame of the time range, each written atomically under its own name as soon as it is
@@ -99,13 +98,12 @@ void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions&
 {
     const TimeRange& range = *options.timeRange;
     const int count = recordingFrameCount(range, options.fps);
-    // Fail before the first frame, not after many, when the folder cannot be written.
-    checkWritable(formatFramePath(options.output, 0), "image");
     printRecordingProgress(0, count);
     for (int frame = 0; frame < count; ++frame) {
         renderer.setTime(recordingFrameTime(range, options.fps, frame));
         renderer.renderFrame(technique, options.view);
-        writeLastFrame(renderer, options.view, formatFramePath(options.output, frame));
+        const std::string path = formatFramePath(options.output, frame);
+        writeFileAtomically(path, "image", encodeLastFrame(renderer, options.view, path));
         printRecordingProgress(frame + 1, count);
     }
 }
@@ -114,6 +112,17 @@ void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions&
 
 void runRender(const RenderOptions& options)
 {
+    // Fail in a second, before loading and rendering, when an output cannot be written; a
+    // recording's folder is made as other tools make theirs.
+    if (options.timeRange) {
+        const std::filesystem::path first = formatFramePath(options.output, 0);
+        createOutputFolder(first);
+        checkWritable(first, "image");
+    } else {
+        checkWritable(options.output, "image");
+        if (!options.statsPath.empty())
+            checkWritable(options.statsPath, "statistics");
+    }
     const auto loadStart = std::chrono::steady_clock::now();
     const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
     const double loadMs =
@@ -141,21 +150,38 @@ void runRender(const RenderOptions& options)
     }
 
     const bool measuring = !options.statsPath.empty();
+    // A frame at 1920x1080 with thousands of lights can take minutes on a software rasteriser:
+    // on a terminal, a status line says what is running (erased when done); logs stay clean.
+    const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    const int total = options.frames + (measuring ? kWarmupFrames : 0);
+    int started = 0;
+    const auto renderOneFrame = [&] {
+        if (terminal)
+            std::fprintf(stderr, "\rrendering frame %d/%d (%s, %dx%d) ...\033[K", ++started, total,
+                         options.technique.c_str(), options.width, options.height);
+        FrameSample sample = renderer.renderFrame(*technique, options.view);
+        if (terminal && started == total)
+            std::fprintf(stderr, "\r\033[K");
+        return sample;
+    };
     for (int i = 0; measuring && i < kWarmupFrames; ++i)
-        renderer.renderFrame(*technique, options.view);
+        renderOneFrame();
     std::vector<FrameSample> frames;
     for (int i = 0; i < options.frames; ++i)
-        frames.push_back(renderer.renderFrame(*technique, options.view));
+        frames.push_back(renderOneFrame());
 
-    writeLastFrame(renderer, options.view, options.output);
+    // The image and the statistics appear together or not at all.
+    AtomicFileSet outputs;
+    outputs.stage(options.output, "image", encodeLastFrame(renderer, options.view, options.output));
     if (measuring) {
         const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
         nlohmann::json stats =
             statisticsJson(options, scene, lights.size(), frames, context.description(),
                            renderer.anisotropy(), *technique, work);
         stats["load_ms"] = loadMs;
-        writeTextFileAtomically(options.statsPath, "statistics", stats.dump(2) + "\n");
+        outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }
+    outputs.commit();
 }
 
 }  // namespace manylights

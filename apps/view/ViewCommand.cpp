@@ -9,6 +9,7 @@
 #include "apps/cli/CommandSupport.h"
 #include "apps/view/Viewer.h"
 #include "core/Error.h"
+#include "core/Numbers.h"
 #include "render/Technique.h"
 #include "render/Views.h"
 
@@ -27,7 +28,7 @@ int runViewCommand(int argc, const char* const* argv)
         ->check(CLI::IsMember(techniqueNames()))
         ->capture_default_str();
     app.add_option("--view", options.view, "What to show")->check(CLI::IsMember(viewModeNames()))->capture_default_str();
-    app.add_option("--time", options.time, "Animation start time in seconds")->check(CLI::NonNegativeNumber);
+    app.add_option("--time", options.time, "Animation start time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
     app.add_option("--lights", options.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));
     app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
@@ -38,7 +39,7 @@ int runViewCommand(int argc, const char* const* argv)
         return *status;
     ImageSize windowSize;
     if (std::string problem = parseSize(size, windowSize); !problem.empty()) {
-        std::fprintf(stderr, "manylights: %s\n", problem.c_str());
+        std::fprintf(stderr, "manylights: %s\n", printableLine(problem).c_str());
         return kExitUsage;
     }
     options.width = windowSize.width;

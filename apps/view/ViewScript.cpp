@@ -6,19 +6,13 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/Numbers.h"
 #include "render/Technique.h"
 #include "render/Views.h"
 
 namespace manylights {
 
 namespace {
-
-bool parseNumber(const std::string& text, double& value)
-{
-    const char* end = text.data() + text.size();
-    const auto [stop, error] = std::from_chars(text.data(), end, value);
-    return error == std::errc{} && stop == end && std::isfinite(value);
-}
 
 bool contains(const std::vector<std::string>& names, const std::string& name)
 {
@@ -66,23 +60,25 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
                 fail("'" + name + "' takes " + usage);
         };
         ScriptCommand command{ScriptCommand::Kind::Quit, args, 0.0, 0, 0, lineNumber};
-        const auto number = [&](const std::string& word, double lo, const char* what) {
+        // Every number through the one check of core/Numbers.h, with the limits the viewer can
+        // honour: a window no larger than a rendered image, no more frames than a recording.
+        const auto number = [&](const std::string& word, double lo, double hi, const char* what) {
             double value = 0.0;
-            if (!parseNumber(word, value) || value < lo)
-                fail(std::string(what) + ", got '" + word + "'");
+            if (const std::string problem = checkNumber(word, lo, hi, value); !problem.empty())
+                fail(std::string(what) + " " + problem);
             return value;
         };
         if (name == "frames") {
             expectArgs(1, "a frame count");
             command.kind = ScriptCommand::Kind::Frames;
-            command.number = number(args[0], 1.0, "the frame count must be a whole number >= 1");
+            command.number = number(args[0], 1.0, kMaxFrameCount, "the frame count");
             if (command.number != std::floor(command.number))
-                fail("the frame count must be a whole number >= 1, got '" + args[0] + "'");
+                fail("the frame count must be a whole number, got '" + args[0] + "'");
         } else if (name == "resize") {
             expectArgs(2, "a width and a height");
             command.kind = ScriptCommand::Kind::Resize;
-            command.width = static_cast<int>(number(args[0], 1.0, "the width must be >= 1"));
-            command.height = static_cast<int>(number(args[1], 1.0, "the height must be >= 1"));
+            command.width = static_cast<int>(number(args[0], 1.0, kMaxWindowDimension, "the width"));
+            command.height = static_cast<int>(number(args[1], 1.0, kMaxWindowDimension, "the height"));
         } else if (name == "technique") {
             expectArgs(1, "a technique name");
             command.kind = ScriptCommand::Kind::Technique;
@@ -96,7 +92,7 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
         } else if (name == "time") {
             expectArgs(1, "a time in seconds");
             command.kind = ScriptCommand::Kind::Time;
-            command.number = number(args[0], 0.0, "the time must be a number >= 0");
+            command.number = number(args[0], 0.0, kMaxSceneSeconds, "the time");
         } else if (name == "pause" || name == "play" || name == "quit") {
             expectArgs(0, "no arguments");
             command.kind = name == "pause"  ? ScriptCommand::Kind::Pause
@@ -105,7 +101,7 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
         } else if (name == "speed") {
             expectArgs(1, "a speed factor");
             command.kind = ScriptCommand::Kind::Speed;
-            command.number = number(args[0], 0.0, "the speed must be a number >= 0");
+            command.number = number(args[0], 0.0, kMaxSpeed, "the speed");
         } else if (name == "toggle") {
             expectArgs(1, "what to toggle");
             command.kind = ScriptCommand::Kind::Toggle;

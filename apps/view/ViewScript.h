@@ -8,6 +8,11 @@
 
 namespace manylights {
 
+// Limits of the script's numbers (docs/viewer.md): a window side (GL drivers' framebuffer
+// limits are 16384 or more), and the animation speed factor.
+inline constexpr double kMaxWindowDimension = 16384.0;
+inline constexpr double kMaxSpeed = 1000.0;
+
 struct ScriptCommand {
     enum class Kind {
         Frames,      // frames N: draw N frames
@@ -34,7 +39,8 @@ struct ScriptCommand {
 
 // Parses the script's text; blank lines and lines starting with '#' are skipped. Throws
 // manylights::Error "FILE:LINE: problem" on the first bad line (unknown command, wrong
-// arguments, unknown technique or view).
+// arguments, unknown technique or view, a number out of its range: frames up to
+// kMaxFrameCount, time up to kMaxSceneSeconds, sizes up to kMaxWindowDimension).
 std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::string& displayName);
 
 // The keys a script may press, by name (docs/viewer.md): left right up down plus minus w a s d

@@ -358,7 +358,7 @@ TEST(SceneLoader, MissingSceneFile)
         loadSceneFile(kSceneDir);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), kSceneDir.string() + ": cannot open scene file: Is a directory");
+        EXPECT_EQ(std::string(e.what()), kSceneDir.string() + ": cannot open scene file: it is a directory");
     }
 }
 

@@ -113,7 +113,14 @@ TEST(ViewScript, BadLinesNameFileAndLine)
     EXPECT_EQ(errorOf("frames 0").rfind("s.txt:1: the frame count", 0), 0u);
     EXPECT_EQ(errorOf("frames 1.5").rfind("s.txt:1: the frame count", 0), 0u);
     EXPECT_EQ(errorOf("resize 10").rfind("s.txt:1: 'resize' takes a width and a height", 0), 0u);
-    EXPECT_EQ(errorOf("time -1").rfind("s.txt:1: the time must be", 0), 0u);
+    EXPECT_EQ(errorOf("time -1").rfind("s.txt:1: the time must be a number from 0 to 1e+06, got '-1'", 0), 0u);
+    EXPECT_EQ(errorOf("time nan").rfind("s.txt:1: the time must be", 0), 0u);
+    // Numbers past what the viewer can honour: a size that wrapped in an int (and then tripped
+    // GLFW's assertion), frame counts that never end.
+    EXPECT_EQ(errorOf("frames 2\nresize 1e10 1e10").rfind("s.txt:2: the width must be a number from 1 to 16384", 0), 0u);
+    EXPECT_EQ(errorOf("resize 100 100000").rfind("s.txt:1: the height must be", 0), 0u);
+    EXPECT_EQ(errorOf("frames 1e20").rfind("s.txt:1: the frame count must be a number from 1 to 1e+06", 0), 0u);
+    EXPECT_EQ(errorOf("speed inf").rfind("s.txt:1: the speed must be", 0), 0u);
     EXPECT_EQ(errorOf("toggle colour").rfind("s.txt:1: cannot toggle 'colour'", 0), 0u);
     EXPECT_EQ(errorOf("key f13").rfind("s.txt:1: unknown key 'f13'", 0), 0u);
     EXPECT_EQ(errorOf("screenshot out.jpg").rfind("s.txt:1: the screenshot must be a .png", 0), 0u);
