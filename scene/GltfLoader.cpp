@@ -804,6 +804,15 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
 {
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw Error(displayName + ": the file is too large (over 4 GiB)");
+    // tinygltf reads the .glb container's version without checking it; version 1 (glTF 1.0)
+    // and anything newer are laid out differently.
+    if (isBinaryGltf(bytes) && bytes.size() >= 8) {
+        std::uint32_t version = 0;
+        std::memcpy(&version, bytes.data() + 4, sizeof version);
+        if (version != 2)
+            throw Error(displayName + ": a .glb container of version " + std::to_string(version) +
+                        "; only version 2 (glTF 2.0) is read");
+    }
     checkJsonNesting(gltfJsonText(bytes), displayName);
     tinygltf::TinyGLTF context;
     context.SetImageLoader(&keepEncodedImage, nullptr);

@@ -73,8 +73,10 @@ void forEachLine(const std::string& text, Visit visit)
 // tinyobjloader reads "nan", "inf" and other malformed numbers as 0 without a word, so the
 // numbers of the lines that carry them are checked here first, with the line number.
 // `keywords` maps a keyword to its description and the count of numbers it needs.
+// With `nonNegative` (material libraries: colours and the exponent) a number below zero is an
+// error too: a negative reflectance has no meaning, and the scene format refuses it as well.
 void checkNumbers(const std::string& text, const std::string& displayName,
-                  const std::map<std::string, std::pair<const char*, int>>& keywords)
+                  const std::map<std::string, std::pair<const char*, int>>& keywords, bool nonNegative = false)
 {
     forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
         const auto found = keywords.find(keyword);
@@ -93,11 +95,46 @@ void checkNumbers(const std::string& text, const std::string& displayName,
             if (error != std::errc{} || next != last || !std::isfinite(value))
                 fail(displayName, "line " + std::to_string(lineNumber) + ": " + what +
                                       " has a non-finite or malformed number '" + token + "'");
+            if (nonNegative && value < 0.0f)
+                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " must not be negative, got '" +
+                                      token + "'");
             ++count;
         }
         if (count < needed)
             fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " needs " +
                                   std::to_string(needed) + " numbers, has " + std::to_string(count));
+    });
+}
+
+// tinyobjloader reads face indices with atoi, which wraps past 2^31: "f 1 2 4294967299" with
+// three vertices drew a triangle. Every index of a face, line or point element must be an
+// integer within int's range here first (the count of vertices is checked afterwards).
+void checkElementIndices(const std::string& text, const std::string& displayName)
+{
+    forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
+        if (keyword != "f" && keyword != "l" && keyword != "p")
+            return;
+        std::istringstream line(rest);
+        for (std::string token; line >> token;) {
+            if (token.front() == '#')
+                break;
+            std::size_t partBegin = 0;
+            while (partBegin <= token.size()) {
+                const std::size_t slash = std::min(token.find('/', partBegin), token.size());
+                if (slash > partBegin) {  // "1//3" leaves the texture coordinate empty
+                    long long index = 0;
+                    const char* first = token.data() + partBegin;
+                    const char* last = token.data() + slash;
+                    const auto [next, error] = std::from_chars(first, last, index);
+                    if (error != std::errc{} || next != last || index > std::numeric_limits<int>::max() ||
+                        index < -static_cast<long long>(std::numeric_limits<int>::max()))
+                        fail(displayName, "line " + std::to_string(lineNumber) + ": the index '" +
+                                              token.substr(partBegin, slash - partBegin) +
+                                              "' is not an integer within ±2147483647");
+                }
+                partBegin = slash + 1;
+            }
+        }
     });
 }
 
@@ -149,7 +186,7 @@ public:
             fail(objName_, "line " + std::to_string(mtllibLine(name)) + ": material library '" + name +
                                "' not found (looked for " + path.string() + ")");
         MtlLibrary library{path.string(), path.parent_path(), std::move(*text)};
-        checkNumbers(library.text, library.displayName, kMtlNumberKeywords);
+        checkNumbers(library.text, library.displayName, kMtlNumberKeywords, true);
         const std::size_t before = materials->size();
         std::istringstream stream(library.text);
         tinyobj::LoadMtl(materialMap, materials, &stream, warning, error);
@@ -239,6 +276,7 @@ Model loadObjModelText(const std::string& text, const std::string& displayName, 
                        const MtlSource& mtlSource)
 {
     checkNumbers(text, displayName, kObjNumberKeywords);
+    checkElementIndices(text, displayName);
 
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;

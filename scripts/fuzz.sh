@@ -17,13 +17,13 @@ if [ ! -f "$build/build.ninja" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DMANYLIGHTS_FUZZ=ON -DMANYLIGHTS_TESTS=OFF -DMANYLIGHTS_WERROR=ON
 fi
-cmake --build "$build" -j "$jobs" --target FuzzSceneJson FuzzObj FuzzGltf
+cmake --build "$build" -j "$jobs" --target FuzzSceneJson FuzzObj FuzzGltf FuzzCommandLine
 
 # Seeds: copied fresh each run (read-only for libFuzzer); what it finds goes into
 # $build/corpus/<target>, kept between runs.
 seeds="$build/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds/FuzzSceneJson" "$seeds/FuzzObj" "$seeds/FuzzGltf" "$build/artifacts"
+mkdir -p "$seeds/FuzzSceneJson" "$seeds/FuzzObj" "$seeds/FuzzGltf" "$seeds/FuzzCommandLine" "$build/artifacts"
 cp tests/scenes/*.json tests/data/scene/example.json scenes/*.json "$seeds/FuzzSceneJson/"
 cp assets/models/bunny-lowres.obj assets/models/teapot-lowres.obj tests/data/scene/models/*.obj \
   tests/data/models/*.obj "$seeds/FuzzObj/"
@@ -41,7 +41,15 @@ if [ -d "$assimp" ]; then
   done
 fi
 
-for target in FuzzSceneJson FuzzObj FuzzGltf; do
+# Command-line seeds: a first byte choosing the parser (see FuzzCommandLine.cpp), then text.
+printf '\0%s' 2.5 > "$seeds/FuzzCommandLine/number"
+printf '\1%s' 1280x720 > "$seeds/FuzzCommandLine/size"
+printf '\2%s' '0:4 30' > "$seeds/FuzzCommandLine/time-range"
+printf '\3%s' 'frames/%04d.png' > "$seeds/FuzzCommandLine/pattern"
+printf '\4%s' "$(printf 'frames 2\nresize 640 360\ntime 1.5\nspeed 2\nscreenshot a.png\nquit')" \
+  > "$seeds/FuzzCommandLine/script"
+
+for target in FuzzSceneJson FuzzObj FuzzGltf FuzzCommandLine; do
   corpus="$build/corpus/$target"
   mkdir -p "$corpus"
   echo "fuzz: $target for ${seconds}s"

@@ -447,5 +447,20 @@ TEST(GltfAssimpModels, EveryTruncationOfABinaryFileIsAnError)
     }
 }
 
+TEST(GltfAssimpModels, OnlyVersion2GlbContainersAreRead)
+{
+    SKIP_WITHOUT_ASSIMP_MODELS();
+    std::vector<unsigned char> bytes = readBytes(kAssimpGltf / "BoxTextured-glTF-Binary/BoxTextured.glb");
+    ASSERT_GE(bytes.size(), 8u);
+    EXPECT_NO_THROW(loadGltfMemory(bytes, "v2.glb", {}, {1.0f / 256.0f, false}));
+    bytes[4] = 3;  // the little-endian version field
+    try {
+        loadGltfMemory(bytes, "v3.glb", {}, {1.0f / 256.0f, false});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "v3.glb: a .glb container of version 3; only version 2 (glTF 2.0) is read");
+    }
+}
+
 }  // namespace
 }  // namespace manylights

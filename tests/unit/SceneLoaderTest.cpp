@@ -543,6 +543,8 @@ const std::vector<BadScene> kBadScenes = {
      "up is parallel to the view direction"},
     {"CameraUpParallelGiven", R"json({"camera": {"eye": [0, 0, 0], "look_at": [1, 0, 0], "up": [-2, 0, 0]}})json",
      ": /camera/up: ", "up is parallel"},
+    {"CameraViewOverflows", R"json({"camera": {"eye": [3e38, 0, 0], "look_at": [-3e38, 0, 0]}})json",
+     ": /camera/look_at: ", "look_at - eye overflows a float"},
     {"CameraUpZero", R"json({"camera": {"up": [0, 0, 0]}})json", ": /camera/up: ", "must be a non-zero vector"},
     {"CameraEyeTooShort", R"json({"camera": {"eye": [0, 1]}})json", ": /camera/eye: ",
      "expected an array of 3 numbers, got an array of 2 elements"},
