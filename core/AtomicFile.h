@@ -1,7 +1,7 @@
 // Files that appear whole or not at all: images, statistics, CSV and plots are written to a
 // temporary sibling, every write, the flush to disk and the close checked, and renamed into
 // place only when all of that succeeded, so a failed run never leaves a partial file under
-// the requested name and never destroys the file that was there (SPEC.md §3). A command with
+// the requested name and never destroys the file that was there (docs/cli.md). A command with
 // several outputs stages them all and renames them together (AtomicFileSet).
 #pragma once
 

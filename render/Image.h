@@ -1,4 +1,4 @@
-// Float RGB images and their files: PFM (unclamped linear floats, SPEC.md §3) and PNG.
+// Float RGB images and their files: PFM (unclamped linear floats, docs/cli.md) and PNG.
 #pragma once
 
 #include <filesystem>

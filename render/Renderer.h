@@ -18,7 +18,7 @@
 
 namespace manylights {
 
-// Deterministic work of one frame (SPEC.md §3 --count-work).
+// Deterministic work of one frame (docs/cli.md --count-work).
 struct WorkCounts {
     std::uint64_t lightEvaluations = 0;  // (pixel, light) pairs the technique evaluated
     std::uint64_t inRangePairs = 0;      // (pixel, light) pairs with A·S > 0: the least possible

@@ -23,7 +23,7 @@ struct FrameTargets {
     int width;
     int height;
     gl::Texture2D depthStencil;
-    gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of SPEC.md §2
+    gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of docs/lighting.md
     gl::Framebuffer litFramebuffer;  // lit + depthStencil
     GBuffer gbuffer;
     gl::Texture2D lightEvaluations;  // R32UI: pairs evaluated per pixel, when counting work
@@ -67,7 +67,7 @@ public:
     virtual void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) = 0;
 };
 
-// The techniques SPEC.md §3 names, in the order of the docs.
+// The techniques docs/cli.md names, in the order of the docs.
 const std::vector<std::string>& techniqueNames();
 // nullptr when the name is unknown.
 std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options = {});

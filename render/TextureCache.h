@@ -1,4 +1,4 @@
-// Material textures (SPEC.md §1 diffuse_map, specular_map, normal_map): decoded from PNG or
+// Material textures (docs/scene-format.md diffuse_map, specular_map, normal_map): decoded from PNG or
 // JPEG by stb_image, uploaded once per (file, colour space) however many materials use them,
 // with a full mipmap chain.
 #pragma once
@@ -26,7 +26,7 @@ enum class TextureColourSpace {
 inline constexpr int kMaxTextureSide = 16384;
 
 // An image as 8-bit RGBA, rows bottom to top (GL's order, so uv (0, 0) is the image's lower
-// left corner and +v is up: the OpenGL normal-map convention of SPEC.md §1).
+// left corner and +v is up: the OpenGL normal-map convention of docs/scene-format.md).
 struct DecodedImage {
     int width = 0;
     int height = 0;

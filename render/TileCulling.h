@@ -4,7 +4,7 @@
 //
 // Conservative by construction: a (tile, light) pair is dropped only when the light's A·S is
 // zero at every point the tile's pixels can see between the near and the far plane
-// (SPEC.md §2). Each test below proves emptiness of an intersection, with margins for the
+// (docs/lighting.md). Each test below proves emptiness of an intersection, with margins for the
 // float rounding of the shaders and of this code; anything it cannot prove empty is kept.
 #pragma once
 

@@ -1,4 +1,4 @@
-// What `--view` shows (SPEC.md §3): the lit image or one G-buffer quantity.
+// What `--view` shows (docs/cli.md): the lit image or one G-buffer quantity.
 #pragma once
 
 #include <optional>

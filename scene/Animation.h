@@ -1,4 +1,4 @@
-// Animation as a pure function of time (SPEC.md §1: a scene rendered at a given --time is a
+// Animation as a pure function of time (docs/scene-format.md: a scene rendered at a given --time is a
 // function of that time alone). An object or light carries an optional description of its
 // motion; objectTransformAt / lightAt evaluate it at any time t in seconds, with no state, so
 // frame 100 of a recording is the same image whether or not frames 0..99 were rendered.

@@ -1,4 +1,4 @@
-// The built-in scene used when no scene file is given (SPEC.md §3): a floor with a crowd of
+// The built-in scene used when no scene file is given (docs/cli.md): a floor with a crowd of
 // primitives (the spheres bounce), spinning bunnies, swaying teapots and two vases (surfaces of
 // revolution, one moved by the vertex shader), lit by two light sets of orbiting and drifting
 // lights with markers, so that `--lights N` sweeps it.

@@ -1,4 +1,4 @@
-// Mesh sources: procedural primitives (centred on the origin, SPEC.md §1) and OBJ files.
+// Mesh sources: procedural primitives (centred on the origin, docs/scene-format.md) and OBJ files.
 #pragma once
 
 #include <filesystem>

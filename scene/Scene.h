@@ -1,4 +1,4 @@
-// Plain scene data: what a scene file (SPEC.md §1) or the built-in default scene describes.
+// Plain scene data: what a scene file (docs/scene-format.md) or the built-in default scene describes.
 // No GL here: the render layer uploads this data, tests inspect it directly.
 #pragma once
 
@@ -32,7 +32,7 @@ struct DirectionalLight {
 
 enum class LightType : std::uint8_t { Point, Spot };
 
-// Which distance falloff a local light uses (SPEC.md §2).
+// Which distance falloff a local light uses (docs/lighting.md).
 enum class Falloff : std::uint8_t {
     Classic,  // 1 / (c + b·d + a·d²), cut where it drops below the attenuation threshold
     Range,    // 1/max(d, r/100)² − 1/r², exactly zero at r
@@ -66,7 +66,7 @@ struct Interval {
     float hi = 0.0f;
 };
 
-// Lights generated deterministically from a seed (SPEC.md §1 `light_sets`).
+// Lights generated deterministically from a seed (docs/scene-format.md `light_sets`).
 struct LightSet {
     int count = 0;
     std::uint32_t seed = 0;
@@ -150,7 +150,7 @@ struct Object {
     std::size_t material = 0;  // index into Scene::materials
     glm::mat4 transform{1.0f};
     // True when the object names its material: it then replaces the mesh file's own materials
-    // (SPEC.md §1: a file's materials are used only when the object names none).
+    // (docs/scene-format.md: a file's materials are used only when the object names none).
     bool materialOverridesMesh = true;
     // Motion over time; `transform` is the rest pose (scene/Animation.h).
     std::optional<ObjectAnimation> animation{};
@@ -169,14 +169,14 @@ struct EncodedImage {
 };
 
 // Screen-space ambient occlusion of the ambient term (`ssao` in the scene file;
-// docs/shadows.md). Off unless the scene asks for it: SPEC.md §2 has no occlusion term.
+// docs/shadows.md). Off unless the scene asks for it: docs/lighting.md has no occlusion term.
 struct AmbientOcclusion {
     bool enabled = false;
     float radius = 0.5f;    // world units: how far around a point occluders count
     float strength = 1.0f;  // ao = clamp(1 − strength · occluded fraction, 0, 1)
 };
 
-// Default from SPEC.md §2: a classic light is cut where A(d) · Imax falls to 1/256.
+// Default from docs/lighting.md: a classic light is cut where A(d) · Imax falls to 1/256.
 inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
 
 struct Scene {

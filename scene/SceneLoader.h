@@ -1,4 +1,4 @@
-// Reads a scene file (SPEC.md §1) strictly: every unknown key, wrong type, wrong length,
+// Reads a scene file (docs/scene-format.md) strictly: every unknown key, wrong type, wrong length,
 // non-finite or out-of-range value and missing file is an Error whose message names the file
 // and the line:column (syntax errors) or the JSON path (everything else).
 #pragma once

@@ -49,7 +49,7 @@ bool boxMayIntersectCone(const Bounds& box, const glm::vec3& apex, const glm::ve
 
 double screenCoverage(const glm::vec3& centre, float radius, const glm::mat4& viewProjection)
 {
-    // An unbounded light (SPEC.md §2: a = b = 0) reaches every pixel.
+    // An unbounded light (docs/lighting.md: a = b = 0) reaches every pixel.
     if (!(radius < 1e30f))
         return 1.0;
     glm::vec2 low(1.0f);

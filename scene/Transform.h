@@ -1,4 +1,4 @@
-// Object transforms of SPEC.md §1: M = T · Rz · Ry · Rx · S, Euler angles in degrees.
+// Object transforms of docs/scene-format.md: M = T · Rz · Ry · Rx · S, Euler angles in degrees.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -18,7 +18,7 @@ void main()
     case 3: value = s.diffuse; break;
     case 4: value = s.specular; break;
     case 5: value = s.emissive; break;
-    // View-space distance along the view axis (SPEC.md §3).
+    // View-space distance along the view axis (docs/cli.md).
     case 6: value = vec3(viewDepth(s.position)); break;
     }
     outColor = vec4(value, 1.0);

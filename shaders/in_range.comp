@@ -1,5 +1,5 @@
 #version 450 core
-// in_range_pairs (SPEC.md §3): for every pixel holding a surface, how many lights reach it
+// in_range_pairs (docs/cli.md): for every pixel holding a surface, how many lights reach it
 // (A·S > 0). The least work any technique can do; a technique's culling efficiency is this
 // over its light evaluations.
 //

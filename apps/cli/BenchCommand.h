@@ -1,4 +1,4 @@
-// `manylights bench` (SPEC.md §3): sweeps techniques × light counts × image sizes over one
+// `manylights bench` (docs/cli.md): sweeps techniques × light counts × image sizes over one
 // scene and reports frame times and work counts as a table, a CSV and an SVG plot.
 #pragma once
 

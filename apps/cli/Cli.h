@@ -1,4 +1,4 @@
-// The manylights command line (SPEC.md §3). main() only forwards here, so tests can drive
+// The manylights command line (docs/cli.md). main() only forwards here, so tests can drive
 // the exact code path users run.
 #pragma once
 

@@ -21,7 +21,7 @@ class Validator;
 
 namespace manylights {
 
-// Exit statuses of SPEC.md §3 (0 on success).
+// Exit statuses of docs/cli.md (0 on success).
 inline constexpr int kExitFailure = 1;  // a bad scene, a broken asset, no OpenGL context, ...
 inline constexpr int kExitUsage = 2;    // a bad command line
 

@@ -1,4 +1,4 @@
-// Distance falloff, light radius and spot factor of SPEC.md §2.
+// Distance falloff, light radius and spot factor of docs/lighting.md.
 //
 // This file is compiled twice: as GLSL (included by lighting.glsl) and as C++ (included by
 // scene/Falloff.cpp), so the radius the CPU computes for culling and the attenuation the

@@ -1,4 +1,4 @@
-// The one lighting function of SPEC.md §2. Every technique includes this file; they differ
+// The one lighting function of docs/lighting.md. Every technique includes this file; they differ
 // only in which (pixel, light) pairs they visit.
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"

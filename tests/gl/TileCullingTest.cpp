@@ -216,7 +216,7 @@ TEST(TileCulling, ListsAreCompactAndAscending)
     EXPECT_EQ(culler.lists().lightIndices, lists.lightIndices);
 }
 
-// A⋅S of SPEC.md §2 at `point`, through the shared falloff functions, as lightReach in
+// A⋅S of docs/lighting.md at `point`, through the shared falloff functions, as lightReach in
 // shaders/lib/lighting.glsl computes it.
 float reachAt(const GpuLight& light, const glm::vec3& point)
 {

@@ -1,4 +1,4 @@
-// Analytic scenes: the expected colour of each pixel follows from SPEC.md §2 by hand. The
+// Analytic scenes: the expected colour of each pixel follows from docs/lighting.md by hand. The
 // tests render the final image and the position view as PFM (unclamped floats) and compare
 // every covered pixel with the formula evaluated at that pixel's world position, written
 // here independently of the renderer's shaders, in double precision.

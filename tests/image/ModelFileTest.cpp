@@ -23,7 +23,7 @@ const fs::path kModels = fs::path(MANYLIGHTS_TEST_DATA_DIR) / "models";
 const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
 
 // The four quads of two-materials.obj (x from 0 to 4, y from 0 to 1, facing +Z) seen head-on,
-// lit by the ambient term only: colour = ke + ambient ⊙ kd (SPEC.md §2).
+// lit by the ambient term only: colour = ke + ambient ⊙ kd (docs/lighting.md).
 TEST(ModelFile, ObjMaterialsReachTheImage)
 {
     const auto dir = scratchDirectory();

@@ -3,7 +3,7 @@
 // Shadow tests are analytic: a box above a plane under a directional light. Each visible
 // plane point is in the box's shadow exactly when the ray from it towards the light hits the
 // box, computed here in double precision. Points in the umbra get no contribution from the
-// light (SPEC.md §2: A·S treated as 0), so their colour is exactly the ambient term; points
+// light (docs/lighting.md: A·S treated as 0), so their colour is exactly the ambient term; points
 // outside are fully lit. Points within kPenumbraMargin of the shadow's edge are skipped: the
 // 3x3 percentage-closer filter blurs the edge over about two shadow-map texels (a few
 // hundredths of a unit here), and the margin is several times that.
@@ -23,7 +23,7 @@
 #include "render/Technique.h"
 
 namespace manylights {
-// Every render here uses the exact seed G-buffer layout: the expected values are SPEC.md §2
+// Every render here uses the exact seed G-buffer layout: the expected values are docs/lighting.md
 // evaluated by hand, and the compact layout's 8-bit kd (0.5 stored as 128/255) would move
 // them by more than the analytic tolerance (its own bound is TechniqueAgreementTest's).
 namespace {
@@ -204,7 +204,7 @@ TEST_P(Shadows, BoxAbovePlaneUnderDirectionalLight)
 
 TEST_P(Shadows, ShadowsOffLeaveThePlaneLit)
 {
-    // The same scene with "shadows": false: SPEC.md §2 without shadows, every plane point lit.
+    // The same scene with "shadows": false: docs/lighting.md without shadows, every plane point lit.
     const double lit = 0.5 * (0.1 + 0.8 * 2.0 / std::sqrt(5.0));
     const Rendered r = renderWithPositions(boxAbovePlane(false), "65x65", {"--technique", GetParam()});
     int checked = 0;

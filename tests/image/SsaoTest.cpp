@@ -16,7 +16,7 @@
 #include "render/Technique.h"
 
 namespace manylights {
-// Every render here uses the exact seed G-buffer layout: the expected values are SPEC.md §2
+// Every render here uses the exact seed G-buffer layout: the expected values are docs/lighting.md
 // evaluated by hand, and the compact layout's 8-bit kd (0.5 stored as 128/255) would move
 // them by more than the analytic tolerance (its own bound is TechniqueAgreementTest's).
 namespace {
@@ -136,7 +136,7 @@ TEST(Ssao, MultipliesTheAmbientTermInEveryTechnique)
 
 TEST(Ssao, OffUnlessTheSceneEnablesIt)
 {
-    // SPEC.md §2 has no occlusion term: with "enabled": false the image is kd · ambient exactly.
+    // docs/lighting.md has no occlusion term: with "enabled": false the image is kd · ambient exactly.
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", boxOnFloor(false));
     const Image colour = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--gbuffer", "seed", "--size", kSize});

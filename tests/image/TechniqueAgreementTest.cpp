@@ -1,4 +1,4 @@
-// Every technique must give forward's image (SPEC.md §2). The final colour is compared as
+// Every technique must give forward's image (docs/lighting.md). The final colour is compared as
 // unclamped floats, pixel for pixel, with no pixel exempt.
 //
 // Seed G-buffer layout (exact): |Δ| ≤ 1e-5 · |forward| + 1e-6 per channel. Both paths run the

@@ -1,4 +1,4 @@
-// The light radius solve and falloff of SPEC.md §2, against values worked out by hand. The
+// The light radius solve and falloff of docs/lighting.md, against values worked out by hand. The
 // functions under test are shaders/lib/falloff.glsl compiled as C++: the same source the GPU
 // runs.
 #include <gtest/gtest.h>

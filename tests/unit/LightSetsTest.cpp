@@ -1,4 +1,4 @@
-// Generated lights (SPEC.md §1 `light_sets`): deterministic, prefix-stable, within bounds, and
+// Generated lights (docs/scene-format.md `light_sets`): deterministic, prefix-stable, within bounds, and
 // the --lights split over sets exact and proportional.
 #include <algorithm>
 #include <cmath>

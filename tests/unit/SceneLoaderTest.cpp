@@ -1,4 +1,4 @@
-// The scene file (SPEC.md §1): the example scene read field by field, defaults, sharing of
+// The scene file (docs/scene-format.md): the example scene read field by field, defaults, sharing of
 // meshes and materials, and a table of bad scenes whose errors must name the exact position.
 #include <algorithm>
 #include <cmath>
@@ -53,8 +53,8 @@ void expectMat4Near(const glm::mat4& actual, const glm::mat4& expected)
             EXPECT_NEAR(actual[c][r], expected[c][r], 1e-6f) << "column " << c << " row " << r;
 }
 
-// tests/data/scene/example.json is SPEC.md's example with the glTF object left out (not
-// supported yet) and the bunny replaced by a small tetrahedron of known bounds.
+// tests/data/scene/example.json is the contract's example scene with the glTF object left out
+// (not supported yet) and the bunny replaced by a small tetrahedron of known bounds.
 TEST(SceneLoader, ExampleSceneEveryField)
 {
     const fs::path file = kSceneDir / "example.json";
@@ -259,7 +259,7 @@ TEST(SceneLoader, MeshesAreShared)
 
 TEST(SceneLoader, AmbientOcclusionSettings)
 {
-    // Off by default (SPEC.md §2 has no occlusion term); the block turns it on unless it says
+    // Off by default (docs/lighting.md has no occlusion term); the block turns it on unless it says
     // "enabled": false.
     EXPECT_FALSE(parse("{}").ssao.enabled);
     const Scene on = parse(R"json({"ssao": {"radius": 0.75, "strength": 2}})json");

@@ -1,4 +1,4 @@
-// Object transforms (SPEC.md §1: M = T · Rz · Ry · Rx · S) and the bounds built on them.
+// Object transforms (docs/scene-format.md: M = T · Rz · Ry · Rx · S) and the bounds built on them.
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
