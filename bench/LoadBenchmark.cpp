@@ -18,7 +18,8 @@ void loadModel(benchmark::State& state, const std::filesystem::path& path)
     const bool obj = path.extension() == ".obj";
     std::size_t triangles = 0;
     for (auto _ : state) {
-        const manylights::Model model = obj ? manylights::loadObjModelFile(path) : manylights::loadGltfFile(path);
+        manylights::Warnings warnings;
+        const manylights::Model model = obj ? manylights::loadObjModelFile(path, warnings) : manylights::loadGltfFile(path);
         triangles = 0;
         for (const manylights::Mesh& mesh : model.meshes)
             triangles += mesh.indices.size() / 3;
@@ -42,8 +43,9 @@ int main(int argc, char** argv)
         for (int i = 1; i < argc; ++i) {
             const std::filesystem::path path = argv[i];
             // Loaded once first, so that a broken file is one error line, not a benchmark.
+            manylights::Warnings warnings;
             if (path.extension() == ".obj")
-                manylights::loadObjModelFile(path);
+                manylights::loadObjModelFile(path, warnings);
             else
                 manylights::loadGltfFile(path);
             benchmark::RegisterBenchmark(path.filename().string().c_str(), loadModel, path)

@@ -352,7 +352,10 @@ Mesh loadObjStream(std::istream& stream, const std::string& displayName)
     const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
     if (stream.bad())
         throw Error(displayName + ": cannot read the file");
-    Model model = loadObjModelText(text, displayName, {}, MtlSource{});
+    // Materials are not read here, so nothing about them can be forgiven; a plain mesh's other
+    // warnings (an unknown statement) do not concern its one use, the built-in scene's assets.
+    Warnings ignored;
+    Model model = loadObjModelText(text, displayName, {}, MtlSource{}, ignored);
     return std::move(model.meshes.front());
 }
 

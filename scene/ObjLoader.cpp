@@ -1,5 +1,7 @@
 #include "scene/ObjLoader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "scene/Meshes.h"
+#include "scene/Warnings.h"
 
 namespace manylights {
 
@@ -49,9 +52,9 @@ std::string trim(const std::string& text)
     return text.substr(begin, end - begin + 1);
 }
 
-// Calls visit(lineNumber, keyword, rest-of-line) for every line of `text`.
+// Calls visit(lineNumber, line, isLast) for every line of `text` (without its '\n').
 template <typename Visit>
-void forEachLine(const std::string& text, Visit visit)
+void forEachRawLine(const std::string& text, Visit visit)
 {
     std::size_t lineNumber = 0;
     std::size_t begin = 0;
@@ -59,51 +62,209 @@ void forEachLine(const std::string& text, Visit visit)
         std::size_t end = text.find('\n', begin);
         if (end == std::string::npos)
             end = text.size();
-        ++lineNumber;
-        const std::string line = text.substr(begin, end - begin);
+        visit(++lineNumber, text.substr(begin, end - begin), end == text.size());
         begin = end + 1;
-        const std::size_t keywordBegin = line.find_first_not_of(" \t");
-        if (keywordBegin == std::string::npos)
-            continue;
-        const std::size_t keywordEnd = std::min(line.find_first_of(" \t\r", keywordBegin), line.size());
-        visit(lineNumber, line.substr(keywordBegin, keywordEnd - keywordBegin), line.substr(keywordEnd));
     }
 }
 
-// tinyobjloader reads "nan", "inf" and other malformed numbers as 0 without a word, so the
-// numbers of the lines that carry them are checked here first, with the line number.
-// `keywords` maps a keyword to its description and the count of numbers it needs.
-// With `nonNegative` (material libraries: colours and the exponent) a number below zero is an
-// error too: a negative reflectance has no meaning, and the scene format refuses it as well.
-void checkNumbers(const std::string& text, const std::string& displayName,
-                  const std::map<std::string, std::pair<const char*, int>>& keywords, bool nonNegative = false)
+// Calls visit(lineNumber, keyword, rest-of-line) for every line of `text` that is not blank.
+template <typename Visit>
+void forEachLine(const std::string& text, Visit visit)
 {
-    forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
-        const auto found = keywords.find(keyword);
-        if (found == keywords.end())
+    forEachRawLine(text, [&](std::size_t lineNumber, const std::string& line, bool) {
+        const std::size_t keywordBegin = line.find_first_not_of(" \t");
+        if (keywordBegin == std::string::npos)
             return;
-        const auto [what, needed] = found->second;
-        std::istringstream line(rest);
-        int count = 0;
-        for (std::string token; line >> token;) {
+        const std::size_t keywordEnd = std::min(line.find_first_of(" \t\r", keywordBegin), line.size());
+        visit(lineNumber, line.substr(keywordBegin, keywordEnd - keywordBegin), line.substr(keywordEnd));
+    });
+}
+
+// One file's forgiven problems, gathered by kind so that a file with ten thousand lines of
+// one oddity gives one warning: "FILE: line N: what (and K more lines)" at the first line.
+class FileWarnings {
+public:
+    explicit FileWarnings(std::string displayName) : displayName_(std::move(displayName)) {}
+
+    void note(std::size_t lineNumber, const std::string& kind, const std::string& message)
+    {
+        auto [entry, inserted] = byKind_.try_emplace(kind, Entry{lineNumber, message, 0});
+        if (inserted)
+            order_.push_back(kind);
+        ++entry->second.count;
+    }
+    // A warning about the whole file (no line).
+    void noteFile(const std::string& kind, const std::string& message) { note(0, kind, message); }
+
+    void flushInto(Warnings& warnings) const
+    {
+        for (const std::string& kind : order_) {
+            const Entry& entry = byKind_.at(kind);
+            std::string line = displayName_ + ": ";
+            if (entry.lineNumber > 0)
+                line += "line " + std::to_string(entry.lineNumber) + ": ";
+            line += entry.message;
+            if (entry.count > 1)
+                line += " (and " + std::to_string(entry.count - 1) + " more lines)";
+            warnings.add(line);
+        }
+    }
+
+private:
+    struct Entry {
+        std::size_t lineNumber;
+        std::string message;
+        std::size_t count;
+    };
+    std::string displayName_;
+    std::map<std::string, Entry> byKind_;
+    std::vector<std::string> order_;
+};
+
+// Appends code point `c` to `out` in UTF-8.
+void appendUtf8(std::string& out, std::uint32_t c)
+{
+    if (c < 0x80) {
+        out += static_cast<char>(c);
+    } else if (c < 0x800) {
+        out += static_cast<char>(0xC0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+        out += static_cast<char>(0xE0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+}
+
+// The file's text as UTF-8: a UTF-8 byte-order mark is dropped, UTF-16 text (either byte
+// order, told by its mark) is converted; both noted. Unpaired surrogates become U+FFFD.
+std::string decodedText(const std::string& bytes, FileWarnings& warnings)
+{
+    const auto starts = [&](const char* mark, std::size_t length) { return bytes.compare(0, length, mark, length) == 0; };
+    if (starts("\xEF\xBB\xBF", 3)) {
+        warnings.noteFile("bom", "a UTF-8 byte-order mark, skipped");
+        return bytes.substr(3);
+    }
+    const bool bigEndian = starts("\xFE\xFF", 2);
+    if (!bigEndian && !starts("\xFF\xFE", 2))
+        return bytes;
+    warnings.noteFile("utf16", std::string("UTF-16 text (") + (bigEndian ? "big" : "little") + "-endian), read as such");
+    const auto unit = [&](std::size_t i) {
+        const auto hi = static_cast<unsigned char>(bytes[bigEndian ? i : i + 1]);
+        const auto lo = static_cast<unsigned char>(bytes[bigEndian ? i + 1 : i]);
+        return static_cast<std::uint32_t>(hi << 8 | lo);
+    };
+    std::string text;
+    text.reserve(bytes.size() / 2);
+    for (std::size_t i = 2; i + 1 < bytes.size(); i += 2) {
+        std::uint32_t c = unit(i);
+        if (c >= 0xD800 && c < 0xDC00 && i + 3 < bytes.size() && unit(i + 2) >= 0xDC00 && unit(i + 2) < 0xE000) {
+            c = 0x10000 + ((c - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
+            i += 2;
+        } else if (c >= 0xD800 && c < 0xE000) {
+            c = 0xFFFD;
+        }
+        appendUtf8(text, c);
+    }
+    return text;
+}
+
+// The statements this loader reads or knowingly passes over; any other is reported once.
+const std::set<std::string> kObjStatements{"v", "vn", "vt", "vp", "f", "l", "p", "g", "o", "s", "usemtl", "mtllib"};
+const std::set<std::string> kMtlStatements{
+    "newmtl", "Ka",      "Kd",    "Ks",    "Ke",    "Ns",   "Ni",    "d",         "Tr",   "Tf",   "illum",
+    "map_Ka", "map_Kd",  "map_Ks", "map_Ke", "map_Ns", "map_d", "map_bump", "map_Bump", "bump", "norm", "disp",
+    "decal",  "refl",    "sharpness", "Pr", "Pm",   "Ps",   "Pc",    "Pcr",       "aniso", "anisor", "map_Pr",
+    "map_Pm", "map_Ps",  "Tw"};
+
+// What a keyword's numbers are, how many it needs, and whether one value stands for three (an
+// MTL colour: "Ks 0.5" is grey, as the format allows).
+struct NumberKeyword {
+    const char* what;
+    int needed;
+    bool oneForThree;
+};
+
+const std::map<std::string, NumberKeyword> kObjNumberKeywords{
+    {"v", {"vertex position", 3, false}}, {"vn", {"normal", 3, false}}, {"vt", {"texture coordinate", 1, false}}};
+
+const std::map<std::string, NumberKeyword> kMtlNumberKeywords{{"Kd", {"Kd", 3, true}},
+                                                             {"Ks", {"Ks", 3, true}},
+                                                             {"Ke", {"Ke", 3, true}},
+                                                             {"Ka", {"Ka", 3, true}},
+                                                             {"Ns", {"Ns", 1, false}}};
+
+// The text tinyobjloader is given: the numbers of the lines that carry them read here first,
+// with the line number, since tinyobjloader reads "nan", "inf" and malformed numbers as 0
+// without a word. Non-finite and unreadable numbers are errors; what other readers forgive
+// is rewritten and noted: a leading '+', trailing characters after a number ("3.1+e2" reads
+// as 3.1, as C's strtod and assimp read it), a one-value MTL colour. Unknown statements are
+// noted once each. With `nonNegative` (material libraries) a number below zero is an error: a
+// negative reflectance has no meaning, and the scene format refuses it too.
+std::string checkedNumbers(const std::string& text, const std::string& displayName,
+                           const std::map<std::string, NumberKeyword>& keywords, const std::set<std::string>& known,
+                           FileWarnings& warnings, bool nonNegative)
+{
+    std::string out;
+    out.reserve(text.size());
+    forEachRawLine(text, [&](std::size_t lineNumber, const std::string& line, bool lastLine) {
+        const auto emit = [&](const std::string& written) {
+            out += written;
+            if (!lastLine)
+                out += '\n';
+        };
+        std::istringstream words(line);
+        std::string keyword;
+        if (!(words >> keyword) || keyword.front() == '#')
+            return emit(line);
+        const auto found = keywords.find(keyword);
+        if (found == keywords.end()) {
+            if (!known.contains(keyword))
+                warnings.note(lineNumber, "statement " + keyword, "unknown statement '" + keyword + "' ignored");
+            return emit(line);
+        }
+        const NumberKeyword& spec = found->second;
+        std::vector<std::string> numbers;
+        for (std::string token; words >> token;) {
             if (token.front() == '#')
                 break;
+            std::string_view digits = token;
+            if (digits.size() > 1 && digits.front() == '+') {
+                digits.remove_prefix(1);
+                warnings.note(lineNumber, "plus", "numbers with a leading '+' read without it");
+            }
             float value = 0.0f;
-            const char* first = token.data();
-            const char* last = first + token.size();
-            const auto [next, error] = std::from_chars(first, last, value);
-            if (error != std::errc{} || next != last || !std::isfinite(value))
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what +
+            const auto [next, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+            if (error != std::errc{} || !std::isfinite(value))
+                fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what +
                                       " has a non-finite or malformed number '" + token + "'");
+            const std::string_view read(digits.data(), static_cast<std::size_t>(next - digits.data()));
+            if (read.size() != digits.size())
+                warnings.note(lineNumber, "trailing", "the number '" + token + "' read as " + std::string(read) +
+                                                          " (the characters after it ignored)");
             if (nonNegative && value < 0.0f)
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " must not be negative, got '" +
-                                      token + "'");
-            ++count;
+                fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what +
+                                      " must not be negative, got '" + token + "'");
+            numbers.emplace_back(read);
         }
-        if (count < needed)
-            fail(displayName, "line " + std::to_string(lineNumber) + ": " + what + " needs " +
-                                  std::to_string(needed) + " numbers, has " + std::to_string(count));
+        if (spec.oneForThree && numbers.size() == 1) {
+            numbers.resize(3, numbers.front());
+            warnings.note(lineNumber, "one value", std::string(spec.what) + " with one value taken for all three channels");
+        }
+        if (static_cast<int>(numbers.size()) < spec.needed)
+            fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what + " needs " +
+                                  std::to_string(spec.needed) + " numbers, has " + std::to_string(numbers.size()));
+        std::string written = keyword;
+        for (const std::string& number : numbers)
+            written += " " + number;
+        emit(written);
     });
+    return out;
 }
 
 // tinyobjloader reads face indices with atoi, which wraps past 2^31: "f 1 2 4294967299" with
@@ -138,12 +299,6 @@ void checkElementIndices(const std::string& text, const std::string& displayName
     });
 }
 
-const std::map<std::string, std::pair<const char*, int>> kObjNumberKeywords{
-    {"v", {"vertex position", 3}}, {"vn", {"normal", 3}}, {"vt", {"texture coordinate", 1}}};
-
-const std::map<std::string, std::pair<const char*, int>> kMtlNumberKeywords{
-    {"Kd", {"Kd", 3}}, {"Ks", {"Ks", 3}}, {"Ke", {"Ke", 3}}, {"Ka", {"Ka", 3}}, {"Ns", {"Ns", 1}}};
-
 // A face corner's (position, normal, texture coordinate) indices: one vertex per distinct key.
 struct CornerKey {
     int position, normal, uv;
@@ -159,21 +314,23 @@ struct CornerKeyHash {
     }
 };
 
-// One material library as it was read: its name (for messages), its directory (for its maps)
-// and its text (for line numbers).
+// One material library as it was read: its name (for messages), its directory (for its maps),
+// its text (for line numbers) and what was forgiven in it.
 struct MtlLibrary {
     std::string displayName;
     fs::path directory;
     std::string text;
+    FileWarnings warnings;
 };
 
 // Hands tinyobjloader the text of each `mtllib`, after checking its numbers, and records
-// where each material came from.
+// where each material came from. A library that is missing is noted on the OBJ file, and its
+// materials are missing (their faces take the object's material).
 class CheckedMaterialReader : public tinyobj::MaterialReader {
 public:
-    CheckedMaterialReader(const std::string& objName, const std::string& objText, const fs::path& baseDirectory,
-                          const MtlSource& source)
-        : objName_(objName), objText_(objText), base_(baseDirectory), source_(source)
+    CheckedMaterialReader(const std::string& objText, const fs::path& baseDirectory, const MtlSource& source,
+                          FileWarnings& objWarnings)
+        : objText_(objText), base_(baseDirectory), source_(source), objWarnings_(objWarnings)
     {
     }
 
@@ -182,11 +339,16 @@ public:
     {
         const fs::path path = base_ / name;
         std::optional<std::string> text = source_(name);
-        if (!text)
-            fail(objName_, "line " + std::to_string(mtllibLine(name)) + ": material library '" + name +
-                               "' not found (looked for " + path.string() + ")");
-        MtlLibrary library{path.string(), path.parent_path(), std::move(*text)};
-        checkNumbers(library.text, library.displayName, kMtlNumberKeywords, true);
+        if (!text) {
+            objWarnings_.note(mtllibLine(name), "mtllib " + name,
+                              "material library '" + name + "' not found (looked for " + path.string() +
+                                  "); faces using its materials take the object's material");
+            return true;
+        }
+        MtlLibrary library{path.string(), path.parent_path(), std::move(*text), FileWarnings(path.string())};
+        library.text = decodedText(library.text, library.warnings);
+        library.text = checkedNumbers(library.text, library.displayName, kMtlNumberKeywords, kMtlStatements,
+                                      library.warnings, true);
         const std::size_t before = materials->size();
         std::istringstream stream(library.text);
         tinyobj::LoadMtl(materialMap, materials, &stream, warning, error);
@@ -198,7 +360,12 @@ public:
         return true;
     }
 
-    const MtlLibrary& libraryOf(std::size_t material) const { return libraries_[libraryOf_[material]]; }
+    MtlLibrary& libraryOf(std::size_t material) { return libraries_[libraryOf_[material]]; }
+    void flushInto(Warnings& warnings) const
+    {
+        for (const MtlLibrary& library : libraries_)
+            library.warnings.flushInto(warnings);
+    }
 
 private:
     std::size_t mtllibLine(const std::string& name) const
@@ -211,27 +378,54 @@ private:
         return at;
     }
 
-    std::string objName_;
     const std::string& objText_;
     fs::path base_;
     const MtlSource& source_;
+    FileWarnings& objWarnings_;
     std::vector<MtlLibrary> libraries_;
     std::vector<std::size_t> libraryOf_;
 };
 
-// A map named by a material library, resolved against the library's directory; it must exist
-// (the render layer decodes it). Empty when the material has none.
-std::string mapPath(const MtlLibrary& library, const std::string& materialName, const char* keyword,
-                    const std::string& name)
+// `name` in `directory` as exporters on other systems write it: Windows separators, a leading
+// "./", another letter case (a file saved on a case-insensitive system). Empty when none fits.
+fs::path findMapFile(const fs::path& directory, std::string name)
+{
+    std::replace(name.begin(), name.end(), '\\', '/');
+    while (name.starts_with("./"))
+        name.erase(0, 2);
+    const fs::path path = directory / name;
+    std::error_code error;
+    if (fs::is_regular_file(path, error))
+        return path;
+    const auto lower = [](std::string text) {
+        std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+        return text;
+    };
+    const fs::path folder = path.parent_path();
+    const std::string wanted = lower(path.filename().string());
+    for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
+        if (lower(entry->path().filename().string()) == wanted && entry->is_regular_file(error))
+            return entry->path();
+    return {};
+}
+
+// A map named by a material library, resolved against the library's directory. A map that
+// cannot be found is noted and left out: the material's colour stands in for it.
+std::string mapPath(MtlLibrary& library, const std::string& materialName, const char* keyword, const std::string& name)
 {
     if (name.empty())
         return {};
-    const fs::path path = library.directory / name;
-    std::error_code error;
-    if (!fs::is_regular_file(path, error))
-        fail(library.displayName, "material '" + materialName + "': " + keyword + " '" + name + "' not found (" +
-                                      path.string() + ")");
-    return path.string();
+    const fs::path found = findMapFile(library.directory, name);
+    if (found.empty()) {
+        library.warnings.noteFile(std::string("map ") + name, "material '" + materialName + "': " + keyword + " '" +
+                                                                  name + "' not found (" + (library.directory / name).string() +
+                                                                  "); the material's colour stands in for it");
+        return {};
+    }
+    if (found.filename().string() != fs::path(name).filename().string() || name.find('\\') != std::string::npos)
+        library.warnings.noteFile(std::string("map ") + name, "material '" + materialName + "': " + keyword + " '" +
+                                                                  name + "' read as " + found.string());
+    return found.string();
 }
 
 glm::vec3 colour(const tinyobj::real_t (&value)[3])
@@ -239,7 +433,7 @@ glm::vec3 colour(const tinyobj::real_t (&value)[3])
     return {value[0], value[1], value[2]};
 }
 
-Material convertMaterial(const tinyobj::material_t& source, const MtlLibrary& library, const std::string& objName)
+Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library, const std::string& objName)
 {
     Material material;
     // Named after the file, so that it can never be taken for one of the scene's own
@@ -272,10 +466,12 @@ Material convertMaterial(const tinyobj::material_t& source, const MtlLibrary& li
 
 }  // namespace
 
-Model loadObjModelText(const std::string& text, const std::string& displayName, const fs::path& baseDirectory,
-                       const MtlSource& mtlSource)
+Model loadObjModelText(const std::string& fileText, const std::string& displayName, const fs::path& baseDirectory,
+                       const MtlSource& mtlSource, Warnings& forgiven)
 {
-    checkNumbers(text, displayName, kObjNumberKeywords);
+    FileWarnings warnings(displayName);
+    std::string text = decodedText(fileText, warnings);
+    text = checkedNumbers(text, displayName, kObjNumberKeywords, kObjStatements, warnings, false);
     checkElementIndices(text, displayName);
 
     tinyobj::attrib_t attrib;
@@ -286,7 +482,7 @@ Model loadObjModelText(const std::string& text, const std::string& displayName, 
     std::istringstream textStream(text);
     const bool useMaterials = static_cast<bool>(mtlSource);
     const MtlSource noSource = [](const std::string&) { return std::optional<std::string>{}; };
-    CheckedMaterialReader reader(displayName, text, baseDirectory, useMaterials ? mtlSource : noSource);
+    CheckedMaterialReader reader(text, baseDirectory, useMaterials ? mtlSource : noSource, warnings);
     // No triangulation by tinyobjloader: it reads vertex arrays through unchecked indices
     // while doing so. Polygons are fanned below, after the indices are checked.
     const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &textStream,
@@ -296,16 +492,17 @@ Model loadObjModelText(const std::string& text, const std::string& displayName, 
         fail(displayName, firstLine(error.empty() ? std::string("cannot parse the file") : error));
 
     if (useMaterials) {
-        // tinyobjloader only warns about a `usemtl` no library defines; it is an error here,
-        // as an unknown material in the scene file is.
+        // A `usemtl` no library defines (often "Default" with no mtllib at all): its faces take
+        // the object's material, as other viewers give them their default one.
         std::set<std::string> known;
         for (const tinyobj::material_t& material : materials)
             known.insert(material.name);
         forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
             const std::string name = trim(rest);
             if (keyword == "usemtl" && !known.contains(name))
-                fail(displayName, "line " + std::to_string(lineNumber) + ": usemtl '" + name +
-                                      "': no material library of the file defines it");
+                warnings.note(lineNumber, "usemtl " + name,
+                              "usemtl '" + name +
+                                  "': no material library of the file defines it; its faces take the object's material");
         });
     }
 
@@ -435,6 +632,8 @@ Model loadObjModelText(const std::string& text, const std::string& displayName, 
     computeSmoothNormals(mesh, needsNormal);
     model.meshes.push_back(std::move(mesh));
     model.instances.push_back({displayName, 0, glm::mat4{1.0f}});
+    warnings.flushInto(forgiven);
+    reader.flushInto(forgiven);
     return model;
 }
 
@@ -453,13 +652,13 @@ std::optional<std::string> readTextFile(const fs::path& path)
 
 }  // namespace
 
-Model loadObjModelFile(const fs::path& path)
+Model loadObjModelFile(const fs::path& path, Warnings& warnings)
 {
     const std::string displayName = path.string();
     const std::string text = readInputFile(path, "the file");
     const fs::path directory = path.parent_path();
     return loadObjModelText(text, displayName, directory,
-                            [&](const std::string& name) { return readTextFile(directory / name); });
+                            [&](const std::string& name) { return readTextFile(directory / name); }, warnings);
 }
 
 }  // namespace manylights

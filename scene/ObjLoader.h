@@ -8,6 +8,7 @@
 #include <string>
 
 #include "scene/Model.h"
+#include "scene/Warnings.h"
 
 namespace manylights {
 
@@ -15,14 +16,18 @@ namespace manylights {
 // no such file.
 using MtlSource = std::function<std::optional<std::string>(const std::string& name)>;
 
-// Loads an OBJ file and the .mtl libraries it names (relative to its directory). Texture maps
-// are resolved relative to the file and must exist. Throws Error naming the file (and the
-// line where one is known) on any problem.
-Model loadObjModelFile(const std::filesystem::path& path);
+// Loads an OBJ file and the .mtl libraries it names (relative to its directory), texture maps
+// relative to the library. What other readers forgive goes into `warnings`, one line each
+// naming the file and line (docs/scene-format.md, "OBJ and MTL"), and the model still loads:
+// a missing library or map, an unknown `usemtl`, Windows separators or another letter case in
+// a map's path, one-value colours, '+' signs, a byte-order mark or UTF-16 text, unknown
+// statements. Throws Error naming the file (and the line where one is known) where nothing
+// sensible can be drawn: no faces, non-finite or unreadable numbers, indices out of range.
+Model loadObjModelFile(const std::filesystem::path& path, Warnings& warnings);
 
 // The same from text in memory. `mtlSource` empty: `mtllib` and `usemtl` are ignored (the
 // mesh has no sub-meshes). Texture paths resolve against `baseDirectory`.
 Model loadObjModelText(const std::string& text, const std::string& displayName,
-                       const std::filesystem::path& baseDirectory, const MtlSource& mtlSource);
+                       const std::filesystem::path& baseDirectory, const MtlSource& mtlSource, Warnings& warnings);
 
 }  // namespace manylights

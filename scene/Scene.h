@@ -181,6 +181,9 @@ inline constexpr float kDefaultAttenuationThreshold = 1.0f / 256.0f;
 
 struct Scene {
     std::string source;  // the scene file, or "<default scene>"
+    // What loading forgave in model files, one line each (scene/Warnings.h): the commands
+    // print them and count them in --stats.
+    std::vector<std::string> warnings;
     Camera camera;
     glm::vec3 background{0.0f};
     glm::vec3 ambient{0.0f};

@@ -409,8 +409,8 @@ struct Node {
 
 class Loader {
 public:
-    Loader(const std::string& displayName, const fs::path& baseDirectory)
-        : displayName_(displayName), base_(baseDirectory)
+    Loader(const std::string& displayName, const fs::path& baseDirectory, const SceneLoadOptions& options)
+        : displayName_(displayName), base_(baseDirectory), options_(options)
     {
     }
 
@@ -1173,17 +1173,21 @@ private:
         if (const auto cached = modelCache_.find(key); cached != modelCache_.end())
             return cached->second;
         Model model;
+        // Under --strict the first forgiven problem throws, and is reported as any error is.
+        Warnings forgiven(options_.strict);
         try {
             if (gltf) {
                 GltfOptions options;
                 options.attenuationThreshold = scene_.attenuationThreshold;
                 model = loadGltfFile(path, options);
             } else {
-                model = loadObjModelFile(path);
+                model = loadObjModelFile(path, forgiven);
             }
         } catch (const Error& e) {
             fail(node, e.what());
         }
+        for (const std::string& message : forgiven.messages())
+            scene_.warnings.push_back(oneLine(displayName_ + ": " + node.path + ": " + message));
         const std::size_t materialOffset = scene_.materials.size();
         const std::size_t meshOffset = scene_.meshes.size();
         for (Material& material : model.materials)
@@ -1341,6 +1345,7 @@ private:
 
     std::string displayName_;
     fs::path base_;
+    SceneLoadOptions options_;
     Scene scene_;
     std::map<std::string, std::size_t> namedMaterials_;
     std::optional<std::size_t> defaultMaterial_;
@@ -1351,19 +1356,20 @@ private:
 
 }  // namespace
 
-Scene parseScene(const std::string& jsonText, const std::string& displayName, const fs::path& baseDirectory)
+Scene parseScene(const std::string& jsonText, const std::string& displayName, const fs::path& baseDirectory,
+                 const SceneLoadOptions& options)
 {
     const Json root = parseJson(jsonText, displayName);
-    Scene scene = Loader(displayName, baseDirectory).load(root);
+    Scene scene = Loader(displayName, baseDirectory, options).load(root);
     scene.source = displayName;
     return scene;
 }
 
-Scene loadSceneFile(const fs::path& path)
+Scene loadSceneFile(const fs::path& path, const SceneLoadOptions& options)
 {
     const std::string displayName = path.string();
     const std::string text = readInputFile(path, "scene file");
-    Scene scene = parseScene(text, displayName, path.parent_path());
+    Scene scene = parseScene(text, displayName, path.parent_path(), options);
     scene.source = displayName;
     return scene;
 }

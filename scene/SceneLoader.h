@@ -10,12 +10,19 @@
 
 namespace manylights {
 
-// Loads and validates the scene file at `path`; meshes are loaded relative to it.
-Scene loadSceneFile(const std::filesystem::path& path);
+struct SceneLoadOptions {
+    // --strict: the first problem a model file has that is otherwise forgiven (scene/Warnings.h)
+    // is an error.
+    bool strict = false;
+};
+
+// Loads and validates the scene file at `path`; meshes are loaded relative to it. What model
+// files get forgiven is in Scene::warnings.
+Scene loadSceneFile(const std::filesystem::path& path, const SceneLoadOptions& options = {});
 
 // Parses scene JSON text. `displayName` is used in messages; relative paths inside the
 // scene resolve against `baseDirectory`.
 Scene parseScene(const std::string& jsonText, const std::string& displayName,
-                 const std::filesystem::path& baseDirectory);
+                 const std::filesystem::path& baseDirectory, const SceneLoadOptions& options = {});
 
 }  // namespace manylights

@@ -416,6 +416,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
         ->check(CLI::Range(0, kMaxShadowLights))
         ->capture_default_str();
+    bench->add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;
@@ -423,7 +424,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
 
 void runBench(const BenchOptions& options)
 {
-    const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    const Scene scene = loadSceneForCommand(options.scenePath, options.strict);
     if (!options.lightCounts.empty() && scene.lightSets.empty())
         throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
     // Before the sweep, which may take hours, rather than after it.

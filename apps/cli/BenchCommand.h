@@ -25,6 +25,7 @@ struct BenchOptions {
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
     bool countWork = false;
+    bool strict = false;  // --strict: model files' forgiven problems are errors
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)
     // When a technique's median frame exceeds this at one light count, its later (larger)

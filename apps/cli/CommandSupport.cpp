@@ -13,6 +13,8 @@
 #include "core/Error.h"
 #include "core/Numbers.h"
 #include "render/TextureCache.h"
+#include "scene/DefaultScene.h"
+#include "scene/SceneLoader.h"
 
 namespace manylights {
 
@@ -65,6 +67,14 @@ CLI::Validator numberIn(double min, double max)
             return checkNumber(text, min, max, value);
         },
         "NUMBER");
+}
+
+Scene loadSceneForCommand(const std::string& path, bool strict)
+{
+    Scene scene = path.empty() ? makeDefaultScene() : loadSceneFile(path, {.strict = strict});
+    for (const std::string& warning : scene.warnings)
+        std::fprintf(stderr, "manylights: warning: %s\n", printableLine(warning).c_str());
+    return scene;
 }
 
 bool sameFile(const std::string& a, const std::string& b)

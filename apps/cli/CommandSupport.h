@@ -13,6 +13,7 @@
 #include "core/Error.h"
 
 #include "render/ShadowMaps.h"  // kMaxShadowLights
+#include "scene/Scene.h"
 
 namespace CLI {
 class App;
@@ -77,6 +78,10 @@ struct Statistics {
 Statistics summarize(std::vector<double> values);
 
 bool endsWith(const std::string& text, const std::string& suffix);
+
+// The scene at `path` (the built-in default scene when empty), with --strict passed on; every
+// problem the loading forgave is printed on stderr as "manylights: warning: ..." (one line).
+Scene loadSceneForCommand(const std::string& path, bool strict);
 
 // Whether two output paths name one file (out.png and ./out.png; a link and its target).
 bool sameFile(const std::string& a, const std::string& b);

@@ -41,6 +41,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["shadow_lights"] = options.shadowLights;
     stats["anisotropy"] = anisotropy;
     stats["warmup_frames"] = kWarmupFrames;
+    stats["warnings"] = scene.warnings.size();
     const auto summaryJson = [](const std::vector<double>& values) {
         const Statistics summary = summarize(values);
         return nlohmann::json{{"median", summary.median}, {"min", summary.min}, {"max", summary.max}};
@@ -124,7 +125,7 @@ void runRender(const RenderOptions& options)
             checkWritable(options.statsPath, "statistics");
     }
     const auto loadStart = std::chrono::steady_clock::now();
-    const Scene scene = options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    const Scene scene = loadSceneForCommand(options.scenePath, options.strict);
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
     if (options.lights && scene.lightSets.empty())

@@ -30,6 +30,7 @@ struct RenderOptions {
     double fps = 30.0;
     int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
     bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
+    bool strict = false;          // model files' forgiven problems are errors (--strict)
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -23,6 +23,7 @@
 #include "platform/HeadlessContext.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
+#include "apps/cli/CommandSupport.h"
 #include "scene/DefaultScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
@@ -166,7 +167,7 @@ private:
 
 Scene loadScene(const ViewOptions& options)
 {
-    return options.scenePath.empty() ? makeDefaultScene() : loadSceneFile(options.scenePath);
+    return loadSceneForCommand(options.scenePath, options.strict);
 }
 
 Viewer::Viewer(const ViewOptions& options)

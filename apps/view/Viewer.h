@@ -17,6 +17,7 @@ struct ViewOptions {
     std::optional<int> lights;
     double time = 0.0;       // the animation's start time
     std::string scriptPath;  // commands to run (apps/view/ViewScript.h); empty: interactive
+    bool strict = false;     // --strict: model files' forgiven problems are errors
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
 };

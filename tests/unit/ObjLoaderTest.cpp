@@ -37,9 +37,16 @@ using test::errorOf;
 
 const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
+// Loads with the warnings of forgiven problems discarded (the tests of those look at them).
+Model loadObj(const fs::path& path)
+{
+    Warnings warnings;
+    return loadObjModelFile(path, warnings);
+}
+
 TEST(ObjModel, MaterialsBecomeOneDrawRangeEachOverOneVertexBuffer)
 {
-    const Model model = loadObjModelFile(kModels / "two-materials.obj");
+    const Model model = loadObj(kModels / "two-materials.obj");
     ASSERT_EQ(model.meshes.size(), 1u);
     const Mesh& mesh = model.meshes[0];
     // Four quads: 8 triangles, 24 indices in total, in three ranges (none, red, textured)
@@ -84,7 +91,7 @@ TEST(ObjModel, MaterialsBecomeOneDrawRangeEachOverOneVertexBuffer)
 TEST(ObjModel, WithoutUsemtlThereAreNoSubMeshes)
 {
     const fs::path dir = scratch();
-    const Model model = loadObjModelFile(write(dir / "plain.obj", std::string(kQuad) + "f 1 2 3 4\n"));
+    const Model model = loadObj(write(dir / "plain.obj", std::string(kQuad) + "f 1 2 3 4\n"));
     EXPECT_TRUE(model.meshes[0].subMeshes.empty());
     EXPECT_TRUE(model.materials.empty());
 }
@@ -130,7 +137,7 @@ TEST_P(BrokenObjTest, OneErrorLineNamingTheFile)
     const fs::path obj = write(dir / "model.obj", broken.obj);
     if (!broken.mtl.empty())
         write(dir / "lib.mtl", broken.mtl);
-    const std::string message = errorOf([&] { loadObjModelFile(obj); });
+    const std::string message = errorOf([&] { loadObj(obj); });
     EXPECT_NE(message.find(broken.phrase), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     // The OBJ, or the MTL the problem is in.
@@ -142,12 +149,6 @@ const std::string kQuadWithLib = std::string("mtllib lib.mtl\n") + kQuad + "usem
 INSTANTIATE_TEST_SUITE_P(
     ObjModel, BrokenObjTest,
     ::testing::Values(
-        BrokenObj{"MissingMtl", "mtllib none.mtl\n" + std::string(kQuad) + "f 1 2 3\n", "",
-                  "line 1: material library 'none.mtl' not found"},
-        BrokenObj{"UnknownUsemtl", kQuadWithLib, "newmtl other\nKd 1 1 1\n", "line 6: usemtl 'm'"},
-        BrokenObj{"MissingTexture", kQuadWithLib, "newmtl m\nmap_Kd nothere.png\n",
-                  "material 'm': map_Kd 'nothere.png' not found"},
-        BrokenObj{"MissingNormalMap", kQuadWithLib, "newmtl m\nbump nothere.png\n", "map_Bump 'nothere.png'"},
         BrokenObj{"NanKd", kQuadWithLib, "newmtl m\nKd nan 1 1\n", "lib.mtl: line 2: Kd has a non-finite"},
         BrokenObj{"NegativeKd", kQuadWithLib, "newmtl m\nKd -1 0.5 0.5\n", "lib.mtl: line 2: Kd must not be negative, got '-1'"},
         BrokenObj{"ShortKs", kQuadWithLib, "newmtl m\nKs 1 1\n", "line 2: Ks needs 3 numbers, has 2"},
@@ -168,25 +169,77 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenObj{"Truncated", std::string(kQuad) + "f 1 2", "", "has no faces"}),
     [](const ::testing::TestParamInfo<BrokenObj>& param) { return std::string(param.param.name); });
 
+class ForgivenObjTest : public ::testing::TestWithParam<BrokenObj> {};
+
+// What other readers forgive: the model loads, with one warning naming the file and the line
+// (where there is one) and saying what was done; under --strict the same text is the error.
+TEST_P(ForgivenObjTest, LoadsWithOneWarningAndFailsWhenStrict)
+{
+    const BrokenObj& forgiven = GetParam();
+    const fs::path dir = scratch();
+    const fs::path obj = write(dir / "model.obj", forgiven.obj);
+    if (!forgiven.mtl.empty())
+        write(dir / "lib.mtl", forgiven.mtl);
+    Warnings warnings;
+    const Model model = loadObjModelFile(obj, warnings);
+    EXPECT_FALSE(model.meshes.empty());
+    ASSERT_EQ(warnings.messages().size(), 1u) << (warnings.messages().empty() ? "" : warnings.messages().front());
+    const std::string& message = warnings.messages().front();
+    EXPECT_NE(message.find(forgiven.phrase), std::string::npos) << message;
+    EXPECT_TRUE(message.starts_with(obj.string()) || message.starts_with((dir / "lib.mtl").string())) << message;
+    Warnings strict(true);
+    EXPECT_EQ(errorOf([&] { loadObjModelFile(obj, strict); }), message);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ObjModel, ForgivenObjTest,
+    ::testing::Values(
+        BrokenObj{"MissingMtl", "mtllib none.mtl\n" + std::string(kQuad) + "f 1 2 3\n", "",
+                  "line 1: material library 'none.mtl' not found"},
+        BrokenObj{"UnknownUsemtl", kQuadWithLib, "newmtl other\nKd 1 1 1\n", "line 6: usemtl 'm'"},
+        BrokenObj{"UsemtlWithoutLibrary", std::string(kQuad) + "usemtl Default\nf 1 2 3\n", "",
+                  "line 5: usemtl 'Default': no material library of the file defines it"},
+        BrokenObj{"MissingTexture", kQuadWithLib, "newmtl m\nmap_Kd nothere.png\n",
+                  "material 'm': map_Kd 'nothere.png' not found"},
+        BrokenObj{"MissingNormalMap", kQuadWithLib, "newmtl m\nbump nothere.png\n", "map_Bump 'nothere.png'"},
+        BrokenObj{"OneValueKs", kQuadWithLib, "newmtl m\nKs 0.5\n", "lib.mtl: line 2: Ks with one value"},
+        BrokenObj{"PlusSigns", "v +0 0 0\nv 1 +0 0\nv 1 1 0\nf 1 2 3\n", "",
+                  "line 1: numbers with a leading '+' read without it (and 1 more lines)"},
+        BrokenObj{"TrailingCharacters", "v 0 0 0\nv 1 0 0\nv 1 1 3.1+e2\nf 1 2 3\n", "",
+                  "line 3: the number '3.1+e2' read as 3.1"},
+        BrokenObj{"UnknownStatement", std::string(kQuad) + "frobnicate 3\nf 1 2 3\n", "",
+                  "line 5: unknown statement 'frobnicate' ignored"},
+        BrokenObj{"Utf8Bom", "\xEF\xBB\xBF" + std::string(kQuad) + "f 1 2 3\n", "", "a UTF-8 byte-order mark"}),
+    [](const ::testing::TestParamInfo<BrokenObj>& param) { return std::string(param.param.name); });
+
 TEST(ObjModel, ZeroAreaTrianglesAreDropped)
 {
     const fs::path dir = scratch();
     // The second triangle repeats a corner: it is left out, the first one stays.
     const Model model =
-        loadObjModelFile(write(dir / "m.obj", std::string(kQuad) + "f 1 2 3\nf 1 1 4\n"));
+        loadObj(write(dir / "m.obj", std::string(kQuad) + "f 1 2 3\nf 1 1 4\n"));
     EXPECT_EQ(model.meshes[0].indices.size(), 3u);
 }
 
-TEST(ObjModel, SceneErrorNamesSceneObjectAndFile)
+TEST(ObjModel, SceneMessagesNameSceneObjectAndFile)
 {
     const fs::path dir = scratch();
     write(dir / "model.obj", "mtllib none.mtl\n" + std::string(kQuad) + "f 1 2 3\n");
-    const std::string message = errorOf([&] {
-        parseScene(R"({ "objects": [ { "mesh": "model.obj" } ] })", "scene.json", dir);
-    });
+    const std::string scene = R"({ "objects": [ { "mesh": "model.obj" } ] })";
+    // Forgiven: the scene loads and carries the warning, placed as an error would be.
+    const Scene loaded = parseScene(scene, "scene.json", dir);
+    ASSERT_EQ(loaded.warnings.size(), 1u);
+    EXPECT_TRUE(loaded.warnings[0].starts_with("scene.json: /objects/0/mesh: ")) << loaded.warnings[0];
+    EXPECT_NE(loaded.warnings[0].find("model.obj: line 1: material library 'none.mtl' not found"), std::string::npos)
+        << loaded.warnings[0];
+    // Strict: the same line is the error.
+    EXPECT_EQ(errorOf([&] { parseScene(scene, "scene.json", dir, {.strict = true}); }), loaded.warnings[0]);
+    // An error proper is placed the same way.
+    write(dir / "broken.obj", std::string(kQuad) + "f 1 2 9\n");
+    const std::string message =
+        errorOf([&] { parseScene(R"({ "objects": [ { "mesh": "broken.obj" } ] })", "scene.json", dir); });
     EXPECT_TRUE(message.starts_with("scene.json: /objects/0/mesh: ")) << message;
-    EXPECT_NE(message.find("model.obj: line 1: material library 'none.mtl' not found"), std::string::npos)
-        << message;
+    EXPECT_NE(message.find("broken.obj: vertex index 9 is out of range"), std::string::npos) << message;
 }
 
 }  // namespace
