@@ -17,9 +17,7 @@
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
-#include "scene/DefaultScene.h"
 #include "scene/LightSets.h"
-#include "scene/SceneLoader.h"
 
 namespace manylights {
 

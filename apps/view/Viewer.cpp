@@ -24,9 +24,7 @@
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
 #include "apps/cli/CommandSupport.h"
-#include "scene/DefaultScene.h"
 #include "scene/LightSets.h"
-#include "scene/SceneLoader.h"
 
 namespace manylights {
 
