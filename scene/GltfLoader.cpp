@@ -246,10 +246,48 @@ private:
         }
         if (const auto light = punctualLight(node))
             addLight(*light, world, index);
+        if (node.camera >= 0)
+            addCamera(node.camera, world, name, index);
         onPath_[index] = true;
         for (const int child : node.children)
             visit(child, world, depth + 1);
         onPath_[index] = false;
+    }
+
+    // --- cameras -------------------------------------------------------------------------
+
+    // A perspective camera looks down its node's −Z with +Y up (glTF 2.0, "Cameras"). Its
+    // aspect ratio is the image's, as for the scene's camera; without zfar (an infinite
+    // projection) the far plane is 1000 · znear beyond the default, whichever is larger.
+    // Orthographic cameras have no counterpart in the scene's camera and are passed over.
+    void addCamera(int cameraIndex, const glm::mat4& world, const std::string& name, std::size_t nodeIndex)
+    {
+        if (static_cast<std::size_t>(cameraIndex) >= gltf_.cameras.size())
+            fail(element("nodes", nodeIndex) + ": camera " + std::to_string(cameraIndex) +
+                 " is not a camera (the file has " + std::to_string(gltf_.cameras.size()) + ")");
+        const tinygltf::Camera& source = gltf_.cameras[static_cast<std::size_t>(cameraIndex)];
+        if (source.type != "perspective")
+            return;
+        const std::string where = element("cameras", static_cast<std::size_t>(cameraIndex));
+        const tinygltf::PerspectiveCamera& perspective = source.perspective;
+        const double fovDegrees = glm::degrees(perspective.yfov);
+        if (!(fovDegrees > 0.0 && fovDegrees < 180.0))
+            fail(where + ": yfov must be in (0, pi), got " + std::to_string(perspective.yfov));
+        if (!(perspective.znear > 0.0) || !std::isfinite(perspective.znear))
+            fail(where + ": znear must be a positive finite number");
+        Camera camera;
+        camera.fovYDegrees = static_cast<float>(fovDegrees);
+        camera.nearPlane = static_cast<float>(perspective.znear);
+        camera.farPlane = perspective.zfar > perspective.znear && std::isfinite(perspective.zfar)
+                              ? static_cast<float>(perspective.zfar)
+                              : std::max(camera.farPlane, 1000.0f * camera.nearPlane);
+        camera.eye = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const glm::vec3 forward = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+        camera.up = glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+        if (!(glm::length(forward) > 0.0f) || !(glm::length(camera.up) > 0.0f))
+            fail(element("nodes", nodeIndex) + ": the camera's node has a singular transform");
+        camera.lookAt = camera.eye + glm::normalize(forward);
+        model_.cameras.push_back({name, camera});
     }
 
     // --- lights --------------------------------------------------------------------------

@@ -25,6 +25,7 @@ struct Model {
     std::vector<Material> materials;
     std::vector<ModelInstance> instances;
     std::vector<Light> lights;  // in model space
+    std::vector<NamedCamera> cameras;  // in model space, named after their nodes
     std::vector<EncodedImage> images;
 };
 

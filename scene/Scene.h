@@ -24,6 +24,13 @@ struct Camera {
     float farPlane = 200.0f;
 };
 
+// A camera a model file defines (a glTF node's perspective camera), in scene space, under the
+// name "<object>/<node name>": --camera NAME|INDEX renders through it (docs/cli.md).
+struct NamedCamera {
+    std::string name;
+    Camera camera;
+};
+
 struct DirectionalLight {
     glm::vec3 direction{-1.0f, -2.0f, -1.0f};  // the direction light travels in
     glm::vec3 intensity{0.0f};
@@ -191,6 +198,7 @@ struct Scene {
     AmbientOcclusion ssao;
     float attenuationThreshold = kDefaultAttenuationThreshold;
     std::vector<Light> lights;       // explicit lights
+    std::vector<NamedCamera> cameras;  // from model files, in the order they were loaded
     std::vector<LightSet> lightSets;  // generated lights (see expandLights)
     std::vector<Material> materials;
     std::vector<Mesh> meshes;

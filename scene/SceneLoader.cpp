@@ -999,6 +999,15 @@ private:
             light.direction = glm::normalize(glm::mat3(object.transform) * light.direction);
             scene_.lights.push_back(std::move(light));
         }
+        for (NamedCamera camera : model->cameras) {
+            camera.name = object.name + "/" + camera.name;
+            Camera& c = camera.camera;
+            const glm::vec3 eye = glm::vec3(object.transform * glm::vec4(c.eye, 1.0f));
+            c.lookAt = eye + glm::normalize(glm::mat3(object.transform) * (c.lookAt - c.eye));
+            c.up = glm::normalize(glm::mat3(object.transform) * c.up);
+            c.eye = eye;
+            scene_.cameras.push_back(std::move(camera));
+        }
     }
 
     // --- animation (docs/scene-format.md) ----------------------------------------------------
@@ -1150,6 +1159,7 @@ private:
     struct LoadedModel {
         std::vector<ModelInstance> instances;  // mesh indices into Scene::meshes
         std::vector<Light> lights;
+        std::vector<NamedCamera> cameras;
         bool namesInstances = false;  // glTF: one object per instance, named "object/node"
     };
 
@@ -1205,6 +1215,7 @@ private:
         LoadedModel loaded;
         loaded.namesInstances = gltf;
         loaded.lights = std::move(model.lights);
+        loaded.cameras = std::move(model.cameras);
         for (ModelInstance instance : model.instances) {
             instance.mesh += meshOffset;
             loaded.instances.push_back(std::move(instance));

@@ -415,6 +415,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(CLI::Range(0, kMaxShadowLights))
         ->capture_default_str();
     bench->add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
+    addCameraOptions(*bench, options.camera);
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;
@@ -422,7 +423,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
 
 void runBench(const BenchOptions& options)
 {
-    const Scene scene = loadSceneForCommand(options.scenePath, options.strict);
+    const Scene scene = loadSceneForCommand(options.scenePath, options.strict, options.camera);
     if (!options.lightCounts.empty() && scene.lightSets.empty())
         throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
     // Before the sweep, which may take hours, rather than after it.

@@ -26,6 +26,7 @@ struct BenchOptions {
     std::string plotPath;  // empty: no plot
     bool countWork = false;
     bool strict = false;  // --strict: model files' forgiven problems are errors
+    CameraOptions camera;  // --camera, --eye, --look-at, --up, --fov-y
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)
     // When a technique's median frame exceeds this at one light count, its later (larger)

@@ -69,6 +69,7 @@ int runCli(int argc, const char* const* argv)
         ->capture_default_str();
     renderCommand->add_flag("--rebuild-shadows", render.rebuildShadows,
                             "Render every shadow map every frame instead of reusing unchanged ones (to time them)");
+    addCameraOptions(*renderCommand, render.camera);
     renderCommand->add_flag("--strict", render.strict,
                             "Treat what model files get forgiven (warnings) as errors");
     renderCommand->add_flag("--count-work", render.countWork,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -69,11 +70,106 @@ CLI::Validator numberIn(double min, double max)
         "NUMBER");
 }
 
-Scene loadSceneForCommand(const std::string& path, bool strict)
+namespace {
+
+// "X,Y,Z": three finite numbers of at most 1e30 (a scene's coordinates are floats).
+std::string parseVector(const std::string& text, glm::vec3& vector)
+{
+    std::size_t begin = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t comma = i < 2 ? text.find(',', begin) : text.size();
+        if (comma == std::string::npos)
+            return "must be three numbers X,Y,Z, got '" + text + "'";
+        double value = 0.0;
+        if (!checkNumber(std::string_view(text).substr(begin, comma - begin), -1.0e30, 1.0e30, value).empty())
+            return "must be three numbers X,Y,Z from -1e+30 to 1e+30, got '" + text + "'";
+        vector[i] = static_cast<float>(value);
+        begin = comma + 1;
+    }
+    return {};
+}
+
+}  // namespace
+
+void addCameraOptions(CLI::App& command, CameraOptions& options)
+{
+    command.add_option("--camera", options.camera,
+                       "View through a camera of the scene's model files, by name or index (see docs/cli.md)");
+    const auto vectorOption = [&](const char* name, std::optional<glm::vec3>& target, const char* description) {
+        command
+            .add_option_function<std::string>(
+                name, [&target](const std::string& text) { parseVector(text, target.emplace()); }, description)
+            ->check(CLI::Validator(
+                [](const std::string& text) {
+                    glm::vec3 ignored;
+                    return parseVector(text, ignored);
+                },
+                "X,Y,Z"));
+    };
+    vectorOption("--eye", options.eye, "Camera position X,Y,Z, replacing the scene's");
+    vectorOption("--look-at", options.lookAt, "Point the camera looks at X,Y,Z, replacing the scene's");
+    vectorOption("--up", options.up, "Camera up direction X,Y,Z, replacing the scene's");
+    command
+        .add_option_function<double>(
+            "--fov-y", [&options](double degrees) { options.fovY = static_cast<float>(degrees); },
+            "Vertical field of view in degrees, replacing the scene's")
+        ->check(numberIn(0.001, 179.999));
+}
+
+Camera chooseCamera(const Scene& scene, const CameraOptions& options)
+{
+    Camera camera = scene.camera;
+    if (!options.camera.empty()) {
+        const NamedCamera* chosen = nullptr;
+        for (const NamedCamera& named : scene.cameras)
+            if (named.name == options.camera)
+                chosen = &named;
+        double index = 0.0;
+        if (!chosen && checkNumber(options.camera, 0.0, 1.0e9, index).empty() && index == std::floor(index) &&
+            index < static_cast<double>(scene.cameras.size()))
+            chosen = &scene.cameras[static_cast<std::size_t>(index)];
+        if (!chosen) {
+            std::string names;
+            for (const NamedCamera& named : scene.cameras)
+                names += (names.empty() ? "" : ", ") + named.name;
+            throw Error(scene.source + ": --camera '" + options.camera + "': no such camera (" +
+                        (names.empty() ? std::string("the scene's model files define none")
+                                       : "it has " + std::to_string(scene.cameras.size()) + ": " + names) +
+                        ")");
+        }
+        camera = chosen->camera;
+    }
+    camera.eye = options.eye.value_or(camera.eye);
+    camera.lookAt = options.lookAt.value_or(camera.lookAt);
+    camera.up = options.up.value_or(camera.up);
+    camera.fovYDegrees = options.fovY.value_or(camera.fovYDegrees);
+    const glm::vec3 view = camera.lookAt - camera.eye;
+    if (!(glm::length(view) > 0.0f) || !std::isfinite(glm::length(view)))
+        throw Error("--eye and --look-at (with the scene's camera) must be distinct points a float apart");
+    if (!(glm::length(camera.up) > 0.0f) || glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6f)
+        throw Error("--up is parallel to the view direction (look-at − eye), or zero");
+    return camera;
+}
+
+std::string cameraCommandLine(const Camera& camera)
+{
+    // Nine significant digits: a float printed and read back is the same float.
+    const auto number = [](float value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+        return std::string(text);
+    };
+    const auto vector = [&](const glm::vec3& v) { return number(v.x) + "," + number(v.y) + "," + number(v.z); };
+    return "--eye " + vector(camera.eye) + " --look-at " + vector(camera.lookAt) + " --up " + vector(camera.up) +
+           " --fov-y " + number(camera.fovYDegrees);
+}
+
+Scene loadSceneForCommand(const std::string& path, bool strict, const CameraOptions& camera)
 {
     Scene scene = path.empty() ? makeDefaultScene() : loadSceneFile(path, {.strict = strict});
     for (const std::string& warning : scene.warnings)
         std::fprintf(stderr, "manylights: warning: %s\n", printableLine(warning).c_str());
+    scene.camera = chooseCamera(scene, camera);
     return scene;
 }
 

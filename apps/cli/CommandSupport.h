@@ -7,6 +7,8 @@
 #include <exception>
 #include <new>
 #include <optional>
+
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -79,9 +81,26 @@ Statistics summarize(std::vector<double> values);
 
 bool endsWith(const std::string& text, const std::string& suffix);
 
-// The scene at `path` (the built-in default scene when empty), with --strict passed on; every
-// problem the loading forgave is printed on stderr as "manylights: warning: ..." (one line).
-Scene loadSceneForCommand(const std::string& path, bool strict);
+// The camera options of render, bench and view (docs/cli.md): a model file's camera by name
+// or index, then any of its parts replaced.
+struct CameraOptions {
+    std::string camera;  // --camera NAME|INDEX: one of Scene::cameras
+    std::optional<glm::vec3> eye;     // --eye X,Y,Z
+    std::optional<glm::vec3> lookAt;  // --look-at X,Y,Z
+    std::optional<glm::vec3> up;      // --up X,Y,Z
+    std::optional<float> fovY;        // --fov-y DEGREES
+};
+void addCameraOptions(CLI::App& command, CameraOptions& options);
+// The scene's camera with `options` applied. Throws manylights::Error for a camera the scene
+// does not have (naming those it has) or a view that is not one (eye at look-at, up along it).
+Camera chooseCamera(const Scene& scene, const CameraOptions& options);
+// The command line that gives `camera`: "--eye X,Y,Z --look-at X,Y,Z --up X,Y,Z --fov-y D".
+std::string cameraCommandLine(const Camera& camera);
+
+// The scene at `path` (the built-in default scene when empty), with --strict passed on and the
+// camera options applied; every problem the loading forgave is printed on stderr as
+// "manylights: warning: ..." (one line).
+Scene loadSceneForCommand(const std::string& path, bool strict, const CameraOptions& camera = {});
 
 // Whether two output paths name one file (out.png and ./out.png; a link and its target).
 bool sameFile(const std::string& a, const std::string& b);

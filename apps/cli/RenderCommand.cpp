@@ -123,7 +123,7 @@ void runRender(const RenderOptions& options)
             checkWritable(options.statsPath, "statistics");
     }
     const auto loadStart = std::chrono::steady_clock::now();
-    const Scene scene = loadSceneForCommand(options.scenePath, options.strict);
+    const Scene scene = loadSceneForCommand(options.scenePath, options.strict, options.camera);
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
     if (options.lights && scene.lightSets.empty())

@@ -5,6 +5,7 @@
 
 #include "render/GBuffer.h"
 #include "render/TextureCache.h"
+#include "apps/cli/CommandSupport.h"
 #include "apps/cli/Recording.h"
 #include "render/Views.h"
 
@@ -31,6 +32,7 @@ struct RenderOptions {
     int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
     bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
     bool strict = false;          // model files' forgiven problems are errors (--strict)
+    CameraOptions camera;         // --camera, --eye, --look-at, --up, --fov-y
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -75,7 +75,7 @@ constexpr KeyBinding kKeys[] = {
     {"plus", GLFW_KEY_EQUAL}, {"minus", GLFW_KEY_MINUS}, {"w", GLFW_KEY_W},     {"a", GLFW_KEY_A},
     {"s", GLFW_KEY_S},       {"d", GLFW_KEY_D},         {"x", GLFW_KEY_X},     {"l", GLFW_KEY_L},
     {"m", GLFW_KEY_M},       {"t", GLFW_KEY_T},         {"v", GLFW_KEY_V},     {"p", GLFW_KEY_P},
-    {"f12", GLFW_KEY_F12},   {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
+    {"f12", GLFW_KEY_F12},   {"c", GLFW_KEY_C},   {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
 };
 
 int keyByName(const std::string& name)
@@ -101,6 +101,9 @@ private:
 
     Technique& technique();
     void onKeyPressed(int key);
+    // Prints the command-line options of the camera on screen (stdout), so that a view found
+    // here can be rendered with `manylights render ... --eye ... --look-at ...`.
+    void printCamera() const;
     void applyHeldKeys(const std::vector<int>& keys, double seconds);
     std::vector<int> heldKeys() const;
     void runScript();
@@ -165,7 +168,7 @@ private:
 
 Scene loadScene(const ViewOptions& options)
 {
-    return loadSceneForCommand(options.scenePath, options.strict);
+    return loadSceneForCommand(options.scenePath, options.strict, options.camera);
 }
 
 Viewer::Viewer(const ViewOptions& options)
@@ -276,6 +279,12 @@ Technique& Viewer::technique()
     return *slot;
 }
 
+void Viewer::printCamera() const
+{
+    std::printf("%s\n", cameraCommandLine(scene_.camera).c_str());
+    std::fflush(stdout);
+}
+
 void Viewer::onKeyPressed(int key)
 {
     const std::vector<std::string>& names = techniqueNames();
@@ -312,6 +321,7 @@ void Viewer::onKeyPressed(int key)
         break;
     }
     case GLFW_KEY_F1: panel_ = !panel_; break;
+    case GLFW_KEY_C: printCamera(); break;
     default: break;
     }
 }
@@ -586,6 +596,9 @@ void Viewer::drawPanel()
     ImGui::Checkbox("SSAO", &occlusion.enabled);
     ImGui::SliderFloat("SSAO radius", &occlusion.radius, 0.05f, 4.0f, "%.2f");
     ImGui::SliderFloat("SSAO strength", &occlusion.strength, 0.0f, 2.0f, "%.2f");
+
+    if (ImGui::Button("print camera (C)"))
+        printCamera();
 
     ImGui::Separator();
     ImGui::Checkbox("pause (P)", &paused_);

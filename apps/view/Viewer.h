@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "apps/cli/CommandSupport.h"
+
 namespace manylights {
 
 struct ViewOptions {
@@ -18,6 +20,7 @@ struct ViewOptions {
     double time = 0.0;       // the animation's start time
     std::string scriptPath;  // commands to run (apps/view/ViewScript.h); empty: interactive
     bool strict = false;     // --strict: model files' forgiven problems are errors
+    CameraOptions camera;    // --camera, --eye, --look-at, --up, --fov-y: the starting view
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
 };

@@ -191,5 +191,39 @@ TEST(ModelFiles, AssimpObjFolderRendersAsOtherToolsOpenIt)
     EXPECT_FALSE(fs::exists(dir / "strict.png"));
 }
 
+// A glTF camera by index or by name, and the same view given part by part on the command line,
+// render the same image; an unknown camera names those the scene has.
+TEST(ModelFiles, CamerasFromFilesAndFromTheCommandLineAgree)
+{
+    if (!fs::is_directory(kAssimpGltf))
+        GTEST_SKIP() << "assimp-testmodels is not installed";
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", R"({"objects": [{"name": "cams", "mesh": ")" +
+                                      (kAssimpGltf / "cameras/Cameras.gltf").string() + R"("}],
+                                     "lights": [{"type": "point", "pos": [0.5, 0.5, 2], "intensity": [1, 1, 1], "range": 5}]})");
+    const std::string scene = (dir / "scene.json").string();
+    const Image byIndex = renderPfm(scene, dir / "index.pfm", {"--size", "48x48", "--camera", "0"});
+    const Image byName = renderPfm(scene, dir / "name.pfm", {"--size", "48x48", "--camera", "cams/nodes[1]"});
+    const Image byParts = renderPfm(scene, dir / "parts.pfm",
+                                    {"--size", "48x48", "--eye", "0.5,0.5,3", "--look-at", "0.5,0.5,2", "--up", "0,1,0",
+                                     "--fov-y", "40.1070456", "--camera", "0"});
+    EXPECT_EQ(byIndex.rgb, byName.rgb);
+    EXPECT_EQ(byIndex.rgb, byParts.rgb);
+    const auto lit = std::count_if(byIndex.rgb.begin(), byIndex.rgb.end(), [](float v) { return v > 0.0f; });
+    EXPECT_GT(lit, 0);  // the square is in view
+
+    const test::ProcessResult unknown =
+        runExecutable({"render", scene, "-o", (dir / "x.png").string(), "--camera", "front"});
+    EXPECT_EQ(unknown.exitCode, 1) << unknown.stderrText;
+    EXPECT_NE(unknown.stderrText.find("--camera 'front': no such camera (it has 1: cams/nodes[1])"), std::string::npos)
+        << unknown.stderrText;
+    EXPECT_EQ(runExecutable({"render", scene, "-o", (dir / "x.png").string(), "--eye", "1,2"}).exitCode, 2);
+    EXPECT_EQ(runExecutable({"render", scene, "-o", (dir / "x.png").string(), "--fov-y", "nan"}).exitCode, 2);
+    const test::ProcessResult same =
+        runExecutable({"render", scene, "-o", (dir / "x.png").string(), "--eye", "1,1,1", "--look-at", "1,1,1"});
+    EXPECT_EQ(same.exitCode, 1) << same.stderrText;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
 }  // namespace
 }  // namespace manylights

@@ -447,6 +447,23 @@ TEST(GltfAssimpModels, EveryTruncationOfABinaryFileIsAnError)
     }
 }
 
+TEST(GltfAssimpModels, PerspectiveCamerasLookDownTheirNodesMinusZ)
+{
+    SKIP_WITHOUT_ASSIMP_MODELS();
+    const Model model = loadGltfFile(kAssimpGltf / "cameras/Cameras.gltf");
+    // Node 1 holds the perspective camera at (0.5, 0.5, 3); node 2's orthographic one has no
+    // counterpart in the scene's camera and is passed over.
+    ASSERT_EQ(model.cameras.size(), 1u);
+    const Camera& camera = model.cameras[0].camera;
+    EXPECT_EQ(model.cameras[0].name, "nodes[1]");
+    EXPECT_EQ(camera.eye, glm::vec3(0.5f, 0.5f, 3.0f));
+    EXPECT_EQ(camera.lookAt, glm::vec3(0.5f, 0.5f, 2.0f));
+    EXPECT_EQ(camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_NEAR(camera.fovYDegrees, 0.7 * 180.0 / 3.14159265358979, 1e-4);
+    EXPECT_FLOAT_EQ(camera.nearPlane, 0.01f);
+    EXPECT_FLOAT_EQ(camera.farPlane, 100.0f);
+}
+
 TEST(GltfAssimpModels, OnlyVersion2GlbContainersAreRead)
 {
     SKIP_WITHOUT_ASSIMP_MODELS();

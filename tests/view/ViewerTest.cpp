@@ -250,6 +250,22 @@ bool eventually(Condition done)
     return false;
 }
 
+TEST(Viewer, StartsFromTheCommandLineCameraAndPrintsTheCameraItShows)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    // No time passes and no key moves the camera: C prints exactly the options it started from,
+    // which `render` takes as they are.
+    ASSERT_EQ(runViewer(dir, "pause\nframes 2\nkey c\nframes 1\nquit\n",
+                        "--eye 1,2,3 --look-at 0,0.5,0 --up 0,1,0 --fov-y 50"),
+              0)
+        << readText(dir / "viewer.log");
+    EXPECT_NE(readText(dir / "viewer.log").find("--eye 1,2,3 --look-at 0,0.5,0 --up 0,1,0 --fov-y 50\n"),
+              std::string::npos)
+        << readText(dir / "viewer.log");
+}
+
 TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
 {
     if (!haveXvfb())
