@@ -288,7 +288,10 @@ void GpuScene::orderFrontToBack()
         const Bounds& bounds = draw.worldBounds;
         const glm::vec3 centre = bounds.empty() ? glm::vec3(draw.model[3]) : 0.5f * (bounds.min + bounds.max);
         const glm::vec3 halfExtent = bounds.empty() ? glm::vec3(0.0f) : 0.5f * (bounds.max - bounds.min);
-        return std::make_pair(glm::dot(centre - eye, axis) - glm::dot(glm::abs(axis), halfExtent), draw.groupedIndex);
+        const float depth = glm::dot(centre - eye, axis) - glm::dot(glm::abs(axis), halfExtent);
+        // Coordinates near the float limit can make the depth NaN, which would break the sort's
+        // ordering (and with it std::sort): such an item goes last.
+        return std::make_pair(std::isnan(depth) ? std::numeric_limits<float>::max() : depth, draw.groupedIndex);
     };
     std::vector<std::pair<float, std::size_t>> batchKeys(batches_.size());
     for (std::size_t b = 0; b < batches_.size(); ++b) {

@@ -726,12 +726,12 @@ private:
         const glm::vec3 view = camera.lookAt - camera.eye;
         if (glm::dot(view, view) == 0.0f)
             fail(lookAt ? *lookAt : (eye ? *eye : node), "look_at must differ from eye");
-        // eye [3e38, 0, 0] and look_at [-3e38, 0, 0] are finite floats whose difference is not:
-        // the view basis would be NaN and every pixel the background.
-        const float viewLength = glm::length(view);
-        if (!std::isfinite(viewLength))
+        // eye [3e38, 0, 0] and look_at [-3e38, 0, 0] are finite floats whose difference is not,
+        // and past about 1.8e19 the squared distance is not: the view basis would be NaN and
+        // every pixel the background.
+        if (!std::isfinite(glm::length(view)))
             fail(lookAt ? *lookAt : (eye ? *eye : node),
-                 "look_at - eye overflows a float (" + formatFloat(viewLength) + "); bring them closer together");
+                 "look_at - eye overflows a float (their distance squared is beyond 3.4e38); bring them closer together");
         const glm::vec3 side = glm::cross(glm::normalize(view), glm::normalize(camera.up));
         // sin of the angle between up and the view direction; below this the view basis is
         // numerically meaningless (about 0.00006 degrees).
