@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -119,12 +120,13 @@ class GltfReader {
 public:
     GltfReader(const tinygltf::Model& gltf, const std::string& displayName, const fs::path& baseDirectory,
                const GltfOptions& options)
-        : gltf_(gltf), displayName_(displayName), base_(baseDirectory), options_(options)
+        : gltf_(gltf), displayName_(displayName), base_(baseDirectory), options_(options), warnings_(displayName)
     {
     }
 
     Model read()
     {
+        checkExtensions();
         meshOf_.assign(gltf_.meshes.size(), std::nullopt);
         materialOf_.assign(gltf_.materials.size(), std::nullopt);
         imagePathOf_.assign(gltf_.images.size(), std::nullopt);
@@ -134,11 +136,26 @@ public:
             visit(root, glm::mat4{1.0f}, 0);
         if (model_.instances.empty() && model_.lights.empty())
             fail("its scene has no triangle mesh and no point or spot light");
+        if (options_.warnings)
+            warnings_.flushInto(*options_.warnings);
         return std::move(model_);
     }
 
 private:
     [[noreturn]] void fail(const std::string& what) const { throw Error(oneLine(displayName_ + ": " + what)); }
+
+    // The extensions this loader reads. A file that requires another cannot be drawn as its
+    // author meant (an error); one that only uses another is drawn without it (a warning).
+    void checkExtensions()
+    {
+        const std::set<std::string> supported{"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+        for (const std::string& name : gltf_.extensionsRequired)
+            if (!supported.contains(name))
+                fail("requires the extension " + name + ", which manylights does not read");
+        for (const std::string& name : gltf_.extensionsUsed)
+            if (!supported.contains(name))
+                warnings_.noteFile("extension " + name, "the extension " + name + " is not read; the file is drawn without it");
+    }
 
     // --- nodes ---------------------------------------------------------------------------
 
@@ -714,6 +731,21 @@ private:
         material.normalScale = static_cast<float>(source.normalTexture.scale);
         if (!std::isfinite(material.normalScale))
             fail(where + ".normalTexture: scale is not finite");
+        if (const auto found = source.extensions.find("KHR_materials_emissive_strength");
+            found != source.extensions.end() && found->second.Has("emissiveStrength")) {
+            const tinygltf::Value& strength = found->second.Get("emissiveStrength");
+            const double value = strength.IsNumber() || strength.IsInt() ? strength.GetNumberAsDouble() : -1.0;
+            if (!(value >= 0.0) || !std::isfinite(value))
+                fail(where + ": KHR_materials_emissive_strength.emissiveStrength must be a finite number >= 0");
+            material.emissive *= static_cast<float>(value);
+        }
+        // What the Blinn-Phong material cannot show yet, said once per kind and file.
+        if (source.alphaMode == "MASK" || source.alphaMode == "BLEND")
+            warnings_.noteFile("alphaMode " + source.alphaMode,
+                               where + ": alphaMode " + source.alphaMode + " is drawn opaque (alpha is not read yet)");
+        if (pbr.metallicRoughnessTexture.index >= 0)
+            warnings_.noteFile("metallicRoughnessTexture",
+                               where + ": metallicRoughnessTexture is not read; its metallic and roughness factors are");
         return material;
     }
 
@@ -777,6 +809,7 @@ private:
     std::string displayName_;
     fs::path base_;
     GltfOptions options_;
+    FileWarnings warnings_;  // flushed into options_.warnings once the file has loaded
     Model model_;
     std::vector<std::optional<std::size_t>> meshOf_;      // glTF mesh → Model::meshes
     std::vector<std::optional<std::size_t>> materialOf_;  // glTF material → Model::materials

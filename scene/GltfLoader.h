@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/Model.h"
+#include "scene/Warnings.h"
 
 namespace manylights {
 
@@ -19,6 +20,9 @@ struct GltfOptions {
     // When false, buffers and images are never read from disk (a URI that is not a data: URI
     // is an error), so loading from memory touches no file: what the fuzz target needs.
     bool allowExternalFiles = true;
+    // Where what is read only in part goes (an optional extension, a material feature not
+    // drawn), one line per kind of problem (scene/Warnings.h); none: not reported.
+    Warnings* warnings = nullptr;
 };
 
 // Loads a .gltf or .glb file (told apart by content, not by name). Throws Error naming the file

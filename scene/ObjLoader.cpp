@@ -80,47 +80,6 @@ void forEachLine(const std::string& text, Visit visit)
     });
 }
 
-// One file's forgiven problems, gathered by kind so that a file with ten thousand lines of
-// one oddity gives one warning: "FILE: line N: what (and K more lines)" at the first line.
-class FileWarnings {
-public:
-    explicit FileWarnings(std::string displayName) : displayName_(std::move(displayName)) {}
-
-    void note(std::size_t lineNumber, const std::string& kind, const std::string& message)
-    {
-        auto [entry, inserted] = byKind_.try_emplace(kind, Entry{lineNumber, message, 0});
-        if (inserted)
-            order_.push_back(kind);
-        ++entry->second.count;
-    }
-    // A warning about the whole file (no line).
-    void noteFile(const std::string& kind, const std::string& message) { note(0, kind, message); }
-
-    void flushInto(Warnings& warnings) const
-    {
-        for (const std::string& kind : order_) {
-            const Entry& entry = byKind_.at(kind);
-            std::string line = displayName_ + ": ";
-            if (entry.lineNumber > 0)
-                line += "line " + std::to_string(entry.lineNumber) + ": ";
-            line += entry.message;
-            if (entry.count > 1)
-                line += " (and " + std::to_string(entry.count - 1) + " more lines)";
-            warnings.add(line);
-        }
-    }
-
-private:
-    struct Entry {
-        std::size_t lineNumber;
-        std::string message;
-        std::size_t count;
-    };
-    std::string displayName_;
-    std::map<std::string, Entry> byKind_;
-    std::vector<std::string> order_;
-};
-
 // Appends code point `c` to `out` in UTF-8.
 void appendUtf8(std::string& out, std::uint32_t c)
 {

@@ -1189,6 +1189,7 @@ private:
             if (gltf) {
                 GltfOptions options;
                 options.attenuationThreshold = scene_.attenuationThreshold;
+                options.warnings = &forgiven;
                 model = loadGltfFile(path, options);
             } else {
                 model = loadObjModelFile(path, forgiven);

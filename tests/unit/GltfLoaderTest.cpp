@@ -147,6 +147,34 @@ GltfBuilder exampleGltf()
     return b;
 }
 
+// Extensions: one a file requires but manylights does not read is an error; one it only uses
+// is a warning (once), and the file is drawn. KHR_materials_emissive_strength scales the
+// emissive colour. What a material has that is not drawn yet is said once per kind.
+TEST(GltfModel, ExtensionsAndMaterialFeaturesReadOrSaid)
+{
+    GltfBuilder b = exampleGltf();
+    b.gltf["materials"][0]["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}}};
+    b.gltf["materials"][0]["alphaMode"] = "MASK";
+    b.gltf["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform",
+                                "EXT_unknown"};
+    Warnings warnings;
+    const Model model = b.load({.warnings = &warnings});
+    ASSERT_EQ(model.materials.size(), 1u);
+    EXPECT_NEAR(model.materials[0].emissive.x, 0.5f, 1e-6f);
+    EXPECT_NEAR(model.materials[0].emissive.z, 1.5f, 1e-6f);
+    ASSERT_EQ(warnings.messages().size(), 3u);
+    EXPECT_EQ(warnings.messages()[0], "test.gltf: the extension KHR_texture_transform is not read; the file is drawn without it");
+    EXPECT_EQ(warnings.messages()[1], "test.gltf: the extension EXT_unknown is not read; the file is drawn without it");
+    EXPECT_EQ(warnings.messages()[2], "test.gltf: materials[0]: alphaMode MASK is drawn opaque (alpha is not read yet)");
+    // Strict: the first is the error.
+    Warnings strict(true);
+    EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), warnings.messages()[0]);
+
+    b.gltf["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    EXPECT_EQ(errorOf([&] { b.load(); }),
+              "test.gltf: requires the extension KHR_draco_mesh_compression, which manylights does not read");
+}
+
 TEST(GltfModel, HierarchyPrimitivesAndIndexWidths)
 {
     const Model model = exampleGltf().load();
