@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "render/DeferredTechnique.h"
+#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 

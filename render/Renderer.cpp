@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "render/DeferredTechnique.h"
+#include "render/ScreenPasses.h"
 #include "render/LightBatches.h"
 #include "core/Error.h"
 

@@ -1,26 +1,8 @@
 #include "render/Technique.h"
 
-#include "render/ClusteredTechnique.h"
-#include "render/DeferredTechnique.h"
-#include "render/ForwardTechnique.h"
 #include "render/LightBatches.h"
-#include "render/TiledQuadsTechnique.h"
-#include "render/TiledTechnique.h"
-#include "render/VolumeTechniques.h"
 
 namespace manylights {
-
-FrameTargets::FrameTargets(int width_, int height_, GBufferLayout gbufferLayout)
-    : width(width_),
-      height(height_),
-      depthStencil("depth stencil", kDepthStencilTarget.format, width_, height_),
-      lit("lit colour", GL_RGBA32F, width_, height_),
-      litFramebuffer("lit", {&lit}, &depthStencil),
-      gbuffer(width_, height_, depthStencil, gbufferLayout),
-      lightEvaluations("light evaluations", GL_R32UI, width_, height_),
-      inRangeCounts("in-range lights", GL_R32UI, width_, height_)
-{
-}
 
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
@@ -31,49 +13,6 @@ gl::Defines shaderDefines(const TechniqueOptions& options)
     if (options.localShadows)
         defines.emplace_back("LOCAL_SHADOWS", "1");
     return defines;
-}
-
-namespace {
-
-// Every technique, in the order of the docs: the one list the names and the factory come from,
-// so a technique cannot be named without being made or made without being named.
-struct TechniqueEntry {
-    std::string_view name;
-    std::unique_ptr<Technique> (*make)(const TechniqueOptions& options);
-};
-
-template <typename T>
-std::unique_ptr<Technique> make(const TechniqueOptions& options)
-{
-    return std::make_unique<T>(options);
-}
-
-constexpr TechniqueEntry kTechniques[] = {
-    {"forward", make<ForwardTechnique>},       {"deferred", make<DeferredTechnique>},
-    {"volumes", make<VolumesTechnique>},       {"stencil", make<StencilTechnique>},
-    {"tiled-quads", make<TiledQuadsTechnique>}, {"tiled", make<TiledTechnique>},
-    {"clustered", make<ClusteredTechnique>},
-};
-
-}  // namespace
-
-const std::vector<std::string>& techniqueNames()
-{
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> result;
-        for (const TechniqueEntry& entry : kTechniques)
-            result.emplace_back(entry.name);
-        return result;
-    }();
-    return names;
-}
-
-std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options)
-{
-    for (const TechniqueEntry& entry : kTechniques)
-        if (entry.name == name)
-            return entry.make(options);
-    return nullptr;
 }
 
 }  // namespace manylights

@@ -7,28 +7,13 @@
 #include <string_view>
 #include <vector>
 
-#include "gl/Framebuffer.h"
-#include "gl/Texture.h"
+#include "render/FrameTargets.h"
 #include "render/GBuffer.h"
 
 namespace manylights {
 
 class GpuScene;
 class PassProfiler;
-
-// The size-dependent resources of a frame; rebuilt on resize, the techniques are not.
-struct FrameTargets {
-    FrameTargets(int width, int height, GBufferLayout gbufferLayout = kDefaultGBufferLayout);
-
-    int width;
-    int height;
-    gl::Texture2D depthStencil;
-    gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of docs/lighting.md
-    gl::Framebuffer litFramebuffer;  // lit + depthStencil
-    GBuffer gbuffer;
-    gl::Texture2D lightEvaluations;  // R32UI: pairs evaluated per pixel, when counting work
-    gl::Texture2D inRangeCounts;     // R32UI: lights whose A·S > 0 per pixel, when counting
-};
 
 // How a technique's shaders are built.
 struct TechniqueOptions {

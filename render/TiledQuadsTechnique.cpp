@@ -5,7 +5,7 @@
 #include <span>
 #include <string>
 
-#include "render/DeferredTechnique.h"
+#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 

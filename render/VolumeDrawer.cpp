@@ -1,6 +1,6 @@
 #include "render/VolumeDrawer.h"
 
-#include "render/DeferredTechnique.h"
+#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 
 namespace manylights {

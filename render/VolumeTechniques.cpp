@@ -1,6 +1,6 @@
 #include "render/VolumeTechniques.h"
 
-#include "render/DeferredTechnique.h"
+#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 
