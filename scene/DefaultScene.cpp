@@ -13,6 +13,7 @@
 #include "core/EmbeddedFiles.h"
 #include "core/Error.h"
 #include "scene/Meshes.h"
+#include "scene/ObjLoader.h"
 #include "scene/Revolution.h"
 #include "scene/Transform.h"
 

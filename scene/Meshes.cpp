@@ -5,18 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <tuple>
 #include <unordered_map>
 
 #include "core/Error.h"
-#include "core/InputFile.h"
 #include "scene/Tangents.h"
-#include "scene/ObjLoader.h"
 
 namespace manylights {
 
@@ -345,24 +340,6 @@ void computeSmoothNormals(Mesh& mesh, const std::vector<bool>& replace)
 {
     ML_ASSERT(replace.size() == mesh.vertices.size());
     smoothNormals(mesh, replace);
-}
-
-Mesh loadObjStream(std::istream& stream, const std::string& displayName)
-{
-    const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-    if (stream.bad())
-        throw Error(displayName + ": cannot read the file");
-    // Materials are not read here, so nothing about them can be forgiven; a plain mesh's other
-    // warnings (an unknown statement) do not concern its one use, the built-in scene's assets.
-    Warnings ignored;
-    Model model = loadObjModelText(text, displayName, {}, MtlSource{}, ignored);
-    return std::move(model.meshes.front());
-}
-
-Mesh loadObjFile(const std::filesystem::path& path)
-{
-    std::istringstream stream(readInputFile(path, "the file"));
-    return loadObjStream(stream, path.string());
 }
 
 }  // namespace manylights

@@ -17,13 +17,6 @@ Mesh makeCone(float radius, float height, int slices = 48);      // apex at +hei
 Mesh makeCylinder(float radius, float height, int slices = 48);  // capped
 Mesh makeTorus(float radius, float tube, int rings = 48, int sides = 24);
 
-// Loads the geometry of an OBJ file (all groups merged into one indexed mesh; materials
-// ignored: scene/ObjLoader.h reads those). Smooth,
-// area-weighted normals are computed where the file has none. Throws Error naming the file
-// on I/O errors, malformed content, out-of-range indices or non-finite positions.
-Mesh loadObjFile(const std::filesystem::path& path);
-Mesh loadObjStream(std::istream& stream, const std::string& displayName);
-
 // Replaces every vertex normal with the normalised, area-weighted sum of the normals of the
 // faces sharing its position.
 void computeSmoothNormals(Mesh& mesh);

@@ -620,4 +620,22 @@ Model loadObjModelFile(const fs::path& path, Warnings& warnings)
                             [&](const std::string& name) { return readTextFile(directory / name); }, warnings);
 }
 
+Mesh loadObjStream(std::istream& stream, const std::string& displayName)
+{
+    const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+    if (stream.bad())
+        throw Error(displayName + ": cannot read the file");
+    // Materials are not read here, so nothing about them can be forgiven; a plain mesh's other
+    // warnings (an unknown statement) do not concern its one use, the built-in scene's assets.
+    Warnings ignored;
+    Model model = loadObjModelText(text, displayName, {}, MtlSource{}, ignored);
+    return std::move(model.meshes.front());
+}
+
+Mesh loadObjFile(const std::filesystem::path& path)
+{
+    std::istringstream stream(readInputFile(path, "the file"));
+    return loadObjStream(stream, path.string());
+}
+
 }  // namespace manylights

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <istream>
 #include <optional>
 #include <string>
 
@@ -29,5 +30,12 @@ Model loadObjModelFile(const std::filesystem::path& path, Warnings& warnings);
 // mesh has no sub-meshes). Texture paths resolve against `baseDirectory`.
 Model loadObjModelText(const std::string& text, const std::string& displayName,
                        const std::filesystem::path& baseDirectory, const MtlSource& mtlSource, Warnings& warnings);
+
+// Loads the geometry of an OBJ file (all groups merged into one indexed mesh; materials
+// ignored: loadObjModelFile reads those). Smooth, area-weighted normals are computed where the
+// file has none. Throws Error naming the file on I/O errors, malformed content, out-of-range
+// indices or non-finite positions.
+Mesh loadObjFile(const std::filesystem::path& path);
+Mesh loadObjStream(std::istream& stream, const std::string& displayName);
 
 }  // namespace manylights

@@ -1,4 +1,5 @@
 #include "scene/Meshes.h"
+#include "scene/ObjLoader.h"
 
 #include <cmath>
 #include <filesystem>
