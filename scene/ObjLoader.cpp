@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
@@ -43,37 +44,54 @@ std::string firstLine(const std::string& text)
     return line;
 }
 
-std::string trim(const std::string& text)
+std::string_view trim(std::string_view text)
 {
     const std::size_t begin = text.find_first_not_of(" \t\r");
-    if (begin == std::string::npos)
+    if (begin == std::string_view::npos)
         return {};
     const std::size_t end = text.find_last_not_of(" \t\r");
     return text.substr(begin, end - begin + 1);
 }
 
-// Calls visit(lineNumber, line, isLast) for every line of `text` (without its '\n').
+// Calls visit(lineNumber, line, isLast) for every line of `text` (without its '\n'). The
+// views point into `text`: nothing is copied, which matters on the hot path of every OBJ load.
 template <typename Visit>
-void forEachRawLine(const std::string& text, Visit visit)
+void forEachRawLine(std::string_view text, Visit visit)
 {
     std::size_t lineNumber = 0;
     std::size_t begin = 0;
     while (begin < text.size()) {
         std::size_t end = text.find('\n', begin);
-        if (end == std::string::npos)
+        if (end == std::string_view::npos)
             end = text.size();
         visit(++lineNumber, text.substr(begin, end - begin), end == text.size());
         begin = end + 1;
     }
 }
 
+// Calls visit(word) for each word of `line` (separated by spaces, tabs or a '\r'), stopping at
+// a word that starts a '#' comment.
+template <typename Visit>
+void forEachWord(std::string_view line, Visit visit)
+{
+    for (std::size_t at = line.find_first_not_of(" \t\r"); at != std::string_view::npos;
+         at = line.find_first_not_of(" \t\r", at)) {
+        const std::size_t end = std::min(line.find_first_of(" \t\r", at), line.size());
+        const std::string_view word = line.substr(at, end - at);
+        if (word.front() == '#')
+            return;
+        visit(word);
+        at = end;
+    }
+}
+
 // Calls visit(lineNumber, keyword, rest-of-line) for every line of `text` that is not blank.
 template <typename Visit>
-void forEachLine(const std::string& text, Visit visit)
+void forEachLine(std::string_view text, Visit visit)
 {
-    forEachRawLine(text, [&](std::size_t lineNumber, const std::string& line, bool) {
+    forEachRawLine(text, [&](std::size_t lineNumber, std::string_view line, bool) {
         const std::size_t keywordBegin = line.find_first_not_of(" \t");
-        if (keywordBegin == std::string::npos)
+        if (keywordBegin == std::string_view::npos)
             return;
         const std::size_t keywordEnd = std::min(line.find_first_of(" \t\r", keywordBegin), line.size());
         visit(lineNumber, line.substr(keywordBegin, keywordEnd - keywordBegin), line.substr(keywordEnd));
@@ -134,8 +152,8 @@ std::string decodedText(const std::string& bytes, FileWarnings& warnings)
 }
 
 // The statements this loader reads or knowingly passes over; any other is reported once.
-const std::set<std::string> kObjStatements{"v", "vn", "vt", "vp", "f", "l", "p", "g", "o", "s", "usemtl", "mtllib"};
-const std::set<std::string> kMtlStatements{
+const std::set<std::string, std::less<>> kObjStatements{"v", "vn", "vt", "vp", "f", "l", "p", "g", "o", "s", "usemtl", "mtllib"};
+const std::set<std::string, std::less<>> kMtlStatements{
     "newmtl", "Ka",      "Kd",    "Ks",    "Ke",    "Ns",   "Ni",    "d",         "Tr",   "Tf",   "illum",
     "map_Ka", "map_Kd",  "map_Ks", "map_Ke", "map_Ns", "map_d", "map_bump", "map_Bump", "bump", "norm", "disp",
     "decal",  "refl",    "sharpness", "Pr", "Pm",   "Ps",   "Pc",    "Pcr",       "aniso", "anisor", "map_Pr",
@@ -149,10 +167,10 @@ struct NumberKeyword {
     bool oneForThree;
 };
 
-const std::map<std::string, NumberKeyword> kObjNumberKeywords{
+const std::map<std::string, NumberKeyword, std::less<>> kObjNumberKeywords{
     {"v", {"vertex position", 3, false}}, {"vn", {"normal", 3, false}}, {"vt", {"texture coordinate", 1, false}}};
 
-const std::map<std::string, NumberKeyword> kMtlNumberKeywords{{"Kd", {"Kd", 3, true}},
+const std::map<std::string, NumberKeyword, std::less<>> kMtlNumberKeywords{{"Kd", {"Kd", 3, true}},
                                                              {"Ks", {"Ks", 3, true}},
                                                              {"Ke", {"Ke", 3, true}},
                                                              {"Ka", {"Ka", 3, true}},
@@ -166,61 +184,72 @@ const std::map<std::string, NumberKeyword> kMtlNumberKeywords{{"Kd", {"Kd", 3, t
 // noted once each. With `nonNegative` (material libraries) a number below zero is an error: a
 // negative reflectance has no meaning, and the scene format refuses it too.
 std::string checkedNumbers(const std::string& text, const std::string& displayName,
-                           const std::map<std::string, NumberKeyword>& keywords, const std::set<std::string>& known,
-                           FileWarnings& warnings, bool nonNegative)
+                           const std::map<std::string, NumberKeyword, std::less<>>& keywords,
+                           const std::set<std::string, std::less<>>& known, FileWarnings& warnings, bool nonNegative)
 {
     std::string out;
     out.reserve(text.size());
-    forEachRawLine(text, [&](std::size_t lineNumber, const std::string& line, bool lastLine) {
-        const auto emit = [&](const std::string& written) {
+    std::vector<std::string_view> numbers;  // reused: no allocation per line
+    forEachRawLine(text, [&](std::size_t lineNumber, std::string_view line, bool lastLine) {
+        const auto emit = [&](std::string_view written) {
             out += written;
             if (!lastLine)
                 out += '\n';
         };
-        std::istringstream words(line);
-        std::string keyword;
-        if (!(words >> keyword) || keyword.front() == '#')
-            return emit(line);
-        const auto found = keywords.find(keyword);
+        const std::size_t keywordBegin = line.find_first_not_of(" \t\r");
+        const std::string_view keyword =
+            keywordBegin == std::string_view::npos || line[keywordBegin] == '#'
+                ? std::string_view()
+                : line.substr(keywordBegin, std::min(line.find_first_of(" \t\r", keywordBegin), line.size()) - keywordBegin);
+        const auto found = keyword.empty() ? keywords.end() : keywords.find(keyword);
         if (found == keywords.end()) {
-            if (!known.contains(keyword))
-                warnings.note(lineNumber, "statement " + keyword, "unknown statement '" + keyword + "' ignored");
+            if (!keyword.empty() && !known.contains(keyword))
+                warnings.note(lineNumber, "statement " + std::string(keyword),
+                              "unknown statement '" + std::string(keyword) + "' ignored");
             return emit(line);
         }
         const NumberKeyword& spec = found->second;
-        std::vector<std::string> numbers;
-        for (std::string token; words >> token;) {
-            if (token.front() == '#')
-                break;
+        const auto failHere = [&](const std::string& what) {
+            fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what + " " + what);
+        };
+        numbers.clear();
+        bool rewritten = false;
+        forEachWord(line.substr(keywordBegin + keyword.size()), [&](std::string_view token) {
             std::string_view digits = token;
             if (digits.size() > 1 && digits.front() == '+') {
                 digits.remove_prefix(1);
+                rewritten = true;
                 warnings.note(lineNumber, "plus", "numbers with a leading '+' read without it");
             }
             float value = 0.0f;
             const auto [next, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
             if (error != std::errc{} || !std::isfinite(value))
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what +
-                                      " has a non-finite or malformed number '" + token + "'");
+                failHere("has a non-finite or malformed number '" + std::string(token) + "'");
             const std::string_view read(digits.data(), static_cast<std::size_t>(next - digits.data()));
-            if (read.size() != digits.size())
-                warnings.note(lineNumber, "trailing", "the number '" + token + "' read as " + std::string(read) +
-                                                          " (the characters after it ignored)");
+            if (read.size() != digits.size()) {
+                rewritten = true;
+                warnings.note(lineNumber, "trailing",
+                              "the number '" + std::string(token) + "' read as " + std::string(read) +
+                                  " (the characters after it ignored)");
+            }
             if (nonNegative && value < 0.0f)
-                fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what +
-                                      " must not be negative, got '" + token + "'");
-            numbers.emplace_back(read);
-        }
+                failHere("must not be negative, got '" + std::string(token) + "'");
+            numbers.push_back(read);
+        });
         if (spec.oneForThree && numbers.size() == 1) {
             numbers.resize(3, numbers.front());
+            rewritten = true;
             warnings.note(lineNumber, "one value", std::string(spec.what) + " with one value taken for all three channels");
         }
         if (static_cast<int>(numbers.size()) < spec.needed)
-            fail(displayName, "line " + std::to_string(lineNumber) + ": " + spec.what + " needs " +
-                                  std::to_string(spec.needed) + " numbers, has " + std::to_string(numbers.size()));
-        std::string written = keyword;
-        for (const std::string& number : numbers)
-            written += " " + number;
+            failHere("needs " + std::to_string(spec.needed) + " numbers, has " + std::to_string(numbers.size()));
+        if (!rewritten)
+            return emit(line);
+        std::string written(keyword);
+        for (const std::string_view number : numbers) {
+            written += ' ';
+            written += number;
+        }
         emit(written);
     });
     return out;
@@ -231,30 +260,24 @@ std::string checkedNumbers(const std::string& text, const std::string& displayNa
 // integer within int's range here first (the count of vertices is checked afterwards).
 void checkElementIndices(const std::string& text, const std::string& displayName)
 {
-    forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
+    forEachLine(text, [&](std::size_t lineNumber, std::string_view keyword, std::string_view rest) {
         if (keyword != "f" && keyword != "l" && keyword != "p")
             return;
-        std::istringstream line(rest);
-        for (std::string token; line >> token;) {
-            if (token.front() == '#')
-                break;
-            std::size_t partBegin = 0;
-            while (partBegin <= token.size()) {
-                const std::size_t slash = std::min(token.find('/', partBegin), token.size());
-                if (slash > partBegin) {  // "1//3" leaves the texture coordinate empty
-                    long long index = 0;
-                    const char* first = token.data() + partBegin;
-                    const char* last = token.data() + slash;
-                    const auto [next, error] = std::from_chars(first, last, index);
-                    if (error != std::errc{} || next != last || index > std::numeric_limits<int>::max() ||
-                        index < -static_cast<long long>(std::numeric_limits<int>::max()))
-                        fail(displayName, "line " + std::to_string(lineNumber) + ": the index '" +
-                                              token.substr(partBegin, slash - partBegin) +
-                                              "' is not an integer within ±2147483647");
-                }
-                partBegin = slash + 1;
+        forEachWord(rest, [&](std::string_view corner) {
+            // "1/2/3", "1//3" (no texture coordinate), "1": each present index in int's range.
+            for (std::size_t begin = 0; begin <= corner.size();) {
+                const std::size_t slash = std::min(corner.find('/', begin), corner.size());
+                const std::string_view part = corner.substr(begin, slash - begin);
+                long long index = 0;
+                const auto [next, error] = std::from_chars(part.data(), part.data() + part.size(), index);
+                if (!part.empty() && (error != std::errc{} || next != part.data() + part.size() ||
+                                      index > std::numeric_limits<int>::max() ||
+                                      index < -static_cast<long long>(std::numeric_limits<int>::max())))
+                    fail(displayName, "line " + std::to_string(lineNumber) + ": the index '" + std::string(part) +
+                                          "' is not an integer within ±2147483647");
+                begin = slash + 1;
             }
-        }
+        });
     });
 }
 
@@ -330,8 +353,8 @@ private:
     std::size_t mtllibLine(const std::string& name) const
     {
         std::size_t at = 0;
-        forEachLine(objText_, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
-            if (at == 0 && keyword == "mtllib" && rest.find(name) != std::string::npos)
+        forEachLine(objText_, [&](std::size_t lineNumber, std::string_view keyword, std::string_view rest) {
+            if (at == 0 && keyword == "mtllib" && rest.find(name) != std::string_view::npos)
                 at = lineNumber;
         });
         return at;
@@ -456,8 +479,8 @@ Model loadObjModelText(const std::string& fileText, const std::string& displayNa
         std::set<std::string> known;
         for (const tinyobj::material_t& material : materials)
             known.insert(material.name);
-        forEachLine(text, [&](std::size_t lineNumber, const std::string& keyword, const std::string& rest) {
-            const std::string name = trim(rest);
+        forEachLine(text, [&](std::size_t lineNumber, std::string_view keyword, std::string_view rest) {
+            const std::string name(trim(rest));
             if (keyword == "usemtl" && !known.contains(name))
                 warnings.note(lineNumber, "usemtl " + name,
                               "usemtl '" + name +

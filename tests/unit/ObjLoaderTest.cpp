@@ -2,6 +2,7 @@
 // maps, and every broken-asset path (one Error naming the file and the line).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -211,6 +212,27 @@ INSTANTIATE_TEST_SUITE_P(
                   "line 5: unknown statement 'frobnicate' ignored"},
         BrokenObj{"Utf8Bom", "\xEF\xBB\xBF" + std::string(kQuad) + "f 1 2 3\n", "", "a UTF-8 byte-order mark"}),
     [](const ::testing::TestParamInfo<BrokenObj>& param) { return std::string(param.param.name); });
+
+// The numbers the loader rewrites for tinyobjloader ('+' signs, characters after a number,
+// one-value colours) reach the model as other readers read them; lines it leaves alone keep
+// their numbers exactly, comments after them included.
+TEST(ObjModel, RewrittenNumbersReadAsOtherReadersReadThem)
+{
+    const fs::path dir = scratch();
+    write(dir / "lib.mtl", "newmtl m\nKd 0.25 # grey\nKs +0.5 0.5 0.5\n");
+    const fs::path obj = write(dir / "m.obj", "mtllib lib.mtl\nv +1 +2. 3.1+e2\nv 4 5 6 # plain\nv 0 1e1 -2\nusemtl m\nf 1 2 3\n");
+    Warnings warnings;
+    const Model model = loadObjModelFile(obj, warnings);
+    std::vector<glm::vec3> positions;
+    for (const Vertex& vertex : model.meshes[0].vertices)
+        positions.push_back(vertex.position);
+    for (const glm::vec3 expected : {glm::vec3(1, 2, 3.1f), glm::vec3(4, 5, 6), glm::vec3(0, 10, -2)})
+        EXPECT_NE(std::find(positions.begin(), positions.end(), expected), positions.end()) << expected.z;
+    ASSERT_EQ(model.materials.size(), 1u);
+    EXPECT_EQ(model.materials[0].diffuse, glm::vec3(0.25f));
+    EXPECT_EQ(model.materials[0].specular, glm::vec3(0.5f));
+    EXPECT_EQ(warnings.messages().size(), 4u);  // plus and trailing in the OBJ; one value and plus in the MTL
+}
 
 TEST(ObjModel, ZeroAreaTrianglesAreDropped)
 {
