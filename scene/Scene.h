@@ -24,6 +24,18 @@ struct Camera {
     float farPlane = 200.0f;
 };
 
+// What keeps a camera from defining a view basis. One check for the scene file's camera and
+// the command line's (--eye, --look-at, --up), so that both refuse the same cameras.
+enum class CameraProblem {
+    None,
+    LookAtIsEye,        // no view direction
+    DistanceOverflows,  // |look_at − eye| overflows a float: the basis would be NaN
+    UpAlongView,        // up is zero or parallel to the view direction
+};
+CameraProblem cameraProblem(const Camera& camera);
+// The problem in words, naming the scene file's keys ("look_at must differ from eye").
+const char* describe(CameraProblem problem);
+
 // A camera a model file defines (a glTF node's perspective camera), in scene space, under the
 // name "<object>/<node name>": --camera NAME|INDEX renders through it (docs/cli.md).
 struct NamedCamera {

@@ -723,20 +723,12 @@ private:
             fail(*member(node, "near"), "must be less than far (" + formatFloat(camera.farPlane) + ")");
         }
 
-        const glm::vec3 view = camera.lookAt - camera.eye;
-        if (glm::dot(view, view) == 0.0f)
-            fail(lookAt ? *lookAt : (eye ? *eye : node), "look_at must differ from eye");
-        // eye [3e38, 0, 0] and look_at [-3e38, 0, 0] are finite floats whose difference is not,
-        // and past about 1.8e19 the squared distance is not: the view basis would be NaN and
-        // every pixel the background.
-        if (!std::isfinite(glm::length(view)))
-            fail(lookAt ? *lookAt : (eye ? *eye : node),
-                 "look_at - eye overflows a float (their distance squared is beyond 3.4e38); bring them closer together");
-        const glm::vec3 side = glm::cross(glm::normalize(view), glm::normalize(camera.up));
-        // sin of the angle between up and the view direction; below this the view basis is
-        // numerically meaningless (about 0.00006 degrees).
-        if (glm::length(side) < 1e-6f)
-            fail(up ? *up : node, "up is parallel to the view direction (look_at - eye)");
+        switch (const CameraProblem problem = cameraProblem(camera); problem) {
+        case CameraProblem::None: break;
+        case CameraProblem::LookAtIsEye:
+        case CameraProblem::DistanceOverflows: fail(lookAt ? *lookAt : (eye ? *eye : node), describe(problem));
+        case CameraProblem::UpAlongView: fail(up ? *up : node, describe(problem));
+        }
     }
 
     DirectionalLight readDirectional(const Node& node) const

@@ -143,11 +143,9 @@ Camera chooseCamera(const Scene& scene, const CameraOptions& options)
     camera.lookAt = options.lookAt.value_or(camera.lookAt);
     camera.up = options.up.value_or(camera.up);
     camera.fovYDegrees = options.fovY.value_or(camera.fovYDegrees);
-    const glm::vec3 view = camera.lookAt - camera.eye;
-    if (!(glm::length(view) > 0.0f) || !std::isfinite(glm::length(view)))
-        throw Error("--eye and --look-at (with the scene's camera) must be distinct points a float apart");
-    if (!(glm::length(camera.up) > 0.0f) || glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6f)
-        throw Error("--up is parallel to the view direction (look-at − eye), or zero");
+    if (const CameraProblem problem = cameraProblem(camera); problem != CameraProblem::None)
+        throw Error("the camera of --eye, --look-at, --up and --camera (the scene's for what they leave out): " +
+                    std::string(describe(problem)));
     return camera;
 }
 

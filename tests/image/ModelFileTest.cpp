@@ -222,6 +222,13 @@ TEST(ModelFiles, CamerasFromFilesAndFromTheCommandLineAgree)
     const test::ProcessResult same =
         runExecutable({"render", scene, "-o", (dir / "x.png").string(), "--eye", "1,1,1", "--look-at", "1,1,1"});
     EXPECT_EQ(same.exitCode, 1) << same.stderrText;
+    EXPECT_NE(same.stderrText.find("look_at must differ from eye"), std::string::npos) << same.stderrText;
+    // The same check as the scene file's camera (scene/Scene.h: cameraProblem).
+    const test::ProcessResult alongView = runExecutable(
+        {"render", scene, "-o", (dir / "x.png").string(), "--eye", "0,5,0", "--look-at", "0,0,0", "--up", "0,2,0"});
+    EXPECT_EQ(alongView.exitCode, 1) << alongView.stderrText;
+    EXPECT_NE(alongView.stderrText.find("up is parallel to the view direction"), std::string::npos)
+        << alongView.stderrText;
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
