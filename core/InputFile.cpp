@@ -27,7 +27,10 @@ std::string inputFileProblem(const std::filesystem::path& path)
     return {};
 }
 
-std::string readInputFile(const std::filesystem::path& path, const std::string& what)
+namespace {
+
+template <typename Bytes>
+Bytes readWhole(const std::filesystem::path& path, const std::string& what)
 {
     const auto fail = [&](const std::string& reason) {
         throw Error(path.string() + ": cannot open " + what + ": " + reason);
@@ -40,16 +43,30 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
     const std::unique_ptr<std::FILE, Close> file(std::fopen(path.c_str(), "rb"));
     if (!file)
         fail(std::strerror(errno));
-    std::string bytes;
+    Bytes bytes;
+    std::error_code ignored;
+    bytes.reserve(static_cast<std::size_t>(std::filesystem::file_size(path, ignored)));
     char buffer[1 << 16];
     for (std::size_t read; (read = std::fread(buffer, 1, sizeof buffer, file.get())) > 0;) {
-        bytes.append(buffer, read);
+        bytes.insert(bytes.end(), buffer, buffer + read);
         if (bytes.size() > kMaxInputFileBytes)  // grew while being read
             fail("over the limit of " + std::to_string(kMaxInputFileBytes) + " bytes");
     }
     if (std::ferror(file.get()))
         fail(std::strerror(errno));
     return bytes;
+}
+
+}  // namespace
+
+std::string readInputFile(const std::filesystem::path& path, const std::string& what)
+{
+    return readWhole<std::string>(path, what);
+}
+
+std::vector<unsigned char> readInputBytes(const std::filesystem::path& path, const std::string& what)
+{
+    return readWhole<std::vector<unsigned char>>(path, what);
 }
 
 }  // namespace manylights

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace manylights {
 
@@ -15,6 +16,8 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = 2147483647;
 // The whole file. Throws manylights::Error "PATH: cannot open WHAT: reason" (missing, not a
 // regular file, larger than the limit, a read error).
 std::string readInputFile(const std::filesystem::path& path, const std::string& what);
+// The same as bytes, for the readers that take them (tinygltf, stb_image): no second copy.
+std::vector<unsigned char> readInputBytes(const std::filesystem::path& path, const std::string& what);
 
 // Why `path` cannot be read as an input file ("" when it is a regular file within the limit).
 std::string inputFileProblem(const std::filesystem::path& path);

@@ -38,9 +38,7 @@ std::string canonicalKey(const std::string& path)
 
 DecodedImage decodeImageFile(const std::string& path, int maxSide)
 {
-    const std::string text = readInputFile(path, "texture");
-    const std::span<const unsigned char> bytes(reinterpret_cast<const unsigned char*>(text.data()), text.size());
-    return decodeImageMemory(path, bytes, maxSide);
+    return decodeImageMemory(path, readInputBytes(path, "texture"), maxSide);
 }
 
 DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide)

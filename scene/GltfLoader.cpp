@@ -96,8 +96,7 @@ bool inputFileExists(const std::string& path, void*)
 bool readExternalFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void*)
 {
     try {
-        const std::string text = readInputFile(path, "the file");
-        bytes->assign(text.begin(), text.end());
+        *bytes = readInputBytes(path, "the file");
         return true;
     } catch (const Error& e) {
         if (error)
@@ -917,9 +916,7 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
 
 Model loadGltfFile(const fs::path& path, const GltfOptions& options)
 {
-    const std::string text = readInputFile(path, "the file");
-    const std::vector<unsigned char> bytes(text.begin(), text.end());
-    return loadGltfMemory(bytes, path.string(), path.parent_path(), options);
+    return loadGltfMemory(readInputBytes(path, "the file"), path.string(), path.parent_path(), options);
 }
 
 }  // namespace manylights

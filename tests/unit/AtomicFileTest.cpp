@@ -85,6 +85,8 @@ TEST(InputFile, OnlyRegularFilesWithinTheLimit)
     const fs::path dir = freshDirectory("input");
     std::ofstream(dir / "scene.json") << "{}";
     EXPECT_EQ(readInputFile(dir / "scene.json", "scene file"), "{}");
+    EXPECT_EQ(readInputBytes(dir / "scene.json", "scene file"), (std::vector<unsigned char>{'{', '}'}));
+    EXPECT_THROW(readInputBytes("/dev/zero", "texture"), Error);
     EXPECT_EQ(inputFileProblem(dir), "it is a directory");
     EXPECT_EQ(inputFileProblem("/dev/zero"), "not a regular file");
     try {
