@@ -275,16 +275,19 @@ private:
     // A perspective camera looks down its node's −Z with +Y up (glTF 2.0, "Cameras"). Its
     // aspect ratio is the image's, as for the scene's camera; without zfar (an infinite
     // projection) the far plane is 1000 · znear beyond the default, whichever is larger.
-    // Orthographic cameras have no counterpart in the scene's camera and are passed over.
+    // Orthographic cameras have no counterpart in the scene's camera: passed over, with a warning.
     void addCamera(int cameraIndex, const glm::mat4& world, const std::string& name, std::size_t nodeIndex)
     {
         if (static_cast<std::size_t>(cameraIndex) >= gltf_.cameras.size())
             fail(element("nodes", nodeIndex) + ": camera " + std::to_string(cameraIndex) +
                  " is not a camera (the file has " + std::to_string(gltf_.cameras.size()) + ")");
         const tinygltf::Camera& source = gltf_.cameras[static_cast<std::size_t>(cameraIndex)];
-        if (source.type != "perspective")
-            return;
         const std::string where = element("cameras", static_cast<std::size_t>(cameraIndex));
+        if (source.type != "perspective") {
+            warnings_.noteFile("camera " + source.type,
+                               where + ": type " + source.type + " has no counterpart in the scene's camera; passed over");
+            return;
+        }
         const tinygltf::PerspectiveCamera& perspective = source.perspective;
         const double fovDegrees = glm::degrees(perspective.yfov);
         if (!(fovDegrees > 0.0 && fovDegrees < 180.0))

@@ -478,9 +478,13 @@ TEST(GltfAssimpModels, EveryTruncationOfABinaryFileIsAnError)
 TEST(GltfAssimpModels, PerspectiveCamerasLookDownTheirNodesMinusZ)
 {
     SKIP_WITHOUT_ASSIMP_MODELS();
-    const Model model = loadGltfFile(kAssimpGltf / "cameras/Cameras.gltf");
+    Warnings warnings;
+    const Model model = loadGltfFile(kAssimpGltf / "cameras/Cameras.gltf", {.warnings = &warnings});
     // Node 1 holds the perspective camera at (0.5, 0.5, 3); node 2's orthographic one has no
-    // counterpart in the scene's camera and is passed over.
+    // counterpart in the scene's camera and is passed over, with a warning.
+    ASSERT_EQ(warnings.messages().size(), 1u);
+    EXPECT_NE(warnings.messages()[0].find("cameras[1]: type orthographic has no counterpart"), std::string::npos)
+        << warnings.messages()[0];
     ASSERT_EQ(model.cameras.size(), 1u);
     const Camera& camera = model.cameras[0].camera;
     EXPECT_EQ(model.cameras[0].name, "nodes[1]");
