@@ -1,8 +1,8 @@
 #include "apps/cli/Recording.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <algorithm>
 #include <cstdio>
 #include <unistd.h>
 
@@ -78,10 +78,20 @@ std::string parseTimeRange(const std::string& text, TimeRange& range)
     return {};
 }
 
+namespace {
+
+// The frame count in double, where any range and fps fit: checked before it becomes an int.
+// A hair below the product, so that 0:2 at 30 fps is exactly 60 frames despite rounding.
+double frameCountOf(const TimeRange& range, double fps)
+{
+    return std::max(1.0, std::ceil((range.end - range.start) * fps - 1e-9));
+}
+
+}  // namespace
+
 std::string checkRecordingFrameCount(const TimeRange& range, double fps)
 {
-    // In double, before any conversion to int can overflow.
-    const double frames = std::ceil((range.end - range.start) * fps - 1e-9);
+    const double frames = frameCountOf(range, fps);
     if (!(frames <= kMaxFrameCount))
         return "--time-range at --fps " + formatNumber(fps) + " is " + formatNumber(frames) + " frames; at most " +
                formatNumber(kMaxFrameCount) + " can be recorded";
@@ -90,8 +100,7 @@ std::string checkRecordingFrameCount(const TimeRange& range, double fps)
 
 int recordingFrameCount(const TimeRange& range, double fps)
 {
-    // A hair below the product, so that 0:2 at 30 fps is exactly 60 frames despite rounding.
-    return std::max(1, static_cast<int>(std::ceil((range.end - range.start) * fps - 1e-9)));
+    return static_cast<int>(frameCountOf(range, fps));
 }
 
 double recordingFrameTime(const TimeRange& range, double fps, int frame) { return range.start + frame / fps; }
