@@ -458,12 +458,15 @@ private:
     using Keys = std::initializer_list<std::string_view>;
     using NumberReader = float (Loader::*)(const Node&) const;
 
-    [[noreturn]] void fail(const Node& node, const std::string& what) const
+    // "FILE: /json/pointer: what", the form of every error and warning about the scene.
+    std::string located(const Node& node, const std::string& what) const
     {
         // The root has the empty pointer, which reads badly in a message.
         const std::string where = node.path.empty() ? "" : node.path + ": ";
-        throw Error(oneLine(displayName_ + ": " + where + what));
+        return oneLine(displayName_ + ": " + where + what);
     }
+
+    [[noreturn]] void fail(const Node& node, const std::string& what) const { throw Error(located(node, what)); }
 
     // --- structure -----------------------------------------------------------------------
 
@@ -1190,7 +1193,7 @@ private:
             fail(node, e.what());
         }
         for (const std::string& message : forgiven.messages())
-            scene_.warnings.push_back(oneLine(displayName_ + ": " + node.path + ": " + message));
+            scene_.warnings.push_back(located(node, message));
         const std::size_t materialOffset = scene_.materials.size();
         const std::size_t meshOffset = scene_.meshes.size();
         for (Material& material : model.materials)
