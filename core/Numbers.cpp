@@ -15,8 +15,6 @@ std::string formatNumber(double value)
 
 std::string checkNumber(std::string_view text, double min, double max, double& value)
 {
-    const std::string problem = "must be a number from " + formatNumber(min) + " to " + formatNumber(max) +
-                                ", got '" + std::string(text) + "'";
     // A leading '+' is how some people write a positive number; from_chars does not take it.
     std::string_view digits = text;
     if (digits.size() > 1 && digits.front() == '+')
@@ -25,7 +23,8 @@ std::string checkNumber(std::string_view text, double min, double max, double& v
     const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), parsed);
     if (digits.empty() || error != std::errc{} || stop != digits.data() + digits.size() || !std::isfinite(parsed) ||
         parsed < min || parsed > max)
-        return problem;
+        return "must be a number from " + formatNumber(min) + " to " + formatNumber(max) + ", got '" +
+               std::string(text) + "'";
     value = parsed;
     return {};
 }

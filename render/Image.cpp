@@ -3,8 +3,8 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 

@@ -16,6 +16,7 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
+#include "render/Image.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
 
@@ -402,8 +403,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(numberIn(0.0, 1.0e9));
     bench->add_option("--plot", options.plotPath, "Write frame time against lights as an SVG plot")
         ->check([](const std::string& path) {
-            return endsWith(path, ".svg") && path.size() > 4 ? std::string()
-                                                              : "must end in .svg, got '" + path + "'";
+            return hasExtension(path, ".svg") ? std::string() : "must end in .svg, got '" + path + "'";
         });
     bench
         ->add_option_function<std::string>(

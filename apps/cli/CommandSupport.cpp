@@ -180,11 +180,6 @@ bool sameFile(const std::string& a, const std::string& b)
     return resolved(a) == resolved(b);
 }
 
-bool endsWith(const std::string& text, const std::string& suffix)
-{
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::optional<int> parseCommandLine(CLI::App& app, int argc, const char* const* argv)
 {
     try {

@@ -7,10 +7,10 @@
 #include <exception>
 #include <new>
 #include <optional>
-
-#include <glm/glm.hpp>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "core/Error.h"
 
@@ -79,8 +79,6 @@ struct Statistics {
 };
 Statistics summarize(std::vector<double> values);
 
-bool endsWith(const std::string& text, const std::string& suffix);
-
 // The camera options of render, bench and view (docs/cli.md): a model file's camera by name
 // or index, then any of its parts replaced.
 struct CameraOptions {
@@ -107,6 +105,5 @@ bool sameFile(const std::string& a, const std::string& b);
 
 // The check of every real-valued option: a finite number in [min, max] (core/Numbers.h).
 CLI::Validator numberIn(double min, double max);
-
 
 }  // namespace manylights
