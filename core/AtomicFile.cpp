@@ -63,12 +63,15 @@ std::filesystem::path temporarySibling(const std::filesystem::path& path)
     return path.parent_path() / (name + suffix);
 }
 
-AtomicFileSet::~AtomicFileSet()
+AtomicFileSet::~AtomicFileSet() { removeTemporaries(); }
+
+void AtomicFileSet::removeTemporaries()
 {
     for (const Staged& file : staged_) {
         std::error_code ignored;
         std::filesystem::remove(file.temporary, ignored);
     }
+    staged_.clear();
 }
 
 void AtomicFileSet::stage(const std::filesystem::path& path, const std::string& what, std::string_view bytes)
@@ -88,8 +91,11 @@ void AtomicFileSet::commit()
         const Staged& file = staged_.front();
         std::error_code error;
         std::filesystem::rename(file.temporary, file.path, error);
-        if (error)
-            cannotWrite(file.path, file.what, error.message());
+        if (error) {
+            const Staged failed = file;
+            removeTemporaries();
+            cannotWrite(failed.path, failed.what, error.message());
+        }
         staged_.erase(staged_.begin());
     }
 }

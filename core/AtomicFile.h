@@ -34,6 +34,8 @@ public:
     void commit();
 
 private:
+    void removeTemporaries();
+
     struct Staged {
         std::filesystem::path path;
         std::filesystem::path temporary;

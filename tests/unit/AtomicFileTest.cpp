@@ -65,6 +65,22 @@ TEST(AtomicFile, ASetIsRenamedTogetherOrNotAtAll)
     EXPECT_EQ(contents(dir / "a.txt"), "new a");
     EXPECT_EQ(contents(dir / "b.txt"), "new b");
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
+
+    // The rename is the last step that can fail (here: a directory holds the name): the error
+    // names the file, the temporaries go, and what was renamed before it stays renamed.
+    fs::create_directories(dir / "taken" / "inside");
+    AtomicFileSet blocked;
+    blocked.stage(dir / "c.txt", "third", "new c");
+    blocked.stage(dir / "taken", "fourth", "never");
+    try {
+        blocked.commit();
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind((dir / "taken").string() + ": cannot write fourth: ", 0), 0u) << e.what();
+    }
+    EXPECT_EQ(contents(dir / "c.txt"), "new c");
+    EXPECT_TRUE(fs::is_directory(dir / "taken"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 4);  // a, b, c, taken
     fs::remove_all(dir);
 }
 
@@ -77,6 +93,15 @@ TEST(AtomicFile, CheckWritableRefusesDirectoriesAndMissingFolders)
     EXPECT_THROW(checkWritable(dir / "missing" / "out.png", "image"), Error);
     createOutputFolder(dir / "made" / "deeper" / "f%03d.png");
     EXPECT_TRUE(fs::is_directory(dir / "made" / "deeper"));
+    // A file where the folder would go: the error names the folder.
+    std::ofstream(dir / "plain") << "x";
+    try {
+        createOutputFolder(dir / "plain" / "frames" / "f%03d.png");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind((dir / "plain" / "frames").string() + ": cannot create folder: ", 0), 0u)
+            << e.what();
+    }
     fs::remove_all(dir);
 }
 
