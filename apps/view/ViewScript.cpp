@@ -1,7 +1,6 @@
 #include "apps/view/ViewScript.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -61,7 +60,8 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
         };
         ScriptCommand command{ScriptCommand::Kind::Quit, args, 0.0, 0, 0, lineNumber};
         // Every number through the one check of core/Numbers.h, with the limits the viewer can
-        // honour: a window no larger than a rendered image, no more frames than a recording.
+        // honour (ViewScript.h): a window side drivers' framebuffers take, no more frames than a
+        // recording may have, a scene time animations still resolve.
         const auto number = [&](const std::string& word, double lo, double hi, const char* what) {
             double value = 0.0;
             if (const std::string problem = checkNumber(word, lo, hi, value); !problem.empty())
