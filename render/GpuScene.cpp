@@ -294,16 +294,25 @@ void GpuScene::orderFrontToBack()
         return std::make_pair(std::isnan(depth) ? std::numeric_limits<float>::max() : depth, draw.groupedIndex);
     };
     std::vector<std::pair<float, std::size_t>> batchKeys(batches_.size());
+    std::vector<std::pair<std::pair<float, std::size_t>, DrawItem>> keyed;  // each key computed once
     for (std::size_t b = 0; b < batches_.size(); ++b) {
         const auto first = draws_.begin() + static_cast<std::ptrdiff_t>(batches_[b].firstItem);
         const auto last = first + static_cast<std::ptrdiff_t>(batches_[b].itemCount);
-        // The instances of one draw are rasterised in order too. Light markers are small and
-        // stay in light order: sorting thousands of them every frame would cost more than it saves.
-        if (!first->markedLight)
-            std::sort(first, last, [&](const DrawItem& a, const DrawItem& c) { return key(a) < key(c); });
         float nearest = std::numeric_limits<float>::max();
-        for (auto item = first; item != last; ++item)
-            nearest = std::min(nearest, key(*item).first);
+        if (first->markedLight) {
+            // Light markers are small spheres that hide little; they stay in light order, so a
+            // frame of a million lights only takes their nearest depth.
+            for (auto item = first; item != last; ++item)
+                nearest = std::min(nearest, key(*item).first);
+        } else {
+            // The instances of one draw are rasterised in order too: sorted nearest first.
+            keyed.clear();
+            for (auto item = first; item != last; ++item)
+                keyed.emplace_back(key(*item), std::move(*item));
+            std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& c) { return a.first < c.first; });
+            std::transform(keyed.begin(), keyed.end(), first, [](auto& entry) { return std::move(entry.second); });
+            nearest = keyed.front().first.first;
+        }
         batchKeys[b] = {nearest, b};
     }
     std::sort(batchKeys.begin(), batchKeys.end());
