@@ -52,15 +52,16 @@ void addLightBatchDefines(gl::Defines& defines);
 
 // Light windows: a batch's lights as a uniform block (shaders/lib/lights.glsl, built with
 // LIGHT_WINDOW_BINDING) instead of the storage buffer, for passes where every pixel walks the
-// same lights in order (deferred) and for frames of one small batch (clustered). llvmpipe reads a uniform block with one vector gather per
-// value and a storage buffer lane by lane, testing each lane's bounds (a quarter of the
-// deferred lighting pass on LearnOpenGL's scene, docs/performance.md); a GPU broadcasts a
-// uniform read that every thread shares. A window is 64 KiB of lights, the uniform block size
-// of desktop drivers (GL guarantees only 16 KiB: lightWindowsSupported says), so such passes
-// take batches of kLightsPerWindow.
+// same lights in order (deferred) and for frames of one small batch (clustered). llvmpipe
+// reads a uniform block with one vector gather per value and a storage buffer lane by lane,
+// testing each lane's bounds (a quarter of the deferred lighting pass on LearnOpenGL's scene,
+// docs/performance.md); a GPU broadcasts a uniform read that every thread shares. A window is
+// 64 KiB of lights, the uniform block size of desktop drivers (GL guarantees only 16 KiB:
+// lightWindowsSupported says), so such passes take batches of kLightsPerWindow.
 inline constexpr std::size_t kLightWindowBytes = 64 * 1024;
 inline constexpr std::uint32_t kLightsPerWindow = 1024;  // GpuScene.cpp checks it fills the window
-inline constexpr unsigned kLightWindowBinding = 2;  // uniform buffer binding; 0 and 1 are lib/frame.glsl's and lib/shadows.glsl's
+// The window's uniform buffer binding (0 and 1 are lib/frame.glsl's and lib/shadows.glsl's).
+inline constexpr unsigned kLightWindowBinding = 2;
 // Whether a frame lit in `batches` can read its lights from one window: a single batch of at
 // most kLightsPerWindow. (Windows start at multiples of kLightsPerWindow; batches sized for
 // another budget, such as clustered's masks at 8192x4096, need not.)
