@@ -129,20 +129,31 @@ struct BrokenObj {
 
 std::ostream& operator<<(std::ostream& out, const BrokenObj& broken) { return out << broken.name; }
 
+// Writes the case's model.obj (and lib.mtl) into a fresh folder; returns the OBJ.
+fs::path writeCase(const BrokenObj& broken)
+{
+    const fs::path dir = scratch();
+    if (!broken.mtl.empty())
+        write(dir / "lib.mtl", broken.mtl);
+    return write(dir / "model.obj", broken.obj);
+}
+
+// Whether `message` starts by naming the OBJ, or the MTL beside it the problem is in.
+bool namesTheFile(const std::string& message, const fs::path& obj)
+{
+    return message.starts_with(obj.string()) || message.starts_with((obj.parent_path() / "lib.mtl").string());
+}
+
 class BrokenObjTest : public ::testing::TestWithParam<BrokenObj> {};
 
 TEST_P(BrokenObjTest, OneErrorLineNamingTheFile)
 {
     const BrokenObj& broken = GetParam();
-    const fs::path dir = scratch();
-    const fs::path obj = write(dir / "model.obj", broken.obj);
-    if (!broken.mtl.empty())
-        write(dir / "lib.mtl", broken.mtl);
+    const fs::path obj = writeCase(broken);
     const std::string message = errorOf([&] { loadObj(obj); });
     EXPECT_NE(message.find(broken.phrase), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    // The OBJ, or the MTL the problem is in.
-    EXPECT_TRUE(message.starts_with(obj.string()) || message.starts_with((dir / "lib.mtl").string())) << message;
+    EXPECT_TRUE(namesTheFile(message, obj)) << message;
 }
 
 const std::string kQuadWithLib = std::string("mtllib lib.mtl\n") + kQuad + "usemtl m\nf 1 2 3 4\n";
@@ -177,17 +188,14 @@ class ForgivenObjTest : public ::testing::TestWithParam<BrokenObj> {};
 TEST_P(ForgivenObjTest, LoadsWithOneWarningAndFailsWhenStrict)
 {
     const BrokenObj& forgiven = GetParam();
-    const fs::path dir = scratch();
-    const fs::path obj = write(dir / "model.obj", forgiven.obj);
-    if (!forgiven.mtl.empty())
-        write(dir / "lib.mtl", forgiven.mtl);
+    const fs::path obj = writeCase(forgiven);
     Warnings warnings;
     const Model model = loadObjModelFile(obj, warnings);
     EXPECT_FALSE(model.meshes.empty());
     ASSERT_EQ(warnings.messages().size(), 1u) << (warnings.messages().empty() ? "" : warnings.messages().front());
     const std::string& message = warnings.messages().front();
     EXPECT_NE(message.find(forgiven.phrase), std::string::npos) << message;
-    EXPECT_TRUE(message.starts_with(obj.string()) || message.starts_with((dir / "lib.mtl").string())) << message;
+    EXPECT_TRUE(namesTheFile(message, obj)) << message;
     Warnings strict(true);
     EXPECT_EQ(errorOf([&] { loadObjModelFile(obj, strict); }), message);
 }
