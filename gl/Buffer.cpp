@@ -1,6 +1,9 @@
 #include "gl/Buffer.h"
 
+#include <string>
+
 #include "core/Error.h"
+#include "gl/Debug.h"
 
 namespace manylights::gl {
 
@@ -20,6 +23,7 @@ Buffer::Buffer(std::string_view label, std::size_t bytes, const void* data, GLbi
     // Zero-sized storage is an error in GL; an empty buffer still gets one byte so that it
     // can be bound (a scene without local lights binds an empty light list).
     glNamedBufferStorage(id(), static_cast<GLsizeiptr>(bytes > 0 ? bytes : 1), bytes > 0 ? data : nullptr, flags);
+    throwIfOutOfMemory(std::to_string(bytes) + " bytes for the buffer '" + std::string(label) + "'");
 }
 
 void Buffer::update(std::size_t offset, std::size_t bytes, const void* data)

@@ -17,7 +17,8 @@ void installErrorCallback();
 // or a frame when no debug context is present.
 void checkNoError(const char* where);
 
-// After an allocation (texture or buffer storage): throws manylights::Error "out of memory
+// After every allocation of GL storage (gl::Texture2D, gl::MipmappedTexture2D, gl::Buffer, the
+// shadow-map arrays): throws manylights::Error "out of memory
 // allocating WHAT" if the driver reported GL_OUT_OF_MEMORY, which a user meets by asking for
 // an image too large for the machine; aborts on any other GL error, as checkNoError does.
 void throwIfOutOfMemory(const std::string& what);

@@ -1,6 +1,9 @@
 #include "gl/MipmappedTexture.h"
 
 #include <algorithm>
+#include <string>
+
+#include "gl/Debug.h"
 
 namespace manylights::gl {
 
@@ -42,6 +45,8 @@ MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFo
 {
     setLabel(GL_TEXTURE, id(), label);
     glTextureStorage2D(id(), levels_, internalFormat, width, height);
+    throwIfOutOfMemory("the " + std::to_string(width) + "x" + std::to_string(height) + " texture '" +
+                       std::string(label) + "'");
     // Rows of 4-byte texels: any width is aligned, whatever GL_UNPACK_ALIGNMENT says.
     glTextureSubImage2D(id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba8.data());
     // For sRGB storage GL recommends (but does not require) filtering the levels in linear

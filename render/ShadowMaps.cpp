@@ -6,9 +6,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/Error.h"
+#include "gl/Debug.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
-#include "core/Error.h"
 #include "scene/ShadowSelection.h"
 
 namespace manylights {
@@ -187,6 +188,8 @@ gl::GlObject<gl::detail::deleteTexture> makeDepthArray(GLenum target, std::strin
     gl::GlObject<gl::detail::deleteTexture> texture(name);
     gl::setLabel(GL_TEXTURE, name, label);
     glTextureStorage3D(name, 1, GL_DEPTH_COMPONENT24, size, size, layers);
+    gl::throwIfOutOfMemory(std::to_string(layers) + " shadow maps of " + std::to_string(size) + "x" +
+                           std::to_string(size) + " ('" + std::string(label) + "')");
     glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(name, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
