@@ -143,6 +143,10 @@ TEST(ModelFiles, MissingTextureIsAWarningAndStrictMakesItAnError)
     EXPECT_EQ(strict.exitCode, 1) << strict.stderrText;
     EXPECT_NE(strict.stderrText.find("map_Kd 'missing.png' not found"), std::string::npos) << strict.stderrText;
     EXPECT_FALSE(fs::exists(dir / "strict.png"));
+    // bench takes --strict the same way (it fails while loading, before any frame).
+    const test::ProcessResult bench = runExecutable({"bench", (dir / "scene.json").string(), "--strict"});
+    EXPECT_EQ(bench.exitCode, 1) << bench.stderrText;
+    EXPECT_NE(bench.stderrText.find("map_Kd 'missing.png' not found"), std::string::npos) << bench.stderrText;
 }
 
 // Debian's assimp-testmodels OBJ folder, files that assimp and most viewers open: every one
