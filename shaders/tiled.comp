@@ -1,14 +1,18 @@
 #version 450 core
 // tiled (Lauritzen, SIGGRAPH 2010): one workgroup per 16x16 tile. It finds the tile's
-// depth range among its surfaces, culls every light against the tile's frustum cut to that
-// range into a list in shared memory, and shades its pixels with that list. One dispatch per
-// light batch (lib/light_batch.glsl); the later ones add to the lit image. Loop iterations
-// per invocation: the culling loop (a batch / 256 ≤ 32, with the frustum's four planes), the
-// sort (≤ 55 stages of ≤ 4) and the shading loop (≤ one batch): under the bound of
-// render/LightBatches.h.
+// depth range among its surfaces, culls every light of the batch against the tile's frustum
+// cut to that range into a bit mask in shared memory (bit i: light lightBatch.x + i may reach
+// the tile), and shades its pixels by walking the mask. A mask rather than a list: it needs
+// no count, no capacity (a bit for every light of a batch: nothing can overflow) and no sort
+// (a pixel walks its lights in index order, the order forward adds them in, so the image is
+// the same on every run). One dispatch per light batch (lib/light_batch.glsl); the later
+// ones add to the lit image. Loop iterations per invocation: clearing the mask (1), the
+// culling loop (a batch / 256 ≤ 32, with the frustum's four planes) and the shading walk (one
+// per mask word and one per light of the batch): under the bound of render/LightBatches.h.
 #define LIGHTING_IN_COMPUTE 1
-#include "lib/lighting.glsl"
+// lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
+#include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/culling.glsl"
 
@@ -17,54 +21,24 @@ layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 #include "lib/tile_depth_range.glsl"
 layout(binding = 5) uniform sampler2D sceneDepth;
 layout(binding = 2, rgba32f) uniform image2D litImage;
-layout(std430, binding = 6) buffer TileStatistics {
-    uint overflowedTiles;  // tiles whose lights did not fit TILE_CAPACITY
-};
 
 const uint THREADS = uint(TILE_SIZE * TILE_SIZE);
-const uint NO_LIGHT = 0xFFFFFFFFu;
+const uint MASK_WORDS = uint(LIGHTS_PER_BATCH / 32);
+const uint SUMMARY_WORDS = (MASK_WORDS + 31u) / 32u;
 
-shared uint tileLightCount;
-shared uint tileLights[TILE_CAPACITY];
-
-// Sorts the shared list by light index (bitonic; the unused tail holds NO_LIGHT), so that
-// every pixel adds its lights in the order forward does, whatever order the threads
-// appended them in: the image is then the same on every run.
-void sortTileLights(uint count)
-{
-    uint size = 1u;
-    while (size < count)
-        size <<= 1u;
-    for (uint i = count + gl_LocalInvocationIndex; i < size; i += THREADS)
-        tileLights[i] = NO_LIGHT;
-    barrier();
-    for (uint block = 2u; block <= size; block <<= 1u) {
-        for (uint stride = block >> 1u; stride > 0u; stride >>= 1u) {
-            for (uint i = gl_LocalInvocationIndex; i < size; i += THREADS) {
-                uint partner = i ^ stride;
-                if (partner > i) {
-                    bool ascending = (i & block) == 0u;
-                    uint a = tileLights[i];
-                    uint b = tileLights[partner];
-                    if ((a > b) == ascending) {
-                        tileLights[i] = b;
-                        tileLights[partner] = a;
-                    }
-                }
-            }
-            barrier();
-        }
-    }
-}
+shared uint tileLightMask[MASK_WORDS];
+shared uint tileMaskSummary[SUMMARY_WORDS];  // bit w % 32 of word w / 32: mask word w is not empty
 
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     bool covered = all(lessThan(pixel, ivec2(frame.viewport.xy))) && texelFetch(sceneDepth, pixel, 0).r < 1.0;
-    if (gl_LocalInvocationIndex == 0u) {
+    if (gl_LocalInvocationIndex == 0u)
         clearTileDepthRange();
-        tileLightCount = 0u;
-    }
+    for (uint w = gl_LocalInvocationIndex; w < MASK_WORDS; w += THREADS)
+        tileLightMask[w] = 0u;
+    if (gl_LocalInvocationIndex < SUMMARY_WORDS)
+        tileMaskSummary[gl_LocalInvocationIndex] = 0u;
     barrier();
 
     Surface s;
@@ -78,36 +52,35 @@ void main()
 
     TileFrustum frustum = workgroupTileFrustum();
     for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
-        if (!lightMayReachTile(lights[i], frustum))
-            continue;
-        uint slot = atomicAdd(tileLightCount, 1u);
-        if (slot < uint(TILE_CAPACITY))
-            tileLights[slot] = i;
+        if (lightMayReachTile(batchLight(i), frustum)) {
+            uint bit = i - lightBatch.x;
+            atomicOr(tileLightMask[bit / 32u], 1u << (bit % 32u));
+            atomicOr(tileMaskSummary[bit / 1024u], 1u << (bit / 32u % 32u));
+        }
     }
     barrier();
-
-    uint count = tileLightCount;
-    bool overflowed = count > uint(TILE_CAPACITY);
-    if (overflowed && gl_LocalInvocationIndex == 0u)
-        atomicAdd(overflowedTiles, 1u);
-    if (!overflowed)
-        sortTileLights(count);
     if (!covered)
         return;
 
     vec3 V = viewVector(s.position);
     vec3 color = isFirstLightBatch() ? shadeGlobal(s, V) : vec3(0.0);
-    if (overflowed) {
-        // More lights reach the tile than its list holds: nothing is dropped, the tile's
-        // pixels evaluate every light of the batch instead (slow, and reported in --stats).
-        for (uint i = lightBatch.x; i < lightBatch.y; ++i)
-            color += shadeLocal(i, s, V);
-        recordLightEvaluationsAt(pixel, lightBatch.y - lightBatch.x);
-    } else {
-        for (uint i = 0u; i < count; ++i)
-            color += shadeLocal(tileLights[i], s, V);
-        recordLightEvaluationsAt(pixel, count);
+    uint summaryWords = (lightBatch.y - lightBatch.x + 1023u) / 1024u;
+    uint evaluated = 0u;
+    for (uint g = 0u; g < summaryWords; ++g) {
+        uint nonEmpty = tileMaskSummary[g];
+        while (nonEmpty != 0u) {
+            uint word = g * 32u + uint(findLSB(nonEmpty));
+            nonEmpty &= nonEmpty - 1u;
+            uint bits = tileLightMask[word];
+            while (bits != 0u) {
+                uint bit = uint(findLSB(bits));
+                bits &= bits - 1u;
+                color += shadeLocal(lightBatch.x + word * 32u + bit, s, V);
+                ++evaluated;
+            }
+        }
     }
+    recordLightEvaluationsAt(pixel, evaluated);
     if (!isFirstLightBatch())
         color += imageLoad(litImage, pixel).rgb;
     imageStore(litImage, pixel, vec4(color, 1.0));
