@@ -13,6 +13,26 @@
 
 namespace manylights {
 
+Image boxDownsample(const Image& image, int factor)
+{
+    ML_ASSERT(factor >= 1 && image.width % factor == 0 && image.height % factor == 0);
+    Image small;
+    small.width = image.width / factor;
+    small.height = image.height / factor;
+    small.rgb.resize(static_cast<std::size_t>(small.width) * small.height * 3);
+    const auto area = static_cast<float>(factor * factor);
+    for (int y = 0; y < small.height; ++y)
+        for (int x = 0; x < small.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float sum = 0.0f;
+                for (int dy = 0; dy < factor; ++dy)
+                    for (int dx = 0; dx < factor; ++dx)
+                        sum += image.pixel(x * factor + dx, y * factor + dy)[c];
+                small.pixel(x, y)[c] = sum / area;
+            }
+    return small;
+}
+
 unsigned char toByte(float value)
 {
     // NaN would otherwise be undefined in the conversion; it shows as black.

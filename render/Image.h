@@ -34,6 +34,11 @@ void writePng(const Image& image, const std::filesystem::path& path);
 // Reads a PFM written by writePfm (or any colour "PF" file). Throws manylights::Error.
 Image readPfm(const std::filesystem::path& path);
 
+// `image` with each `factor` x `factor` block averaged in linear light (a box filter; the
+// sizes must be multiples of `factor`): supersampled frames down to their output size, in the
+// box the display pass averages (shaders/display.frag), so both agree to rounding.
+Image boxDownsample(const Image& image, int factor);
+
 // round(255 · clamp(v, 0, 1)): the PNG encoding of one channel.
 unsigned char toByte(float value);
 

@@ -88,6 +88,12 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
             drawCoveredPixels(viewProgram_);
         }
     }
+    displayed_ = display_ && (view == ViewMode::Final || view == ViewMode::Volumes);
+    // The identity needs no pass: the lit image is then the picture (and a PNG of it is
+    // round(255 · clamp(colour, 0, 1)) exactly, as the contract's default look).
+    displayPassRan_ = displayed_ && (!display_->isIdentity() || supersample_ > 1);
+    if (displayPassRan_)
+        displayPass_.run(targets_->lit, *display_, supersample_, profiler_);
     FrameSample sample = profiler_.endFrame();
     if (countWork_)
         countWork();
@@ -122,6 +128,19 @@ std::vector<T> readTopDown(const gl::Texture2D& texture, GLenum format, GLenum t
     for (std::size_t y = 0; y < height; ++y)
         std::copy_n(&bottomUp[row * (height - 1 - y)], row, &topDown[row * y]);
     return topDown;
+}
+
+// The RGB of an RGBA32F texture as an Image.
+Image readRgb(const gl::Texture2D& texture)
+{
+    Image image;
+    image.width = texture.width();
+    image.height = texture.height();
+    image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
+    const std::vector<float> rgba = readTopDown<float>(texture, GL_RGBA, GL_FLOAT, 4);
+    for (std::size_t i = 0; i < rgba.size() / 4; ++i)
+        std::copy_n(&rgba[i * 4], 3, &image.rgb[i * 3]);
+    return image;
 }
 
 std::uint64_t sumOfTexels(const gl::Texture2D& texture)
@@ -188,21 +207,37 @@ void Renderer::drawVolumeOverlay()
 
 Image Renderer::readColour() const
 {
+    if (lastView_ != ViewMode::LightCount)
+        return readRgb(targets_->lit);
     Image image;
     image.width = targets_->width;
     image.height = targets_->height;
     image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
-    if (lastView_ == ViewMode::LightCount) {
-        const std::vector<std::uint32_t> counts =
-            readTopDown<std::uint32_t>(targets_->lightEvaluations, GL_RED_INTEGER, GL_UNSIGNED_INT, 1);
-        for (std::size_t i = 0; i < counts.size(); ++i)
-            std::fill_n(&image.rgb[i * 3], 3, static_cast<float>(counts[i]));
-    } else {
-        const std::vector<float> rgba = readTopDown<float>(targets_->lit, GL_RGBA, GL_FLOAT, 4);
-        for (std::size_t i = 0; i < rgba.size() / 4; ++i)
-            std::copy_n(&rgba[i * 4], 3, &image.rgb[i * 3]);
-    }
+    const std::vector<std::uint32_t> counts =
+        readTopDown<std::uint32_t>(targets_->lightEvaluations, GL_RED_INTEGER, GL_UNSIGNED_INT, 1);
+    for (std::size_t i = 0; i < counts.size(); ++i)
+        std::fill_n(&image.rgb[i * 3], 3, static_cast<float>(counts[i]));
     return image;
+}
+
+void Renderer::setDisplay(const DisplaySettings& settings, int supersample)
+{
+    ML_ASSERT(supersample >= 1 && width() % supersample == 0 && height() % supersample == 0);
+    display_ = settings;
+    supersample_ = supersample;
+}
+
+Image Renderer::readDisplayed() const
+{
+    ML_ASSERT(displayed_);
+    return readRgb(displayPassRan_ ? displayPass_.output() : targets_->lit);
+}
+
+const gl::Framebuffer* Renderer::displayedFramebuffer() const
+{
+    if (!displayed_)
+        return nullptr;
+    return displayPassRan_ ? &displayPass_.outputFramebuffer() : &targets_->litFramebuffer;
 }
 
 std::vector<bool> Renderer::readCoverage() const

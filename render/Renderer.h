@@ -4,9 +4,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gl/Program.h"
+#include "render/DisplayPass.h"
 #include "render/GpuScene.h"
 #include "render/Image.h"
 #include "render/PassProfiler.h"
@@ -69,6 +71,18 @@ public:
     // Which pixels of the last frame hold a surface.
     std::vector<bool> readCoverage() const;
 
+    // The display pass (render/DisplayPass.h): once set, every frame of the Final and Volumes
+    // views ends with it, timed as its own passes. `supersample` must divide the size; the
+    // displayed picture is the size divided by it.
+    void setDisplay(const DisplaySettings& settings, int supersample = 1);
+    // The last frame's displayed picture (display-encoded, rows top to bottom; 8-bit values
+    // as v / 255 after a display pass, the lit image itself where the settings are the
+    // identity); needs setDisplay and a Final or Volumes frame.
+    Image readDisplayed() const;
+    // The displayed picture as a framebuffer, for the viewer to blit; null before the first
+    // displayed frame.
+    const gl::Framebuffer* displayedFramebuffer() const;
+
     // Shadows (the viewer's switches and the --shadow-lights budget) and ambient occlusion
     // (on when the scene enables it; the viewer may change any setting).
     ShadowMaps& shadowMaps() { return shadowMaps_; }
@@ -101,6 +115,11 @@ private:
     bool inRangeBruteForce_ = false;
     WorkCounts workCounts_;
     ViewMode lastView_ = ViewMode::Final;
+    std::optional<DisplaySettings> display_;
+    int supersample_ = 1;
+    DisplayPass displayPass_;
+    bool displayed_ = false;       // the last frame has a displayed picture
+    bool displayPassRan_ = false;  // ... made by the display pass (not the identity)
 };
 
 }  // namespace manylights

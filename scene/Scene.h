@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/Animation.h"
+#include "scene/DisplaySettings.h"
 #include "scene/Revolution.h"
 
 namespace manylights {
@@ -208,6 +209,7 @@ struct Scene {
     glm::vec3 ambient{0.0f};
     std::optional<DirectionalLight> directional;
     AmbientOcclusion ssao;
+    DisplaySettings display;  // `display` in the scene file: how 8-bit outputs and the window show it
     float attenuationThreshold = kDefaultAttenuationThreshold;
     std::vector<Light> lights;       // explicit lights
     std::vector<NamedCamera> cameras;  // from model files, in the order they were loaded

@@ -420,7 +420,7 @@ public:
         if (!root.is_object())
             fail(top, "the top level must be a JSON object, got " + describeType(root));
         expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights",
-                         "light_sets", "materials", "objects", "light_markers", "ssao"});
+                         "light_sets", "materials", "objects", "light_markers", "ssao", "display"});
         if (const auto node = member(top, "camera"))
             readCamera(*node);
         if (const auto node = member(top, "background"))
@@ -431,6 +431,8 @@ public:
             scene_.directional = readDirectional(*node);
         if (const auto node = member(top, "ssao"))
             scene_.ssao = readAmbientOcclusion(*node);
+        if (const auto node = member(top, "display"))
+            scene_.display = readDisplay(*node);
         if (const auto node = member(top, "attenuation_threshold"))
             scene_.attenuationThreshold = positive(*node);
         if (const auto node = member(top, "lights")) {
@@ -614,6 +616,18 @@ private:
         return node.json->get<std::string>();
     }
 
+    // A string that must be one of `names`; an unknown one is named with the closest.
+    std::string oneOf(const Node& node, const std::vector<std::string>& names) const
+    {
+        const std::string value = string(node);
+        if (std::find(names.begin(), names.end(), value) == names.end()) {
+            const auto guess = closest(value, names);
+            fail(node, "unknown value " + quote(value) +
+                           (guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(names) + ")"));
+        }
+        return value;
+    }
+
     bool boolean(const Node& node) const
     {
         if (!node.json->is_boolean())
@@ -743,6 +757,24 @@ private:
         if (const auto shadows = member(node, "shadows"))
             light.shadows = boolean(*shadows);
         return light;
+    }
+
+    DisplaySettings readDisplay(const Node& node) const
+    {
+        expectKeys(node, {"exposure", "tonemap", "srgb", "aa"});
+        DisplaySettings display;
+        if (const auto exposure = member(node, "exposure")) {
+            display.exposure = number(*exposure);
+            if (std::abs(display.exposure) > kMaxExposureStops)
+                fail(*exposure, "must be in [-32, 32] stops, got " + describeValue(*exposure->json));
+        }
+        if (const auto tonemap = member(node, "tonemap"))
+            display.toneCurve = *parseToneCurve(oneOf(*tonemap, toneCurveNames()));
+        if (const auto srgb = member(node, "srgb"))
+            display.srgb = boolean(*srgb);
+        if (const auto aa = member(node, "aa"))
+            display.antialiasing = *parseAntialiasing(oneOf(*aa, antialiasingNames()));
+        return display;
     }
 
     AmbientOcclusion readAmbientOcclusion(const Node& node) const

@@ -11,6 +11,7 @@ packages=(
   libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libimgui-dev xvfb xauth imagemagick ffmpeg
   libtinygltf-dev assimp-testmodels clang libclang-rt-dev
+  libopenexr-dev openexr
 )
 
 missing=()

@@ -32,7 +32,7 @@ int runCli(int argc, const char* const* argv)
     std::string gbufferLayout(gbufferLayoutName(kDefaultGBufferLayout));
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to an image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON); the built-in default scene if absent");
-    renderCommand->add_option("-o,--output", render.output, "Output image: .png or .pfm")->required();
+    renderCommand->add_option("-o,--output", render.output, "Output image: .png, .pfm or .exr")->required();
     renderCommand->add_option("--size", size, "Image size WxH")->capture_default_str();
     renderCommand->add_option("--technique", render.technique, "Lighting technique")
         ->check(CLI::IsMember(techniqueNames()))
@@ -72,6 +72,15 @@ int runCli(int argc, const char* const* argv)
     addCameraOptions(*renderCommand, render.camera);
     renderCommand->add_flag("--strict", render.strict,
                             "Treat what model files get forgiven (warnings) as errors");
+    addDisplayOptions(*renderCommand, render.display);
+    renderCommand
+        ->add_option("--supersample", render.supersample,
+                     "Render N x N pixels per output pixel and box-filter them down in linear light")
+        ->check(CLI::Range(1, kMaxSupersample))
+        ->capture_default_str();
+    renderCommand->add_flag("--exr-float", render.exrFloat, "Write EXR channels as 32-bit floats instead of half");
+    renderCommand->add_flag("--aovs", render.aovs,
+                            "Add the G-buffer quantities (position, normal, ..., ssao) as layers of the EXR output");
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 
@@ -111,11 +120,23 @@ int runCli(int argc, const char* const* argv)
             return usageError(problem);
         render.timeRange = range;
     }
-    if (!hasExtension(render.output, ".png") && !hasExtension(render.output, ".pfm"))
-        return usageError("the output must end in .png or .pfm, got '" + render.output + "'");
+    const bool eightBit = hasExtension(render.output, ".png");
+    const bool exr = hasExtension(render.output, ".exr");
+    if (!eightBit && !exr && !hasExtension(render.output, ".pfm"))
+        return usageError("the output must end in .png, .pfm or .exr, got '" + render.output + "'");
+    const DisplayOptions& display = render.display;
+    if (!eightBit && (display.exposure || display.toneCurve || display.srgb || display.antialiasing))
+        return usageError("--exposure, --tonemap, --srgb, --no-srgb and --aa apply to .png outputs; .pfm and .exr "
+                          "stay linear");
+    if (!exr && (render.exrFloat || render.aovs))
+        return usageError("--exr-float and --aovs apply to .exr outputs");
     if (!render.statsPath.empty() && sameFile(render.output, render.statsPath))
         return usageError("--stats and -o name the same file '" + render.output + "'");
     render.view = *parseViewMode(view);
+    if (render.supersample > 1 && render.view != ViewMode::Final && render.view != ViewMode::Volumes)
+        return usageError("--supersample applies to the final and volumes views, not '" + view + "'");
+    if (render.aovs && render.view != ViewMode::Final)
+        return usageError("--aovs adds the G-buffer views to the final image; it does not combine with --view " + view);
     render.gbufferLayout = *parseGBufferLayout(gbufferLayout);
 
     return reportingErrors([&] { runRender(render); },

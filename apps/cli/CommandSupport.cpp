@@ -116,6 +116,40 @@ void addCameraOptions(CLI::App& command, CameraOptions& options)
         ->check(numberIn(0.001, 179.999));
 }
 
+void addDisplayOptions(CLI::App& command, DisplayOptions& options)
+{
+    command
+        .add_option_function<double>(
+            "--exposure", [&options](double stops) { options.exposure = static_cast<float>(stops); },
+            "Exposure in stops: the linear colour times 2^EV before the tone curve (default: the scene's, else 0)")
+        ->check(numberIn(-kMaxExposureStops, kMaxExposureStops));
+    command
+        .add_option_function<std::string>(
+            "--tonemap", [&options](const std::string& name) { options.toneCurve = parseToneCurve(name); },
+            "Tone curve of 8-bit outputs and the window (default: the scene's, else none)")
+        ->check(CLI::IsMember(toneCurveNames()));
+    CLI::Option* srgb = command.add_flag_callback(
+        "--srgb", [&options] { options.srgb = true; }, "Encode 8-bit outputs and the window with the sRGB curve");
+    CLI::Option* noSrgb = command.add_flag_callback(
+        "--no-srgb", [&options] { options.srgb = false; }, "Write 8-bit outputs linear, without the sRGB curve");
+    srgb->excludes(noSrgb);
+    command
+        .add_option_function<std::string>(
+            "--aa", [&options](const std::string& name) { options.antialiasing = parseAntialiasing(name); },
+            "Anti-aliasing of 8-bit outputs and the window (default: the scene's, else none)")
+        ->check(CLI::IsMember(antialiasingNames()));
+}
+
+DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options)
+{
+    DisplaySettings settings = scene.display;
+    settings.exposure = options.exposure.value_or(settings.exposure);
+    settings.toneCurve = options.toneCurve.value_or(settings.toneCurve);
+    settings.srgb = options.srgb.value_or(settings.srgb);
+    settings.antialiasing = options.antialiasing.value_or(settings.antialiasing);
+    return settings;
+}
+
 Camera chooseCamera(const Scene& scene, const CameraOptions& options)
 {
     Camera camera = scene.camera;

@@ -15,6 +15,7 @@
 #include "core/Error.h"
 
 #include "render/ShadowMaps.h"  // kMaxShadowLights
+#include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
 
 namespace CLI {
@@ -94,6 +95,18 @@ void addCameraOptions(CLI::App& command, CameraOptions& options);
 Camera chooseCamera(const Scene& scene, const CameraOptions& options);
 // The command line that gives `camera`: "--eye X,Y,Z --look-at X,Y,Z --up X,Y,Z --fov-y D".
 std::string cameraCommandLine(const Camera& camera);
+
+// The display options of render, bench and view (docs/display.md): each replaces the
+// scene's `display` setting when given.
+struct DisplayOptions {
+    std::optional<float> exposure;             // --exposure EV
+    std::optional<ToneCurve> toneCurve;        // --tonemap NAME
+    std::optional<bool> srgb;                  // --srgb / --no-srgb
+    std::optional<Antialiasing> antialiasing;  // --aa NAME
+};
+void addDisplayOptions(CLI::App& command, DisplayOptions& options);
+// The scene's display settings with `options` applied.
+DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options);
 
 // The scene at `path` (the built-in default scene when empty), with --strict passed on and the
 // camera options applied; every problem the loading forgave is printed on stderr as

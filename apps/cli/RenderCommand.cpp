@@ -11,6 +11,7 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
+#include "render/ExrFile.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
 
@@ -82,13 +83,51 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     return stats;
 }
 
-// The renderer's last frame encoded for `path` (.pfm as floats, .png displayable).
-std::string encodeLastFrame(const Renderer& renderer, ViewMode view, const std::string& path)
+// The layers --aovs adds to an EXR file: each G-buffer view under its --view name, with
+// the channel names compositing tools expect for its kind of quantity.
+struct AovLayer {
+    ViewMode view;
+    std::vector<std::string> channels;
+};
+const std::vector<AovLayer>& aovLayers()
 {
-    Image image = renderer.readColour();
-    if (!hasExtension(path, ".pfm") && view != ViewMode::Final && view != ViewMode::Volumes)
-        image = displayableView(image, view, renderer.readCoverage());
-    return encodeImage(image, path);
+    static const std::vector<AovLayer> layers{
+        {ViewMode::Position, {"X", "Y", "Z"}}, {ViewMode::Normal, {"X", "Y", "Z"}},
+        {ViewMode::Diffuse, {"R", "G", "B"}},  {ViewMode::Specular, {"R", "G", "B"}},
+        {ViewMode::Emissive, {"R", "G", "B"}}, {ViewMode::Depth, {"Z"}},
+        {ViewMode::LightCount, {"Y"}},         {ViewMode::Shadow, {"Y"}},
+        {ViewMode::Ssao, {"Y"}},
+    };
+    return layers;
+}
+
+// The renderer's last frame encoded for `path`: .pfm and .exr as linear floats (box-filtered
+// down when supersampled), .png through the display pass (the final and volumes views) or as
+// the view's displayable image. --aovs renders each G-buffer view after the frame and adds it
+// to the EXR file.
+std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options,
+                            const std::string& path)
+{
+    const ViewMode view = options.view;
+    if (hasExtension(path, ".png")) {
+        if (view == ViewMode::Final || view == ViewMode::Volumes)
+            return encodePng(renderer.readDisplayed());
+        return encodePng(displayableView(renderer.readColour(), view, renderer.readCoverage()));
+    }
+    const Image linear = boxDownsample(renderer.readColour(), options.supersample);
+    if (hasExtension(path, ".pfm"))
+        return encodePfm(linear);
+    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, linear}};
+    if (options.aovs) {
+        for (const AovLayer& aov : aovLayers()) {
+            renderer.renderFrame(technique, aov.view);
+            layers.push_back(
+                {std::string(viewModeName(aov.view)), aov.channels, boxDownsample(renderer.readColour(), options.supersample)});
+        }
+        // Leave the renderer showing the frame itself again.
+        renderer.renderFrame(technique, view);
+    }
+    return encodeExr(layers, options.exrFloat ? ExrPixels::Float : ExrPixels::Half);
 }
 
 // Every frame of the time range, each written atomically under its own name as soon as it is
@@ -102,7 +141,7 @@ void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions&
         renderer.setTime(recordingFrameTime(range, options.fps, frame));
         renderer.renderFrame(technique, options.view);
         const std::string path = formatFramePath(options.output, frame);
-        writeFileAtomically(path, "image", encodeLastFrame(renderer, options.view, path));
+        writeFileAtomically(path, "image", encodeLastFrame(renderer, technique, options, path));
         printRecordingProgress(frame + 1, count);
     }
 }
@@ -131,10 +170,14 @@ void runRender(const RenderOptions& options)
     const std::vector<Light> lights = expandLights(scene, options.lights);
 
     HeadlessContext context({.debug = defaultDebugContext()});
-    Renderer renderer(scene, lights, options.width, options.height, options.gbufferLayout);
+    Renderer renderer(scene, lights, options.width * options.supersample, options.height * options.supersample,
+                      options.gbufferLayout);
+    const DisplaySettings display = chooseDisplay(scene, options.display);
+    if (hasExtension(options.output, ".png"))
+        renderer.setDisplay(display, options.supersample);
     renderer.setTime(options.time);
     renderer.setAnisotropy(options.anisotropy);
-    const bool countWork = options.countWork || options.view == ViewMode::LightCount;
+    const bool countWork = options.countWork || options.view == ViewMode::LightCount || options.aovs;
     renderer.setCountWork(countWork);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
@@ -171,12 +214,18 @@ void runRender(const RenderOptions& options)
 
     // The image and the statistics appear together or not at all.
     AtomicFileSet outputs;
-    outputs.stage(options.output, "image", encodeLastFrame(renderer, options.view, options.output));
+    // The work counts before --aovs renders its views.
+    const WorkCounts work = renderer.lastWorkCounts();
+    outputs.stage(options.output, "image", encodeLastFrame(renderer, *technique, options, options.output));
     if (measuring) {
-        const WorkCounts* work = countWork ? &renderer.lastWorkCounts() : nullptr;
-        nlohmann::json stats =
-            statisticsJson(options, scene, lights.size(), frames, context.description(),
-                           renderer.anisotropy(), *technique, work);
+        nlohmann::json stats = statisticsJson(options, scene, lights.size(), frames, context.description(),
+                                              renderer.anisotropy(), *technique, countWork ? &work : nullptr);
+        stats["display"] = {{"exposure", display.exposure},
+                            {"tonemap", std::string(toneCurveName(display.toneCurve))},
+                            {"srgb", display.srgb},
+                            {"aa", std::string(antialiasingName(display.antialiasing))},
+                            {"supersample", options.supersample},
+                            {"applied", hasExtension(options.output, ".png")}};
         stats["load_ms"] = loadMs;
         outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }

@@ -33,6 +33,10 @@ struct RenderOptions {
     bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
     bool strict = false;          // model files' forgiven problems are errors (--strict)
     CameraOptions camera;         // --camera, --eye, --look-at, --up, --fov-y
+    DisplayOptions display;       // --exposure, --tonemap, --srgb, --aa (8-bit outputs)
+    int supersample = 1;          // --supersample N: render N x N pixels per output pixel
+    bool exrFloat = false;        // --exr-float: 32-bit float EXR channels instead of half
+    bool aovs = false;            // --aovs: the G-buffer quantities as further EXR layers
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -1,0 +1,92 @@
+#include "render/DisplayPass.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/Error.h"
+
+namespace manylights {
+
+namespace {
+// Uniform locations of shaders/display.frag.
+constexpr GLint kExposureScaleLocation = 0;
+constexpr GLint kSupersampleLocation = 1;
+
+// Runs `program` once for every pixel of the bound framebuffer.
+void drawEveryPixel(const gl::Program& program)
+{
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    program.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
+}
+}  // namespace
+
+const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb)
+{
+    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb});
+    if (inserted) {
+        gl::Defines defines{{"TONE_CURVE", std::to_string(static_cast<int>(curve))}};
+        if (srgb)
+            defines.emplace_back("SRGB_ENCODE", "1");
+        found->second = gl::Program("display transform",
+                                    {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}, defines);
+    }
+    return found->second;
+}
+
+void DisplayPass::resize(int width, int height)
+{
+    if (transformed_.width() == width && transformed_.height() == height)
+        return;
+    antialiasedFramebuffer_ = gl::Framebuffer();
+    antialiasedOutput_ = gl::Texture2D();
+    transformedFramebuffer_ = gl::Framebuffer();
+    transformed_ = gl::Texture2D("display", GL_RGBA8, width, height);
+    // FXAA samples it between texels.
+    glTextureParameteri(transformed_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(transformed_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(transformed_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(transformed_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    transformedFramebuffer_ = gl::Framebuffer("display", {&transformed_}, nullptr);
+    antialiasedOutput_ = gl::Texture2D("display anti-aliased", GL_RGBA8, width, height);
+    antialiasedFramebuffer_ = gl::Framebuffer("display anti-aliased", {&antialiasedOutput_}, nullptr);
+}
+
+void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample,
+                      PassProfiler& profiler)
+{
+    ML_ASSERT(supersample >= 1 && supersample <= kMaxSupersample);
+    ML_ASSERT(lit.width() % supersample == 0 && lit.height() % supersample == 0);
+    const int width = lit.width() / supersample;
+    const int height = lit.height() / supersample;
+    resize(width, height);
+    {
+        auto pass = profiler.pass("display");
+        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb);
+        program.set(kExposureScaleLocation, std::exp2(settings.exposure));
+        program.set(kSupersampleLocation, supersample);
+        // The lit image was written by draws or image stores.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        lit.bindUnit(0);
+        transformedFramebuffer_.bind();
+        glViewport(0, 0, width, height);
+        emptyVertexArray_.bind();
+        drawEveryPixel(program);
+    }
+    antialiased_ = settings.antialiasing == Antialiasing::Fxaa;
+    if (antialiased_) {
+        auto pass = profiler.pass("fxaa");
+        if (!fxaaProgram_)
+            fxaaProgram_ =
+                gl::Program("fxaa", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa.frag"}});
+        transformed_.bindUnit(0);
+        antialiasedFramebuffer_.bind();
+        drawEveryPixel(fxaaProgram_);
+    }
+    glViewport(0, 0, lit.width(), lit.height());
+}
+
+}  // namespace manylights

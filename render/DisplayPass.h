@@ -1,0 +1,48 @@
+// The display pass: the lit image of any technique to the picture a screen or an 8-bit file
+// shows (docs/display.md). One full-screen pass box-filters supersampled frames down in linear
+// light and applies exposure, the tone curve and the sRGB encoding (shaders/display.frag);
+// an optional second one anti-aliases the result (shaders/fxaa.frag). Both run after
+// lighting, so every technique stays equal to forward before them.
+#pragma once
+
+#include <map>
+#include <utility>
+
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "render/PassProfiler.h"
+#include "scene/DisplaySettings.h"
+
+namespace manylights {
+
+class DisplayPass {
+public:
+    // `lit`'s size divided by `supersample` (which must divide it) is the output's size.
+    void run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample, PassProfiler& profiler);
+
+    // The last run's picture: RGBA8, display-encoded (alpha: luma, for FXAA); its framebuffer
+    // is for blitting to a window. 8 bits because that is what every consumer shows, and
+    // FXAA's taps of it cost half of float ones on llvmpipe (docs/performance.md).
+    const gl::Texture2D& output() const { return antialiased_ ? antialiasedOutput_ : transformed_; }
+    const gl::Framebuffer& outputFramebuffer() const
+    {
+        return antialiased_ ? antialiasedFramebuffer_ : transformedFramebuffer_;
+    }
+
+private:
+    const gl::Program& transformProgram(ToneCurve curve, bool srgb);
+    void resize(int width, int height);
+
+    std::map<std::pair<ToneCurve, bool>, gl::Program> transformPrograms_;  // made on first use
+    gl::Program fxaaProgram_;                                              // made on first use
+    gl::VertexArray emptyVertexArray_{"display pass"};  // the full-screen triangle needs no attributes
+    gl::Texture2D transformed_;
+    gl::Framebuffer transformedFramebuffer_;
+    gl::Texture2D antialiasedOutput_;
+    gl::Framebuffer antialiasedFramebuffer_;
+    bool antialiased_ = false;
+};
+
+}  // namespace manylights
