@@ -89,4 +89,22 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
     glViewport(0, 0, lit.width(), lit.height());
 }
 
+float DisplayPass::logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth)
+{
+    if (!luminanceProgram_) {
+        luminanceProgram_ = gl::Program("log-average luminance", {{GL_COMPUTE_SHADER, "log_luminance.comp"}});
+        luminance_ = gl::Buffer("log-average luminance", sizeof(float), nullptr);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    lit.bindUnit(0);
+    depth.bindUnit(1);
+    luminance_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    luminanceProgram_.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    float value = 0.0f;
+    glGetNamedBufferSubData(luminance_.id(), 0, sizeof(value), &value);
+    return value;
+}
+
 }  // namespace manylights

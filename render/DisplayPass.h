@@ -8,6 +8,7 @@
 #include <map>
 #include <utility>
 
+#include "gl/Buffer.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
@@ -31,6 +32,11 @@ public:
         return antialiased_ ? antialiasedFramebuffer_ : transformedFramebuffer_;
     }
 
+    // The log-average luminance of `lit` where `depth` holds a surface (shaders/
+    // log_luminance.comp, on a grid of points), for auto-exposure: an exposure of
+    // log2(0.18 / it) maps the average to middle grey. Waits for the GPU to read it back.
+    float logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth);
+
 private:
     const gl::Program& transformProgram(ToneCurve curve, bool srgb);
     void resize(int width, int height);
@@ -43,6 +49,8 @@ private:
     gl::Texture2D antialiasedOutput_;
     gl::Framebuffer antialiasedFramebuffer_;
     bool antialiased_ = false;
+    gl::Program luminanceProgram_;  // made on first use
+    gl::Buffer luminance_;
 };
 
 }  // namespace manylights

@@ -79,6 +79,9 @@ public:
     // as v / 255 after a display pass, the lit image itself where the settings are the
     // identity); needs setDisplay and a Final or Volumes frame.
     Image readDisplayed() const;
+    // The log-average luminance of the last frame's surfaces (DisplayPass::logAverageLuminance),
+    // for auto-exposure.
+    float logAverageLuminance() { return displayPass_.logAverageLuminance(targets_->lit, targets_->depthStencil); }
     // The displayed picture as a framebuffer, for the viewer to blit; null before the first
     // displayed frame.
     const gl::Framebuffer* displayedFramebuffer() const;

@@ -34,6 +34,7 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
     app.add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(app, options.camera);
+    addDisplayOptions(app, options.display);
     app.add_option("--shader-dir", options.shaderDirectory,
                    "Compile shaders from this directory and reload them when they change ('' for the embedded ones)")
         ->capture_default_str();

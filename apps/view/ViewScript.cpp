@@ -105,8 +105,8 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
         } else if (name == "toggle") {
             expectArgs(1, "what to toggle");
             command.kind = ScriptCommand::Kind::Toggle;
-            const std::vector<std::string> toggles{"ambient", "diffuse",   "specular", "axes",
-                                                   "wireframe", "shadows", "ssao",     "panel"};
+            const std::vector<std::string> toggles{"ambient", "diffuse", "specular", "axes",         "wireframe",
+                                                   "shadows", "ssao",    "panel",    "auto-exposure"};
             if (!contains(toggles, args[0]))
                 fail("cannot toggle '" + args[0] + "' (expected one of: " + join(toggles) + ")");
         } else if (name == "key") {

@@ -139,6 +139,14 @@ private:
     bool directionalShadows_ = true;  // where the scene's directional light asks for them
     int shadowLights_ = 0;            // local lights with shadow maps (--shadow-lights)
     bool quit_ = false;
+    // The display settings (the scene's, then the command line's; the panel edits them).
+    // With auto-exposure the exposure follows the lit image's log-average luminance, adapting
+    // over about a second as an eye does, instead of the slider's.
+    DisplaySettings display_;
+    bool autoExposure_ = false;
+    float adaptedExposure_ = 0.0f;
+    double frameSeconds_ = 0.0;  // wall time since the previous frame
+    void adaptExposure();
 
     std::deque<float> frameMs_;
     FrameSample lastSample_;
@@ -202,6 +210,8 @@ Viewer::Viewer(const ViewOptions& options)
     int height = 0;
     glfwGetFramebufferSize(window_.window(), &width, &height);
     renderer_ = std::make_unique<Renderer>(scene_, lights_, std::max(width, 1), std::max(height, 1));
+    display_ = chooseDisplay(scene_, options.display);
+    adaptedExposure_ = display_.exposure;
     axesProgram_ = gl::Program("axes", {{GL_VERTEX_SHADER, "axes.vert"}, {GL_FRAGMENT_SHADER, "axes.frag"}});
 
     GLFWwindow* window = window_.window();
@@ -405,6 +415,7 @@ void Viewer::runScript()
                          : what == "wireframe" ? wireframe_
                          : what == "shadows"   ? directionalShadows_
                          : what == "ssao"      ? renderer_->ambientOcclusion().enabled
+                         : what == "auto-exposure" ? autoExposure_
                                                : panel_;
             flag = !flag;
             break;
@@ -475,6 +486,18 @@ void Viewer::resizeIfNeeded()
         renderer_->resize(width, height);  // the G-buffer and every size-dependent target
 }
 
+void Viewer::adaptExposure()
+{
+    if (!autoExposure_ || lastSample_.passes.empty())  // no frame yet to measure
+        return;
+    // Reinhard et al. 2002's key: the log-average maps to middle grey, 0.18.
+    const float average = renderer_->logAverageLuminance();
+    const float target = std::clamp(std::log2(0.18f / std::max(average, 1e-6f)), -kMaxExposureStops, kMaxExposureStops);
+    constexpr double kAdaptationSeconds = 0.7;  // time constant of the exponential approach
+    const auto step = static_cast<float>(1.0 - std::exp(-frameSeconds_ / kAdaptationSeconds));
+    adaptedExposure_ += (target - adaptedExposure_) * step;
+}
+
 void Viewer::renderScene()
 {
     renderer_->refreshCamera();
@@ -483,6 +506,11 @@ void Viewer::renderScene()
     renderer_->shadowMaps().setDirectionalShadows(directionalShadows_);
     renderer_->shadowMaps().setLocalLightBudget(shadowLights_);
     renderer_->setCountWork(view_ == ViewMode::LightCount);
+    adaptExposure();
+    DisplaySettings shown = display_;
+    if (autoExposure_)
+        shown.exposure = adaptedExposure_;
+    renderer_->setDisplay(shown);
     Technique& current = technique();
     // Only the final image: the G-buffer views draw full-screen triangles that must stay filled.
     if (wireframe_ && view_ == ViewMode::Final)
@@ -494,8 +522,9 @@ void Viewer::renderScene()
         frameMs_.pop_front();
 }
 
-// The frame into the window: the lit image as it is (the 8-bit window clamps it exactly as
-// the PNG writer does), or the view's displayable image as `render --view` writes it.
+// The frame into the window: the displayed picture (the display pass's, or the lit image as
+// it is where the settings are the identity: the 8-bit window clamps it exactly as the PNG
+// writer does), or the view's displayable image as `render --view` writes it.
 void Viewer::showImage()
 {
     const int width = renderer_->width();
@@ -504,7 +533,7 @@ void Viewer::showImage()
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
     if (view_ == ViewMode::Final || view_ == ViewMode::Volumes) {
-        glBlitNamedFramebuffer(renderer_->targets().litFramebuffer.id(), 0, 0, 0, width, height, 0, 0, width, height,
+        glBlitNamedFramebuffer(renderer_->displayedFramebuffer()->id(), 0, 0, 0, width, height, 0, 0, width, height,
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
         return;
     }
@@ -601,6 +630,27 @@ void Viewer::drawPanel()
         printCamera();
 
     ImGui::Separator();
+    ImGui::Checkbox("auto exposure", &autoExposure_);
+    if (autoExposure_) {
+        ImGui::SameLine();
+        ImGui::Text("%+.2f EV", adaptedExposure_);
+    } else {
+        ImGui::SliderFloat("exposure (EV)", &display_.exposure, -8.0f, 8.0f, "%+.2f");
+    }
+    const std::string curveName(toneCurveName(display_.toneCurve));
+    if (ImGui::BeginCombo("tone curve", curveName.c_str())) {
+        for (const std::string& name : toneCurveNames())
+            if (ImGui::Selectable(name.c_str(), name == curveName))
+                display_.toneCurve = *parseToneCurve(name);
+        ImGui::EndCombo();
+    }
+    ImGui::Checkbox("sRGB", &display_.srgb);
+    ImGui::SameLine();
+    bool fxaa = display_.antialiasing == Antialiasing::Fxaa;
+    if (ImGui::Checkbox("FXAA", &fxaa))
+        display_.antialiasing = fxaa ? Antialiasing::Fxaa : Antialiasing::None;
+
+    ImGui::Separator();
     ImGui::Checkbox("pause (P)", &paused_);
     ImGui::SameLine();
     ImGui::Text("t = %.2f s", time_);
@@ -646,6 +696,7 @@ void Viewer::run()
         const double now = glfwGetTime();
         const double elapsed = now - last;
         last = now;
+        frameSeconds_ = elapsed;
         runScript();
         if (quit_)
             break;

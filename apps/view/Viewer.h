@@ -21,6 +21,7 @@ struct ViewOptions {
     std::string scriptPath;  // commands to run (apps/view/ViewScript.h); empty: interactive
     bool strict = false;     // --strict: model files' forgiven problems are errors
     CameraOptions camera;    // --camera, --eye, --look-at, --up, --fov-y: the starting view
+    DisplayOptions display;  // --exposure, --tonemap, --srgb, --aa: the starting display settings
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
 };

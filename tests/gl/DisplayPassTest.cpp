@@ -221,5 +221,39 @@ TEST_F(DisplayPassTest, FxaaBringsAnAliasedEdgeCloserToItsCoverage)
     }
 }
 
+// A depth texture of `image`'s size: 0.5 (a surface) where `covered`, 1 (background) elsewhere.
+gl::Texture2D depthOf(const Image& image, const std::function<bool(int, int)>& covered)
+{
+    gl::Texture2D depth("display test depth", GL_DEPTH_COMPONENT32F, image.width, image.height);
+    std::vector<float> values;
+    for (int y = image.height - 1; y >= 0; --y)
+        for (int x = 0; x < image.width; ++x)
+            values.push_back(covered(x, y) ? 0.5f : 1.0f);
+    glTextureSubImage2D(depth.id(), 0, 0, 0, image.width, image.height, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+    return depth;
+}
+
+TEST_F(DisplayPassTest, LogAverageLuminanceIsTheGeometricMeanOfTheSurfaces)
+{
+    const auto everywhere = [](int, int) { return true; };
+    // Grey 0.5 everywhere: the average is 0.5 (plus the 1e-4 that keeps log(0) away).
+    Image grey{64, 36, std::vector<float>(64 * 36 * 3, 0.5f)};
+    DisplayPass pass;
+    EXPECT_NEAR(pass.logAverageLuminance(uploadLinear(grey), depthOf(grey, everywhere)), 0.5f, 2e-4f);
+    // The top half at 0.1, the bottom at 1.0: the geometric mean sqrt(0.1 · 1.0), not the
+    // arithmetic 0.55 (a few bright pixels must not dim the whole picture).
+    Image halves{64, 36, {}};
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x)
+            halves.rgb.insert(halves.rgb.end(), 3, y < 18 ? 0.1f : 1.0f);
+    EXPECT_NEAR(pass.logAverageLuminance(uploadLinear(halves), depthOf(halves, everywhere)), std::sqrt(0.1f), 1e-3f);
+    // With the top half background, only the bottom's surfaces count.
+    EXPECT_NEAR(pass.logAverageLuminance(uploadLinear(halves), depthOf(halves, [](int, int y) { return y >= 18; })),
+                1.0f, 1e-3f);
+    // No surface at all: middle grey, so that auto-exposure stays at 0.
+    EXPECT_FLOAT_EQ(pass.logAverageLuminance(uploadLinear(halves), depthOf(halves, [](int, int) { return false; })),
+                    0.18f);
+}
+
 }  // namespace
 }  // namespace manylights

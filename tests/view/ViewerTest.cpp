@@ -266,6 +266,54 @@ TEST(Viewer, StartsFromTheCommandLineCameraAndPrintsTheCameraItShows)
         << readText(dir / "viewer.log");
 }
 
+TEST(Viewer, DisplayOptionsShowWhatRenderWrites)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    // The window shows the display pass's picture: with a tone curve, sRGB, an exposure and
+    // FXAA it equals render's PNG with the same options.
+    const std::string display = "--tonemap aces --srgb --exposure 0.5 --aa fxaa";
+    ASSERT_EQ(runViewer(dir, "pause\nframes 2\nscreenshot shown.png\nquit\n", display), 0)
+        << readText(dir / "viewer.log");
+    const fs::path reference = dir / "reference.png";
+    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 " + display + " -o '" + reference.string() + "'"), 0);
+    const Png shown = readPng(dir / "shown.png");
+    const Png expected = readPng(reference);
+    expectEqualWithinOneLevel(shown, expected, "shown.png");
+    // And it is not the plain picture.
+    const fs::path plain = dir / "plain.png";
+    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 -o '" + plain.string() + "'"), 0);
+    EXPECT_NE(shown.rgb, readPng(plain).rgb);
+}
+
+double meanValue(const Png& png)
+{
+    double sum = 0.0;
+    for (unsigned char value : png.rgb)
+        sum += value;
+    return sum / static_cast<double>(png.rgb.size());
+}
+
+TEST(Viewer, AutoExposureAdaptsTowardsMiddleGrey)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    // The default scene's surfaces average 0.17 (an exposure of +0.08 maps them to 0.18).
+    // Started 3 stops under, auto-exposure brightens the picture over the frames (a time
+    // constant of 0.7 s: after 100 frames of at least 5 ms, more than half the way).
+    ASSERT_EQ(runViewer(dir, "pause\ntoggle auto-exposure\nframes 100\nscreenshot adapted.png\nquit\n",
+                        "--exposure -3"),
+              0)
+        << readText(dir / "viewer.log");
+    const fs::path under = dir / "under.png";
+    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 --exposure -3 -o '" + under.string() + "'"), 0);
+    const double adapted = meanValue(readPng(dir / "adapted.png"));
+    const double underexposed = meanValue(readPng(under));
+    EXPECT_GT(adapted, 1.4 * underexposed) << "adapted " << adapted << ", 3 stops under " << underexposed;
+}
+
 TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
 {
     if (!haveXvfb())
