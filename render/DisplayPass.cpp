@@ -10,25 +10,15 @@ namespace manylights {
 namespace {
 // Uniform locations of shaders/display.frag.
 constexpr GLint kExposureScaleLocation = 0;
-constexpr GLint kSupersampleLocation = 1;
 
-// Runs `program` once for every pixel of the bound framebuffer.
-void drawEveryPixel(const gl::Program& program)
-{
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_BLEND);
-    program.use();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEnable(GL_DEPTH_TEST);
-}
 }  // namespace
 
-const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb)
+const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb, int supersample)
 {
-    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb});
+    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb, supersample});
     if (inserted) {
-        gl::Defines defines{{"TONE_CURVE", std::to_string(static_cast<int>(curve))}};
+        gl::Defines defines{{"TONE_CURVE", std::to_string(static_cast<int>(curve))},
+                            {"SUPERSAMPLE", std::to_string(supersample)}};
         if (srgb)
             defines.emplace_back("SRGB_ENCODE", "1");
         found->second = gl::Program("display transform",
@@ -43,6 +33,7 @@ void DisplayPass::resize(int width, int height)
         return;
     antialiasedFramebuffer_ = gl::Framebuffer();
     antialiasedOutput_ = gl::Texture2D();
+    edgeStencil_ = gl::Texture2D();
     transformedFramebuffer_ = gl::Framebuffer();
     transformed_ = gl::Texture2D("display", GL_RGBA8, width, height);
     // FXAA samples it between texels.
@@ -52,7 +43,8 @@ void DisplayPass::resize(int width, int height)
     glTextureParameteri(transformed_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     transformedFramebuffer_ = gl::Framebuffer("display", {&transformed_}, nullptr);
     antialiasedOutput_ = gl::Texture2D("display anti-aliased", GL_RGBA8, width, height);
-    antialiasedFramebuffer_ = gl::Framebuffer("display anti-aliased", {&antialiasedOutput_}, nullptr);
+    edgeStencil_ = gl::Texture2D("display edges", GL_DEPTH24_STENCIL8, width, height);
+    antialiasedFramebuffer_ = gl::Framebuffer("display anti-aliased", {&antialiasedOutput_}, &edgeStencil_);
 }
 
 void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample,
@@ -65,27 +57,52 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
     resize(width, height);
     {
         auto pass = profiler.pass("display");
-        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb);
+        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb, supersample);
         program.set(kExposureScaleLocation, std::exp2(settings.exposure));
-        program.set(kSupersampleLocation, supersample);
         // The lit image was written by draws or image stores.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         lit.bindUnit(0);
         transformedFramebuffer_.bind();
         glViewport(0, 0, width, height);
         emptyVertexArray_.bind();
-        drawEveryPixel(program);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_BLEND);
+        program.use();
+        glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
     }
     antialiased_ = settings.antialiasing == Antialiasing::Fxaa;
     if (antialiased_) {
         auto pass = profiler.pass("fxaa");
-        if (!fxaaProgram_)
+        if (!fxaaProgram_) {
+            fxaaEdgesProgram_ = gl::Program(
+                "fxaa edges", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa_edges.frag"}});
             fxaaProgram_ =
                 gl::Program("fxaa", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa.frag"}});
+        }
+        // Most pixels are not on an edge and keep their colour: copied as they are, then the
+        // edge test marks the others in the stencil buffer and the filter runs on those only
+        // (llvmpipe skips stencil-failed pixels before shading, not pixels that return early).
+        glCopyImageSubData(transformed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, antialiasedOutput_.id(), GL_TEXTURE_2D, 0, 0,
+                           0, 0, width, height, 1);
+        antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
         transformed_.bindUnit(0);
         antialiasedFramebuffer_.bind();
-        drawEveryPixel(fxaaProgram_);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        fxaaEdgesProgram_.use();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glStencilFunc(GL_EQUAL, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        fxaaProgram_.use();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
     }
+    glEnable(GL_DEPTH_TEST);
     glViewport(0, 0, lit.width(), lit.height());
 }
 

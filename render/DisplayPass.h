@@ -6,7 +6,7 @@
 #pragma once
 
 #include <map>
-#include <utility>
+#include <tuple>
 
 #include "gl/Buffer.h"
 #include "gl/Framebuffer.h"
@@ -38,15 +38,17 @@ public:
     float logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth);
 
 private:
-    const gl::Program& transformProgram(ToneCurve curve, bool srgb);
+    const gl::Program& transformProgram(ToneCurve curve, bool srgb, int supersample);
     void resize(int width, int height);
 
-    std::map<std::pair<ToneCurve, bool>, gl::Program> transformPrograms_;  // made on first use
-    gl::Program fxaaProgram_;                                              // made on first use
+    std::map<std::tuple<ToneCurve, bool, int>, gl::Program> transformPrograms_;  // made on first use
+    gl::Program fxaaEdgesProgram_;  // made on first use, with fxaaProgram_
+    gl::Program fxaaProgram_;
     gl::VertexArray emptyVertexArray_{"display pass"};  // the full-screen triangle needs no attributes
     gl::Texture2D transformed_;
     gl::Framebuffer transformedFramebuffer_;
     gl::Texture2D antialiasedOutput_;
+    gl::Texture2D edgeStencil_;  // FXAA's edge pixels (shaders/fxaa_edges.frag)
     gl::Framebuffer antialiasedFramebuffer_;
     bool antialiased_ = false;
     gl::Program luminanceProgram_;  // made on first use

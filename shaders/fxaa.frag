@@ -7,24 +7,17 @@
 // (SEARCH_STEPS bilinear taps straddling the edge, growing strides) to the ends where the
 // luma leaves the edge's average, and takes its colour from a bilinear tap shifted towards the
 // other side by how far it is from the nearer end, or by a sub-pixel amount from the 3x3
-// average where that is larger. Loop iterations: SEARCH_STEPS.
-layout(binding = 0) uniform sampler2D source;  // bilinear, clamped to the edge
+// average where that is larger. Loop iterations: SEARCH_STEPS. Only the pixels that
+// shaders/fxaa_edges.frag marked in the stencil buffer run it (render/DisplayPass.cpp): on
+// llvmpipe a pixel that returns early still pays for the whole shader under a lane mask.
+#include "lib/fxaa_edge.glsl"
 layout(location = 0) out vec4 antialiased;
 
-// FXAA 3.11's "high quality" settings: edges must span 1/8 of the local maximum luma, and
-// at least 0.0312 (dark edges are left alone); sub-pixel blending at 3/4 strength.
-const float EDGE_THRESHOLD = 0.125;
-const float EDGE_THRESHOLD_MIN = 0.0312;
+// Sub-pixel blending at 3/4 strength (FXAA 3.11's default).
 const float SUBPIXEL_QUALITY = 0.75;
 // FXAA 3.11's quality preset 12: five taps each way, at strides reaching 20.5 pixels.
 const int SEARCH_STEPS = 5;
 const float STEP_STRIDES[SEARCH_STEPS] = float[](1.0, 1.5, 2.0, 4.0, 12.0);
-
-// The display pass stores each pixel's luma in alpha (shaders/display.frag).
-float lumaAt(ivec2 pixel)
-{
-    return texelFetch(source, clamp(pixel, ivec2(0), textureSize(source, 0) - 1), 0).a;
-}
 
 float lumaAt(vec2 uv)
 {
@@ -33,25 +26,17 @@ float lumaAt(vec2 uv)
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    ivec2 size = textureSize(source, 0);
-    vec4 centre = texelFetch(source, pixel, 0);
-    float c = centre.a;
-    float n = lumaAt(pixel + ivec2(0, 1));
-    float s = lumaAt(pixel + ivec2(0, -1));
-    float e = lumaAt(pixel + ivec2(1, 0));
-    float w = lumaAt(pixel + ivec2(-1, 0));
-    float lo = min(c, min(min(n, s), min(e, w)));
-    float hi = max(c, max(max(n, s), max(e, w)));
-    float range = hi - lo;
-    if (range < max(EDGE_THRESHOLD_MIN, hi * EDGE_THRESHOLD)) {
-        antialiased = vec4(centre.rgb, 1.0);
+    Neighbourhood h = neighbourhood(ivec2(gl_FragCoord.xy));
+    if (!onEdge(h)) {
+        antialiased = vec4(h.centre.rgb, 1.0);
         return;
     }
-    float ne = lumaAt(pixel + ivec2(1, 1));
-    float nw = lumaAt(pixel + ivec2(-1, 1));
-    float se = lumaAt(pixel + ivec2(1, -1));
-    float sw = lumaAt(pixel + ivec2(-1, -1));
+    vec2 uv = h.uv;
+    vec2 texel = h.texel;
+    float c = h.c, n = h.n, e = h.e, s = h.s, w = h.w, ne = h.ne, sw = h.sw;
+    float range = h.range;
+    float nw = textureGatherOffset(source, uv, ivec2(-1, 0), 3).x;
+    float se = textureGatherOffset(source, uv, ivec2(0, -1), 3).z;
 
     // An edge along x changes luma from row to row: its second differences across rows
     // outweigh those across columns.
@@ -60,7 +45,6 @@ void main()
     bool alongX = acrossRows >= acrossColumns;
 
     // Which neighbour across the edge differs more: the edge lies between it and this pixel.
-    vec2 texel = 1.0 / vec2(size);
     float before = alongX ? s : w;
     float after = alongX ? n : e;
     bool towardsBefore = abs(before - c) >= abs(after - c);
@@ -70,7 +54,6 @@ void main()
 
     // Walk along the edge, half a pixel across (a bilinear tap averages both sides), until
     // the luma leaves the edge's average at both ends.
-    vec2 uv = (vec2(pixel) + 0.5) * texel;
     vec2 onEdge = uv + (alongX ? vec2(0.0, 0.5 * across) : vec2(0.5 * across, 0.0));
     vec2 along = alongX ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
     vec2 uvBack = onEdge;

@@ -78,6 +78,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     Renderer renderer(scene, lights, size.width, size.height, options.gbufferLayout);
     renderer.setAnisotropy(options.anisotropy);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
+    renderer.setDisplay(chooseDisplay(scene, options.display));
     std::unique_ptr<Technique> technique = makeTechnique(
         techniqueName, {.gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
@@ -416,6 +417,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->capture_default_str();
     bench->add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(*bench, options.camera);
+    addDisplayOptions(*bench, options.display);
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
     return bench;

@@ -27,6 +27,7 @@ struct BenchOptions {
     bool countWork = false;
     bool strict = false;  // --strict: model files' forgiven problems are errors
     CameraOptions camera;  // --camera, --eye, --look-at, --up, --fov-y
+    DisplayOptions display;  // --exposure, --tonemap, --srgb, --aa: time the display pass too
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)
     // When a technique's median frame exceeds this at one light count, its later (larger)

@@ -135,7 +135,7 @@ TEST(Cli, BadOutputExtensionIsUsageError)
     const auto dir = scratchDirectory();
     const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.jpg").string()});
     EXPECT_EQ(result.exitCode, 2);
-    EXPECT_NE(result.stderrText.find(".png or .pfm"), std::string::npos) << result.stderrText;
+    EXPECT_NE(result.stderrText.find(".png, .pfm or .exr"), std::string::npos) << result.stderrText;
 }
 
 TEST(Cli, UnwritableOutputIsExitOneWithNothingLeft)
