@@ -56,4 +56,6 @@ $ml render "$variants/shadows.json" -o $out/shadows-all.png --size 640x360 --sha
 $ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 3
 $ml render "$variants/shadows.json" -o $out/view-shadow.png --size 640x360 --view shadow
 $ml render "$variants/both.json" -o $out/view-ssao.png --size 640x360 --view ssao
+# The display path (docs/display.md).
+scripts/make-display-images.sh
 echo "docs images written to $out"

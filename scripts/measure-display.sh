@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The cost of the display path (docs/display.md): the default scene at 1280x720 with
+# `clustered`, timed by bench without display settings, with a tone curve and sRGB, and with
+# FXAA as well; prints each pass's median wall time and its share of the frame. Prints the
+# machine and its load first; read the figures as ratios within one run.
+#
+#   scripts/measure-display.sh                 SIZE=1920x1080 TECHNIQUE=deferred scripts/measure-display.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if [ -z "${ML:-}" ]; then
+  make build >/dev/null
+  ML=build/manylights
+fi
+size=${SIZE:-1280x720}
+technique=${TECHNIQUE:-clustered}
+mkdir -p out
+echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), binary $ML"
+run() {
+  local name=$1
+  shift
+  "$ML" bench --techniques "$technique" --size "$size" --frames "${FRAMES:-5}" --warmup 1 --csv "out/display-$name.csv" \
+    "$@" >/dev/null
+}
+run plain
+run curve --tonemap aces --srgb
+run fxaa --tonemap aces --srgb --aa fxaa
+python3 - "$technique" "$size" <<'PY'
+import csv, sys
+print(f"\n{sys.argv[1]}, default scene, {sys.argv[2]}: median ms (share of the frame)")
+for name, label in (("plain", "no display settings"), ("curve", "--tonemap aces --srgb"),
+                    ("fxaa", "--tonemap aces --srgb --aa fxaa")):
+    row = next(csv.DictReader(open(f"out/display-{name}.csv")))
+    frame = float(row["frame_ms_median"])
+    passes = {p.split(":")[0]: float(p.split(":")[1]) for p in row["passes"].split(";")}
+    shown = ", ".join(f"{p} {passes[p]:.1f} ({100 * passes[p] / frame:.1f} %)" for p in ("display", "fxaa") if p in passes)
+    print(f"  {label:34s} frame {frame:7.1f}  {shown}")
+PY
