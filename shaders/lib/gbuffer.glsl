@@ -27,5 +27,5 @@ Surface gbufferSurface(ivec2 pixel)
     s.shininess = texelFetch(gPositionShininess, pixel, 0).w;
 #endif
     s.emissive = texelFetch(gEmissive, pixel, 0).rgb;
-    return s;
+    return withTermSwitches(s);
 }

@@ -12,7 +12,20 @@ struct Surface {
     vec3 specular;  // ks
     float shininess;
     vec3 emissive;  // ke
+    // kd and ks times the viewer's switches of the diffuse and specular terms (frame.terms.y,
+    // .z), computed once per pixel by withTermSwitches(), which every Surface's maker calls:
+    // multiplied inside the light loop, the switches (read from the frame's uniform block)
+    // cost 18% of a deferred lighting pass on llvmpipe (docs/performance.md).
+    vec3 switchedDiffuse;
+    vec3 switchedSpecular;
 };
+
+Surface withTermSwitches(Surface s)
+{
+    s.switchedDiffuse = frame.terms.y * s.diffuse;
+    s.switchedSpecular = frame.terms.z * s.specular;
+    return s;
+}
 
 // brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
 // Written without branches: llvmpipe runs 8 or 16 pixels in lock step and would execute a
@@ -22,8 +35,7 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
 {
     float NdotL = dot(s.normal, L);
     vec3 H = normalize(L + V);
-    vec3 brdf = frame.terms.y * s.diffuse * NdotL +
-                frame.terms.z * s.specular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+    vec3 brdf = s.switchedDiffuse * NdotL + s.switchedSpecular * pow(max(dot(s.normal, H), 0.0), s.shininess);
     return NdotL > 0.0 ? brdf : vec3(0.0);
 }
 

@@ -70,5 +70,5 @@ Surface meshSurface()
     s.emissive = materialEmissive;
     if ((materialMaps & kHasEmissiveMap) != 0)
         s.emissive *= texture(emissiveMap, uv).rgb;
-    return s;
+    return withTermSwitches(s);
 }
