@@ -24,8 +24,7 @@ public:
     void run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample, PassProfiler& profiler);
 
     // The last run's picture: RGBA8, display-encoded (alpha: luma, for FXAA); its framebuffer
-    // is for blitting to a window. 8 bits because that is what every consumer shows, and
-    // FXAA's taps of it cost half of float ones on llvmpipe (docs/performance.md).
+    // is for blitting to a window. 8 bits: what every consumer of it shows.
     const gl::Texture2D& output() const { return antialiased_ ? antialiasedOutput_ : transformed_; }
     const gl::Framebuffer& outputFramebuffer() const
     {

@@ -13,9 +13,11 @@
 
 namespace manylights {
 
-Image boxDownsample(const Image& image, int factor)
+Image boxDownsample(Image image, int factor)
 {
     ML_ASSERT(factor >= 1 && image.width % factor == 0 && image.height % factor == 0);
+    if (factor == 1)
+        return image;
     Image small;
     small.width = image.width / factor;
     small.height = image.height / factor;

@@ -37,7 +37,8 @@ Image readPfm(const std::filesystem::path& path);
 // `image` with each `factor` x `factor` block averaged in linear light (a box filter; the
 // sizes must be multiples of `factor`): supersampled frames down to their output size, in the
 // box the display pass averages (shaders/display.frag), so both agree to rounding.
-Image boxDownsample(const Image& image, int factor);
+// A factor of 1 returns `image` as it is.
+Image boxDownsample(Image image, int factor);
 
 // round(255 · clamp(v, 0, 1)): the PNG encoding of one channel.
 unsigned char toByte(float value);

@@ -205,6 +205,14 @@ std::string joinNames(const std::vector<std::string>& names)
     return joined;
 }
 
+// The hint after an unknown name: the closest of `names`, or all of them.
+std::string nameHint(std::string_view word, const std::vector<std::string>& names)
+{
+    if (const auto guess = closest(word, names))
+        return " (did you mean " + quote(*guess) + "?)";
+    return " (expected one of: " + joinNames(names) + ")";
+}
+
 // ---------------------------------------------------------------------------------------
 // Syntax: nlohmann parses, we report positions as FILE:LINE:COLUMN.
 
@@ -516,13 +524,8 @@ private:
             const std::string& key = item.key();
             if (std::find(known.begin(), known.end(), key) != known.end())
                 continue;
-            std::vector<std::string> names(known.begin(), known.end());
-            std::string hint;
-            if (const auto guess = closest(key, names))
-                hint = " (did you mean " + quote(*guess) + "?)";
-            else
-                hint = " (expected one of: " + joinNames(names) + ")";
-            fail(Node{&item.value(), object.path + "/" + escapePointerToken(key)}, "unknown key " + quote(key) + hint);
+            fail(Node{&item.value(), object.path + "/" + escapePointerToken(key)},
+                 "unknown key " + quote(key) + nameHint(key, std::vector<std::string>(known.begin(), known.end())));
         }
     }
 
@@ -620,11 +623,8 @@ private:
     std::string oneOf(const Node& node, const std::vector<std::string>& names) const
     {
         const std::string value = string(node);
-        if (std::find(names.begin(), names.end(), value) == names.end()) {
-            const auto guess = closest(value, names);
-            fail(node, "unknown value " + quote(value) +
-                           (guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(names) + ")"));
-        }
+        if (std::find(names.begin(), names.end(), value) == names.end())
+            fail(node, "unknown value " + quote(value) + nameHint(value, names));
         return value;
     }
 
@@ -1048,11 +1048,8 @@ private:
                            std::to_string(node.json->size()) + " keys");
         const std::string kind = node.json->begin().key();
         const Node settings{&node.json->begin().value(), node.path + "/" + escapePointerToken(kind)};
-        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
-            const auto guess = closest(kind, kinds);
-            fail(settings, "unknown animation " + quote(kind) +
-                               (guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")"));
-        }
+        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+            fail(settings, "unknown animation " + quote(kind) + nameHint(kind, kinds));
         return {kind, settings};
     }
 
@@ -1302,10 +1299,7 @@ private:
         if (kind == "revolution")
             return revolution(node);
         const std::vector<std::string> kinds{"plane", "box", "sphere", "cone", "cylinder", "torus", "revolution"};
-        const auto guess = closest(kind, kinds);
-        const std::string hint =
-            guess ? " (did you mean " + quote(*guess) + "?)" : " (expected one of: " + joinNames(kinds) + ")";
-        fail(kindNode, "unknown primitive " + quote(kind) + hint);
+        fail(kindNode, "unknown primitive " + quote(kind) + nameHint(kind, kinds));
     }
 
     // A surface of revolution (scene/Revolution.h): frozen at `time` on the CPU, or with

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <unistd.h>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -104,7 +105,7 @@ const std::vector<AovLayer>& aovLayers()
 // The renderer's last frame encoded for `path`: .pfm and .exr as linear floats (box-filtered
 // down when supersampled), .png through the display pass (the final and volumes views) or as
 // the view's displayable image. --aovs renders each G-buffer view after the frame and adds it
-// to the EXR file.
+// to the EXR file (the renderer then holds the last view's frame: nothing reads it after).
 std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options,
                             const std::string& path)
 {
@@ -114,18 +115,16 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
             return encodePng(renderer.readDisplayed());
         return encodePng(displayableView(renderer.readColour(), view, renderer.readCoverage()));
     }
-    const Image linear = boxDownsample(renderer.readColour(), options.supersample);
+    Image linear = boxDownsample(renderer.readColour(), options.supersample);
     if (hasExtension(path, ".pfm"))
         return encodePfm(linear);
-    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, linear}};
+    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, std::move(linear)}};
     if (options.aovs) {
         for (const AovLayer& aov : aovLayers()) {
             renderer.renderFrame(technique, aov.view);
             layers.push_back(
                 {std::string(viewModeName(aov.view)), aov.channels, boxDownsample(renderer.readColour(), options.supersample)});
         }
-        // Leave the renderer showing the frame itself again.
-        renderer.renderFrame(technique, view);
     }
     return encodeExr(layers, options.exrFloat ? ExrPixels::Float : ExrPixels::Half);
 }

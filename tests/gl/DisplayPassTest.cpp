@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -211,6 +212,9 @@ TEST_F(DisplayPassTest, FxaaBringsAnAliasedEdgeCloserToItsCoverage)
     const std::vector<unsigned char> antialiased = runDisplay(edge.aliased, {.antialiasing = Antialiasing::Fxaa});
     const double before = meanError(aliased, edge.coverage);
     const double after = meanError(antialiased, edge.coverage);
+    // The measured figures, for docs/display.md.
+    std::printf("FXAA on a shallow edge: mean error %.4f aliased, %.4f anti-aliased (%.2f x)\n", before, after,
+                after / before);
     // Measured: mean error 0.0041 aliased, 0.0018 after FXAA (0.43 x). The bound asks for at
     // least a third less: a pass that left the edge as it was fails it.
     EXPECT_LT(after, 0.67 * before) << "mean error before " << before << ", after " << after;

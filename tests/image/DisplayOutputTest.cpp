@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "core/Error.h"
 #include "render/ExrFile.h"
 #include "render/Image.h"
 
@@ -66,7 +67,7 @@ TEST(DisplayOutput, DefaultPngIsThePlainClampOfTheLinearColour)
     EXPECT_GT(above, 0) << "the scene must have values the tone curves compress";
 }
 
-TEST(DisplayOutput, ExposureAndCurvesChangeOnlyThePng)
+TEST(DisplayOutput, AcesPngIsTheFormulaOfThePfm)
 {
     const auto dir = scratchDirectory();
     runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
@@ -76,7 +77,9 @@ TEST(DisplayOutput, ExposureAndCurvesChangeOnlyThePng)
     const std::vector<unsigned char> plain = readPng(dir / "plain.png");
     const std::vector<unsigned char> aces = readPng(dir / "aces.png");
     const Image linear = renderPfm(kScene, dir / "linear.pfm", kSmall);
-    // Pixel by pixel, the ACES PNG is the formula of the linear value halved.
+    // Pixel by pixel, the ACES PNG is the formula of the linear value halved: within half a
+    // level of quantisation plus a quarter for the GPU's pow and division (as
+    // tests/gl/DisplayPassTest.cpp).
     for (std::size_t i = 0; i < aces.size(); ++i) {
         const double x = 0.5 * linear.rgb[i];
         double mapped = std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -198,6 +201,24 @@ TEST(DisplayOutput, ExrOpensInExrheader)
     const std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     for (const char* channel : {"R, 16-bit floating-point", "normal.X", "light-count.Y", "ssao.Y"})
         EXPECT_NE(header.find(channel), std::string::npos) << channel << " missing in:\n" << header;
+}
+
+TEST(DisplayOutput, ExrReadingErrorsNameTheFile)
+{
+    const auto dir = scratchDirectory();
+    runCliOrFail(with({"render", kScene, "-o", (dir / "frame.exr").string()}, kSmall));
+    // A layer the file does not have: the file and the channel.
+    try {
+        readExrLayer(dir / "frame.exr", "normal", {"X", "Y", "Z"});
+        ADD_FAILURE() << "a missing layer must be an error";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find("frame.exr"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("normal.X"), std::string::npos) << error.what();
+    }
+    // Not an EXR file at all.
+    test::writeFile(dir / "not.exr", "P6\n1 1\n255\n\0\0\0");
+    EXPECT_THROW(readExrLayer(dir / "not.exr", "", {"R"}), Error);
+    EXPECT_THROW(exrChannelNames(dir / "not.exr"), Error);
 }
 
 }  // namespace

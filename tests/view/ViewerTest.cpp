@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -266,6 +267,13 @@ TEST(Viewer, StartsFromTheCommandLineCameraAndPrintsTheCameraItShows)
         << readText(dir / "viewer.log");
 }
 
+// `render` of the default scene at the test windows' size (160x90) with `options`, read back.
+Png renderAtWindowSize(const fs::path& output, const std::string& options)
+{
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 " + options + " -o '" + output.string() + "'"), 0);
+    return readPng(output);
+}
+
 TEST(Viewer, DisplayOptionsShowWhatRenderWrites)
 {
     if (!haveXvfb())
@@ -276,15 +284,10 @@ TEST(Viewer, DisplayOptionsShowWhatRenderWrites)
     const std::string display = "--tonemap aces --srgb --exposure 0.5 --aa fxaa";
     ASSERT_EQ(runViewer(dir, "pause\nframes 2\nscreenshot shown.png\nquit\n", display), 0)
         << readText(dir / "viewer.log");
-    const fs::path reference = dir / "reference.png";
-    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 " + display + " -o '" + reference.string() + "'"), 0);
     const Png shown = readPng(dir / "shown.png");
-    const Png expected = readPng(reference);
-    expectEqualWithinOneLevel(shown, expected, "shown.png");
+    expectEqualWithinOneLevel(shown, renderAtWindowSize(dir / "reference.png", display), "shown.png");
     // And it is not the plain picture.
-    const fs::path plain = dir / "plain.png";
-    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 -o '" + plain.string() + "'"), 0);
-    EXPECT_NE(shown.rgb, readPng(plain).rgb);
+    EXPECT_NE(shown.rgb, renderAtWindowSize(dir / "plain.png", "").rgb);
 }
 
 double meanValue(const Png& png)
@@ -302,15 +305,17 @@ TEST(Viewer, AutoExposureAdaptsTowardsMiddleGrey)
     const fs::path dir = scratch();
     // The default scene's surfaces average 0.17 (an exposure of +0.08 maps them to 0.18).
     // Started 3 stops under, auto-exposure brightens the picture over the frames (a time
-    // constant of 0.7 s: after 100 frames of at least 5 ms, more than half the way).
+    // constant of 0.7 s: after 100 frames of at least 5 ms, more than half the way, which
+    // would brighten it about 2.9 x; the bound asks for 1.4 x).
     ASSERT_EQ(runViewer(dir, "pause\ntoggle auto-exposure\nframes 100\nscreenshot adapted.png\nquit\n",
                         "--exposure -3"),
               0)
         << readText(dir / "viewer.log");
-    const fs::path under = dir / "under.png";
-    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size 160x90 --exposure -3 -o '" + under.string() + "'"), 0);
     const double adapted = meanValue(readPng(dir / "adapted.png"));
-    const double underexposed = meanValue(readPng(under));
+    const double underexposed = meanValue(renderAtWindowSize(dir / "under.png", "--exposure -3"));
+    // The measured ratio, for docs/display.md.
+    std::printf("auto-exposure: mean value %.2f adapted, %.2f three stops under (%.1f x)\n", adapted, underexposed,
+                adapted / underexposed);
     EXPECT_GT(adapted, 1.4 * underexposed) << "adapted " << adapted << ", 3 stops under " << underexposed;
 }
 
