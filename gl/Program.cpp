@@ -90,6 +90,10 @@ void Program::set(GLint location, const glm::mat3& value) const
 {
     glProgramUniformMatrix3fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
 }
+void Program::set(GLint location, const glm::mat3x2& value) const
+{
+    glProgramUniformMatrix3x2fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+}
 void Program::set(GLint location, const glm::mat4& value) const
 {
     glProgramUniformMatrix4fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));

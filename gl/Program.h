@@ -37,6 +37,7 @@ public:
     void set(GLint location, const glm::vec3& value) const;
     void set(GLint location, const glm::vec4& value) const;
     void set(GLint location, const glm::mat3& value) const;
+    void set(GLint location, const glm::mat3x2& value) const;  // GLSL mat3x2: 3 columns of 2
     void set(GLint location, const glm::mat4& value) const;
 };
 

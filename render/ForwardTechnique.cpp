@@ -34,7 +34,7 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
         }
-        scene.drawObjects([&](MaterialMapSet maps) -> const gl::Program& {
+        scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
             const gl::Program& program = program_.variant(scene.lightingFeatures(), LightSource::StorageBuffer, maps);
             setLightBatch(program, batch);
             return program;

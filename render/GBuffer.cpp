@@ -69,7 +69,7 @@ void GBuffer::fill(const GpuScene& scene) const
     glDisable(GL_BLEND);
     scene.bind();
     // The pass evaluates no light: the variants differ only in the material's maps.
-    scene.drawObjects([&](MaterialMapSet maps) -> const gl::Program& {
+    scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
         return programs_.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
     });
 }

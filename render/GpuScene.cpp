@@ -109,12 +109,13 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         const Mesh& mesh = *meshPointer;
         const auto baseVertex = static_cast<GLint>(allVertices.size());
         if (mesh.subMeshes.empty())
-            meshRanges_.push_back({{baseVertex, allIndices.size(), static_cast<GLsizei>(mesh.indices.size()), {}}});
+            meshRanges_.push_back({{baseVertex, allIndices.size(), static_cast<GLsizei>(mesh.indices.size()), {},
+                                    mesh.hasVertexColours}});
         else {
             std::vector<MeshRange> ranges;
             for (const SubMesh& sub : mesh.subMeshes)
                 ranges.push_back({baseVertex, allIndices.size() + sub.firstIndex,
-                                  static_cast<GLsizei>(sub.indexCount), sub.material});
+                                  static_cast<GLsizei>(sub.indexCount), sub.material, mesh.hasVertexColours});
             meshRanges_.push_back(std::move(ranges));
         }
         allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
@@ -127,6 +128,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     vertexArray_.setFloatAttribute(1, 0, 3, offsetof(Vertex, normal));
     vertexArray_.setFloatAttribute(2, 0, 2, offsetof(Vertex, uv));
     vertexArray_.setFloatAttribute(3, 0, 4, offsetof(Vertex, tangent));
+    vertexArray_.setFloatAttribute(4, 0, 4, offsetof(Vertex, colour));
     vertexArray_.setIndexBuffer(indices_);
 
     // Colour maps are sRGB-encoded 8-bit images; normal and specular maps hold data. A broken
@@ -145,7 +147,11 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         materialMaps_.push_back({load(material.diffuseMap, TextureColourSpace::Srgb, "diffuse_map"),
                                  load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
                                  load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
-                                 load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map")});
+                                 load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map"),
+                                 load(material.metallicRoughnessMap, TextureColourSpace::Linear,
+                                      "metallic-roughness map")});
+        // The two share the specular map's unit (scene/Scene.h MaterialMapSlot).
+        ML_ASSERT(!materialMaps_.back().specular || !materialMaps_.back().metallicRoughness);
     }
 
     std::vector<Bounds> meshBounds;
@@ -159,8 +165,12 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
                               &scene.materials[material], &materialMaps_[material], &object, std::nullopt,
                               objectSpaceBounds(object, meshBounds[object.mesh]), Bounds{}});
         }
-    for (DrawItem& draw : draws_)
+    for (DrawItem& draw : draws_) {
         draw.worldBounds = transformedBounds(draw.meshBounds, draw.model);
+        draw.variant = materialVariant(*draw.material, *draw.maps, draw.range);
+        // Animations move and turn objects but never mirror them: the rest pose decides.
+        draw.mirrored = glm::determinant(glm::mat3(draw.model)) < 0.0f;
+    }
     if (scene.lightMarkerRadius)
         addLightMarkers(*scene.lightMarkerRadius);
     groupDrawsIntoBatches();
@@ -232,13 +242,18 @@ void GpuScene::groupDrawsIntoBatches()
     for (std::size_t i = 0; i < draws_.size(); ++i)
         draws_[i].groupedIndex = i;
     const auto canShare = [](const DrawItem& draw) {
-        return instanceable(draw.object, mapSet(*draw.maps) != 0);
+        return instanceable(draw.object, (draw.variant & kTextureBits) != 0);
+    };
+    // One program and one face state per draw call.
+    const auto drawnAlike = [](const DrawItem& a, const DrawItem& b) {
+        return a.variant == b.variant && a.material->sides == b.material->sides && a.mirrored == b.mirrored;
     };
     batches_.clear();
     for (std::size_t i = 0; i < draws_.size(); ++i) {
         if (!batches_.empty()) {
             const DrawItem& first = draws_[batches_.back().firstItem];
-            if (canShare(first) && canShare(draws_[i]) && rangeKey(first) == rangeKey(draws_[i])) {
+            if (canShare(first) && canShare(draws_[i]) && rangeKey(first) == rangeKey(draws_[i]) &&
+                drawnAlike(first, draws_[i])) {
                 ++batches_.back().itemCount;
                 continue;
             }
@@ -367,9 +382,11 @@ void GpuScene::writeInstances()
         instance.model = draw.model;
         for (int column = 0; column < 3; ++column)
             instance.normalMatrix[column] = glm::vec4(draw.normalMatrix[column], 0.0f);
-        instance.diffuse = glm::vec4(draw.material->diffuse, 0.0f);
-        instance.specularShininess = glm::vec4(draw.material->specular, draw.material->shininess);
-        instance.emissive = glm::vec4(draw.material->emissive, 0.0f);
+        const Material& material = *draw.material;
+        instance.diffuse = glm::vec4(material.diffuse, material.opacity);
+        instance.specularShininess = glm::vec4(material.specular, material.shininess);
+        instance.emissive = glm::vec4(material.emissive, material.alphaCutoff);
+        instance.specularTint = glm::vec4(material.specularTint, material.sides == Sides::BothFlipped ? 1.0f : 0.0f);
     }
     // One update for the whole frame.
     if (!instances_.empty())
@@ -423,42 +440,71 @@ void GpuScene::drawObjects(const MeshProgramFor& programFor) const
     const gl::Program* current = nullptr;
     for (const std::size_t index : frontToBack_) {
         const DrawBatch& batch = batches_[index];
-        // Every item of a batch of several has no maps and no revolution: the first item's
-        // uniforms hold for all of them.
+        // Every item of a batch of several has the same variant and face state, no maps and no
+        // revolution: the first item's uniforms hold for all of them.
         const DrawItem& first = draws_[batch.firstItem];
-        const gl::Program& program = programFor(mapSet(*first.maps));
+        const gl::Program& program = programFor(first.variant);
         if (&program != current) {
             program.use();
             current = &program;
         }
         setObjectUniforms(program, first);
         bindMaterial(program, *first.material, *first.maps);
+        setFaceState(first);
         drawInstances(program, batch.firstItem, batch.itemCount);
     }
+    glDisable(GL_CULL_FACE);  // the renderer's default (Renderer.cpp): meshes need not be closed
+    glFrontFace(GL_CCW);
 }
 
-MaterialMapSet GpuScene::mapSet(const MaterialMaps& maps)
+MaterialVariant GpuScene::materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range)
 {
-    return static_cast<MaterialMapSet>((maps.diffuse ? kDiffuseMapBit : 0) | (maps.specular ? kSpecularMapBit : 0) |
-                                       (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0));
+    return static_cast<MaterialVariant>(
+        (maps.diffuse ? kDiffuseMapBit : 0) | (maps.specular ? kSpecularMapBit : 0) |
+        (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0) |
+        (maps.metallicRoughness ? kMetallicRoughnessMapBit : 0) |
+        (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0));
+}
+
+void GpuScene::setFaceState(const DrawItem& draw)
+{
+    // gl_FrontFacing (which Sides::BothFlipped lights by) follows glFrontFace too.
+    glFrontFace(draw.mirrored && draw.material->sides != Sides::BothWithMeshNormal ? GL_CW : GL_CCW);
+    if (draw.material->sides == Sides::Front)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
 }
 
 void GpuScene::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const
 {
-    // Location and units of shaders/lib/material.glsl (its constants come from the instance
-    // record, GpuScene::writeInstances; which maps it samples, from the program: mapSet).
-    enum : GLint { kNormalScale = 15 };
+    // Locations and units of shaders/lib/material.glsl (its constants come from the instance
+    // record, GpuScene::writeInstances; which maps it samples, from the program: materialVariant).
+    // A map's uniforms are inactive, so left unset, without the map.
+    enum : GLint {
+        kNormalScale = 15,
+        kMetallicRoughness = 16,
+        kDiffuseUvTransform = 50,
+        kSpecularUvTransform = 53,
+        kNormalUvTransform = 56,
+        kEmissiveUvTransform = 59,
+    };
     enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
-    if (maps.diffuse)
-        maps.diffuse->bindUnit(kDiffuseUnit);
-    if (maps.specular)
-        maps.specular->bindUnit(kSpecularUnit);
-    if (maps.normal) {
-        maps.normal->bindUnit(kNormalUnit);
-        program.set(kNormalScale, material.normalScale);  // inactive, so unset, without the map
-    }
-    if (maps.emissive)
-        maps.emissive->bindUnit(kEmissiveUnit);
+    const auto bind = [&](const gl::MipmappedTexture2D* map, GLuint unit, GLint transformLocation, MaterialMapSlot slot) {
+        if (!map)
+            return false;
+        map->bindUnit(unit);
+        program.set(transformLocation, glm::mat3x2(material.uvTransforms[slot]));
+        return true;
+    };
+    bind(maps.diffuse, kDiffuseUnit, kDiffuseUvTransform, kDiffuseSlot);
+    bind(maps.specular, kSpecularUnit, kSpecularUvTransform, kSpecularSlot);
+    if (bind(maps.metallicRoughness, kSpecularUnit, kSpecularUvTransform, kSpecularSlot))
+        program.set(kMetallicRoughness, glm::vec2(material.metallicFactor, material.roughnessFactor));
+    if (bind(maps.normal, kNormalUnit, kNormalUvTransform, kNormalSlot))
+        program.set(kNormalScale, material.normalScale);
+    bind(maps.emissive, kEmissiveUnit, kEmissiveUvTransform, kEmissiveSlot);
 }
 
 Bounds GpuScene::objectsWorldBounds() const
@@ -472,14 +518,26 @@ Bounds GpuScene::objectsWorldBounds() const
     return all;
 }
 
-std::size_t GpuScene::drawObjectsDepthOnly(const gl::Program& program,
+std::size_t GpuScene::drawObjectsDepthOnly(const MeshProgramFor& programFor,
                                            const std::function<bool(const Bounds&)>& keep) const
 {
-    program.use();
     instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
     std::size_t drawn = 0;
+    const gl::Program* current = nullptr;
     for (const DrawBatch& batch : batches_) {
-        setObjectUniforms(program, draws_[batch.firstItem]);
+        const DrawItem& first = draws_[batch.firstItem];
+        const MaterialVariant variant = depthOnlyVariant(first.variant);
+        const gl::Program& program = programFor(variant);
+        if (&program != current) {
+            program.use();
+            current = &program;
+        }
+        setObjectUniforms(program, first);
+        if ((variant & kDiffuseMapBit) != 0) {
+            MaterialMaps diffuseOnly;
+            diffuseOnly.diffuse = first.maps->diffuse;
+            bindMaterial(program, *first.material, diffuseOnly);
+        }
         // Culling splits a batch into runs of kept items, each one instanced draw.
         const std::size_t end = batch.firstItem + batch.itemCount;
         std::optional<std::size_t> runStart;

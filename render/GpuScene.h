@@ -39,8 +39,9 @@ struct GpuInstance {
     glm::vec4 diffuse;
     glm::vec4 specularShininess;
     glm::vec4 emissive;
+    glm::vec4 specularTint;
 };
-static_assert(sizeof(GpuInstance) == 160);
+static_assert(sizeof(GpuInstance) == 176);
 
 // std140 layout of shaders/lib/frame.glsl: Frame.
 struct FrameUniforms {
@@ -77,19 +78,21 @@ public:
     };
 
     // Draws every object (shaders/mesh.vert with lib/material.glsl): binds the instance buffer,
-    // and per batch uses programFor(the material's set of maps) (mesh programs are compiled per
-    // set, render/LightingPrograms.h; programFor may set the program's own uniforms), sets the
-    // batch's first record, the revolution uniforms and binds the material's maps (texture
-    // units 6-8, 15). Items sharing a mesh range without maps or a surface of revolution are
-    // one instanced draw (see batches()).
-    using MeshProgramFor = std::function<const gl::Program&(MaterialMapSet)>;
+    // and per batch uses programFor(the material's variant) (mesh programs are compiled per
+    // variant, render/LightingPrograms.h; programFor may set the program's own uniforms), sets
+    // the batch's first record, the revolution uniforms, binds the material's maps (texture
+    // units 6-8, 15) and culls back faces for single-sided materials (Sides::Front; culling is
+    // off again afterwards). Items sharing a mesh range, variant and sides without maps or a
+    // surface of revolution are one instanced draw (see batches()).
+    using MeshProgramFor = std::function<const gl::Program&(MaterialVariant)>;
     void drawObjects(const MeshProgramFor& programFor) const;
     // The union of the drawn objects' world bounds.
     Bounds objectsWorldBounds() const;
-    // Depth-only passes (shadow maps, shaders/shadow_depth.vert): draws the items whose world
-    // bounds pass `keep`, each run of kept items of a batch as one instanced draw; returns how
-    // many items were drawn.
-    std::size_t drawObjectsDepthOnly(const gl::Program& program, const std::function<bool(const Bounds&)>& keep) const;
+    // Depth-only passes (shadow maps, shaders/shadow_depth.*): draws the items whose world
+    // bounds pass `keep`, each run of kept items of a batch as one instanced draw, with
+    // programFor(depthOnlyVariant(the material's variant)) (an alpha-masked caster's program
+    // cuts its holes; the batch's diffuse map is bound for it); returns how many items were drawn.
+    std::size_t drawObjectsDepthOnly(const MeshProgramFor& programFor, const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
     // update) and the frame uniforms' time. A pure function of t: no state carries over.
@@ -132,6 +135,7 @@ private:
         std::size_t firstIndex;
         GLsizei indexCount;
         std::optional<std::size_t> material;  // the mesh file's own, if any
+        bool vertexColours = false;           // the mesh's Mesh::hasVertexColours
     };
     // A material's maps in the texture cache; null where the material has none.
     struct MaterialMaps {
@@ -139,6 +143,7 @@ private:
         const gl::MipmappedTexture2D* specular = nullptr;
         const gl::MipmappedTexture2D* normal = nullptr;
         const gl::MipmappedTexture2D* emissive = nullptr;
+        const gl::MipmappedTexture2D* metallicRoughness = nullptr;  // in the specular map's unit
     };
     struct DrawItem {
         glm::mat4 model;
@@ -151,9 +156,15 @@ private:
         Bounds meshBounds;   // object space; empty for light markers, which cast no shadows
         Bounds worldBounds;  // for culling depth-only passes against a light's volume
         std::size_t groupedIndex = 0;  // place after groupDrawsIntoBatches; breaks draw-order ties
+        MaterialVariant variant = 0;   // what the mesh program reads (materialVariant)
+        // A transform with a negative determinant mirrors the mesh, which reverses its winding:
+        // the front faces of a mirrored glTF mesh are clockwise (glTF 2.0, "Meshes").
+        bool mirrored = false;
     };
 
-    static MaterialMapSet mapSet(const MaterialMaps& maps);
+    static MaterialVariant materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range);
+    // Culling and front-face winding for a batch's material and mirroring.
+    static void setFaceState(const DrawItem& draw);
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
     void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
     void addLightMarkers(float radius);

@@ -31,23 +31,23 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
     return defines;
 }
 
-gl::Defines materialMapDefines(MaterialMapSet maps, gl::Defines defines)
+gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines)
 {
-    defines.emplace_back("MATERIAL_MAPS", std::to_string(maps));
+    defines.emplace_back("MATERIAL_VARIANT", std::to_string(variant));
     return defines;
 }
 
 const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source,
-                                            std::optional<MaterialMapSet> maps) const
+                                            std::optional<MaterialVariant> material) const
 {
-    const auto key = std::make_tuple(features, source, maps);
+    const auto key = std::make_tuple(features, source, material);
     auto found = variants_.find(key);
     if (found == variants_.end()) {
         gl::Defines defines = lightingFeatureDefines(features, defines_);
         if (source == LightSource::UniformWindow)
             addLightWindowDefines(defines);
-        if (maps)
-            defines = materialMapDefines(*maps, std::move(defines));
+        if (material)
+            defines = materialVariantDefines(*material, std::move(defines));
         found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;
     }
     return found->second;

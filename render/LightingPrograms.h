@@ -47,18 +47,31 @@ enum class LightSource : std::uint8_t {
                     // binds it with GpuScene::bindLightWindow
 };
 
-// Which texture maps a material has, one bit each. A mesh program (shaders/mesh.vert with a
-// fragment shader calling lib/material.glsl's meshSurface()) is compiled per set, with the set
-// as the constant MATERIAL_MAPS: llvmpipe runs both sides of a branch, so a branch on a uniform
-// would pay every map's lookups for every fragment (docs/performance.md).
-using MaterialMapSet = std::uint8_t;
-inline constexpr MaterialMapSet kDiffuseMapBit = 1;
-inline constexpr MaterialMapSet kSpecularMapBit = 2;
-inline constexpr MaterialMapSet kNormalMapBit = 4;
-inline constexpr MaterialMapSet kEmissiveMapBit = 8;
+// What a mesh program (shaders/mesh.vert with a fragment shader calling lib/material.glsl's
+// meshSurface()) reads for a material, one bit each: its texture maps, its alpha mask, its mesh's
+// vertex colours. A mesh program is compiled per variant, with the bits as the constant
+// MATERIAL_VARIANT: llvmpipe runs both sides of a branch, so a branch on a uniform would pay
+// every map's lookups for every fragment (docs/performance.md), and a `discard` that may run
+// keeps the depth test from running before the fragment shader.
+using MaterialVariant = std::uint8_t;
+inline constexpr MaterialVariant kDiffuseMapBit = 1;
+inline constexpr MaterialVariant kSpecularMapBit = 2;
+inline constexpr MaterialVariant kNormalMapBit = 4;
+inline constexpr MaterialVariant kEmissiveMapBit = 8;
+inline constexpr MaterialVariant kMetallicRoughnessMapBit = 16;  // in the specular map's unit
+inline constexpr MaterialVariant kAlphaMaskBit = 32;
+inline constexpr MaterialVariant kVertexColoursBit = 64;
+// The bits that mean a texture is bound per draw (such draws are not instanced).
+inline constexpr MaterialVariant kTextureBits =
+    kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit;
+// What a depth-only pass (shaders/shadow_depth.*) needs of a variant: a masked surface's coverage.
+inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
+{
+    return (variant & kAlphaMaskBit) != 0 ? variant & (kAlphaMaskBit | kDiffuseMapBit | kVertexColoursBit) : 0;
+}
 
-// `defines` plus MATERIAL_MAPS = `maps`.
-gl::Defines materialMapDefines(MaterialMapSet maps, gl::Defines defines);
+// `defines` plus MATERIAL_VARIANT = `variant`.
+gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines);
 
 class LightingProgram {
 public:
@@ -68,16 +81,16 @@ public:
     }
 
     // The variant for `features` reading the lights from `source`, for a mesh program also for
-    // the material's `maps`, compiled the first time it is asked for (throws manylights::Error
+    // the material's variant, compiled the first time it is asked for (throws manylights::Error
     // as gl::Program does).
     const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer,
-                               std::optional<MaterialMapSet> maps = std::nullopt) const;
+                               std::optional<MaterialVariant> material = std::nullopt) const;
 
 private:
     std::string label_;
     std::vector<gl::ShaderStage> stages_;
     gl::Defines defines_;
-    mutable std::map<std::tuple<LightingFeatures, LightSource, std::optional<MaterialMapSet>>, gl::Program> variants_;
+    mutable std::map<std::tuple<LightingFeatures, LightSource, std::optional<MaterialVariant>>, gl::Program> variants_;
 };
 
 }  // namespace manylights

@@ -88,8 +88,6 @@ glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBo
 ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     : sizes_(sizes),
       directionalMapSize_(sizes.directional),
-      depthProgram_("shadow depth",
-                    {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}),
       uniformBuffer_("shadowing uniforms", sizeof(ShadowingUniforms), nullptr)
 {
     // A 1x1 map until the directional light needs a real one: the shaders' sampler must
@@ -355,11 +353,29 @@ void ShadowMaps::drawDepthPass(const GpuScene& scene, GLuint framebuffer, int si
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
     scene.bind();
-    depthProgram_.set(kLightViewProjectionLocation, viewProjection);
-    scene.drawObjectsDepthOnly(depthProgram_, keep);
+    scene.drawObjectsDepthOnly(
+        [&](MaterialVariant variant) -> const gl::Program& {
+            const gl::Program& program = depthProgram(variant);
+            program.set(kLightViewProjectionLocation, viewProjection);
+            return program;
+        },
+        keep);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     ++passesRendered_;
+}
+
+const gl::Program& ShadowMaps::depthProgram(MaterialVariant variant)
+{
+    auto found = depthPrograms_.find(variant);
+    if (found == depthPrograms_.end())
+        found = depthPrograms_
+                    .emplace(variant, gl::Program("shadow depth",
+                                                  {{GL_VERTEX_SHADER, "shadow_depth.vert"},
+                                                   {GL_FRAGMENT_SHADER, "shadow_depth.frag"}},
+                                                  materialVariantDefines(variant, {})))
+                    .first;
+    return found->second;
 }
 
 void ShadowMaps::bind(bool ambientOcclusion)

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -136,7 +137,10 @@ private:
     bool directionalEnabled_ = true;
     gl::Texture2D directionalMap_;
     gl::Framebuffer directionalFramebuffer_;
-    gl::Program depthProgram_;
+    // The depth pass's programs per depth-only material variant (render/LightingPrograms.h:
+    // depthOnlyVariant; 0 for every caster without an alpha mask), compiled on first use.
+    const gl::Program& depthProgram(MaterialVariant variant);
+    std::map<MaterialVariant, gl::Program> depthPrograms_;
     gl::Buffer uniformBuffer_;
     ShadowingUniforms uniforms_;
 

@@ -147,7 +147,8 @@ private:
     // author meant (an error); one that only uses another is drawn without it (a warning).
     void checkExtensions()
     {
-        const std::set<std::string> supported{"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+        const std::set<std::string> supported{"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                              "KHR_texture_transform"};
         for (const std::string& name : gltf_.extensionsRequired)
             if (!supported.contains(name))
                 fail("requires the extension " + name + ", which manylights does not read");
@@ -544,6 +545,7 @@ private:
         const auto normals = attribute("NORMAL");
         const auto uvs = attribute("TEXCOORD_0");
         const auto tangents = attribute("TANGENT");
+        const auto colours = attribute("COLOR_0");
         const auto sameCount = [&](const std::optional<AccessorView>& view, const char* name, int components,
                                    bool normalizedInts) {
             if (!view)
@@ -556,6 +558,11 @@ private:
         sameCount(normals, "NORMAL", 3, false);
         sameCount(uvs, "TEXCOORD_0", 2, true);
         sameCount(tangents, "TANGENT", 4, false);
+        if (colours) {
+            // RGB or RGBA, floats or normalised unsigned bytes/shorts (glTF 2.0, "Meshes").
+            sameCount(colours, "COLOR_0", colours->components == 3 ? 3 : 4, true);
+            mesh.hasVertexColours = true;
+        }
 
         // The primitive's corner list: its indices, or 0..n−1 when it has none.
         std::vector<std::uint32_t> corners;
@@ -615,6 +622,14 @@ private:
                 // glTF's uv origin is the image's top-left corner; ours (OBJ, GL, the texture
                 // cache's bottom-up rows) the bottom-left.
                 vertex.uv.y = 1.0f - vertex.uv.y;
+            }
+            if (colours) {
+                vertex.colour = colours->components == 3 ? glm::vec4(readVector<3>(*colours, i), 1.0f)
+                                                         : readVector<4>(*colours, i);
+                if (!std::isfinite(vertex.colour.r + vertex.colour.g + vertex.colour.b + vertex.colour.a))
+                    fail(where + ".COLOR_0: element " + std::to_string(i) + " is not finite");
+                // Colours are linear and in [0, 1] by the specification; anything outside is clamped.
+                vertex.colour = glm::clamp(vertex.colour, 0.0f, 1.0f);
             }
             if (tangents) {
                 vertex.tangent = readVector<4>(*tangents, i);
@@ -719,17 +734,22 @@ private:
             fail(where + ": metallicFactor and roughnessFactor must be in [0, 1]");
         Material material;
         material.name = displayName_ + "#" + (source.name.empty() ? where : source.name);
-        // Metallic-roughness to Blinn-Phong: metals have no diffuse and a coloured specular,
-        // dielectrics a 4% grey specular; roughness⁴ is the Beckmann slope variance whose
-        // matching Blinn-Phong exponent is 2/α² − 2 with α = roughness².
+        // Metallic-roughness to Blinn-Phong: metals have no diffuse and a specular of the base
+        // colour, dielectrics a 4% grey specular (Material::specularTint holds the base-colour
+        // part); roughness gives the exponent (blinnPhongExponent). The shader repeats this per
+        // texel when the material has a metallic-roughness map (shaders/lib/material.glsl).
         material.diffuse = baseColour * (1.0f - metallic);
-        material.specular = glm::mix(glm::vec3{0.04f}, baseColour, metallic);
-        const float alpha4 = std::pow(std::max(roughness, 1e-3f), 4.0f);
-        material.shininess = std::clamp(2.0f / alpha4 - 2.0f, 1.0f, kMaxShininess);
+        material.specular = glm::vec3{0.04f * (1.0f - metallic)};
+        material.specularTint = baseColour * metallic;
+        material.shininess = blinnPhongExponent(roughness);
+        material.metallicFactor = metallic;
+        material.roughnessFactor = roughness;
         material.emissive = colour(source.emissiveFactor, 3, "emissiveFactor");
-        material.diffuseMap = texturePath(pbr.baseColorTexture.index, where + ".baseColorTexture");
-        material.emissiveMap = texturePath(source.emissiveTexture.index, where + ".emissiveTexture");
-        material.normalMap = texturePath(source.normalTexture.index, where + ".normalTexture");
+        material.diffuseMap = texturePath(pbr.baseColorTexture, where + ".baseColorTexture", material, kDiffuseSlot);
+        material.metallicRoughnessMap =
+            texturePath(pbr.metallicRoughnessTexture, where + ".metallicRoughnessTexture", material, kSpecularSlot);
+        material.emissiveMap = texturePath(source.emissiveTexture, where + ".emissiveTexture", material, kEmissiveSlot);
+        material.normalMap = texturePath(source.normalTexture, where + ".normalTexture", material, kNormalSlot);
         material.normalScale = static_cast<float>(source.normalTexture.scale);
         if (!std::isfinite(material.normalScale))
             fail(where + ".normalTexture: scale is not finite");
@@ -741,14 +761,88 @@ private:
                 fail(where + ": KHR_materials_emissive_strength.emissiveStrength must be a finite number >= 0");
             material.emissive *= static_cast<float>(value);
         }
-        // What the Blinn-Phong material cannot show yet, said once per kind and file.
-        if (source.alphaMode == "MASK" || source.alphaMode == "BLEND")
-            warnings_.noteFile("alphaMode " + source.alphaMode,
-                               where + ": alphaMode " + source.alphaMode + " is drawn opaque (alpha is not read yet)");
-        if (pbr.metallicRoughnessTexture.index >= 0)
-            warnings_.noteFile("metallicRoughnessTexture",
-                               where + ": metallicRoughnessTexture is not read; its metallic and roughness factors are");
+        readCoverage(source, where, material);
+        material.sides = source.doubleSided ? Sides::BothFlipped : Sides::Front;
         return material;
+    }
+
+    // alphaMode, alphaCutoff and the base colour's alpha. BLEND needs transparency, which the
+    // renderer does not draw yet: such a material is cut at 0.5 as MASK, with one warning per file.
+    void readCoverage(const tinygltf::Material& source, const std::string& where, Material& material)
+    {
+        const double alpha = source.pbrMetallicRoughness.baseColorFactor[3];
+        if (!std::isfinite(alpha) || alpha < 0.0)
+            fail(where + ": baseColorFactor's alpha must be a finite number >= 0");
+        material.opacity = static_cast<float>(std::min(alpha, 1.0));
+        if (source.alphaMode == "MASK") {
+            if (!std::isfinite(source.alphaCutoff) || source.alphaCutoff < 0.0)
+                fail(where + ": alphaCutoff must be a finite number >= 0");
+            material.alphaMode = AlphaMode::Mask;
+            material.alphaCutoff = static_cast<float>(source.alphaCutoff);
+        } else if (source.alphaMode == "BLEND") {
+            material.alphaMode = AlphaMode::Mask;
+            material.alphaCutoff = 0.5f;
+            warnings_.noteFile("alphaMode BLEND",
+                               where + ": alphaMode BLEND is drawn as MASK with alphaCutoff 0.5 (no transparency yet)");
+        } else if (source.alphaMode != "OPAQUE") {
+            warnings_.noteFile("alphaMode " + source.alphaMode,
+                               where + ": unknown alphaMode '" + source.alphaMode + "'; drawn OPAQUE");
+        }
+    }
+
+    // A texture reference's path, with its KHR_texture_transform (if any) stored in the
+    // material's slot. Only TEXCOORD_0 is read: another set is drawn with it, with a warning.
+    template <typename TextureReference>
+    std::string texturePath(const TextureReference& reference, const std::string& where, Material& material,
+                            MaterialMapSlot slot)
+    {
+        if (reference.index < 0)
+            return {};
+        int texCoord = reference.texCoord;
+        if (const auto found = reference.extensions.find("KHR_texture_transform"); found != reference.extensions.end()) {
+            material.uvTransforms[slot] = uvTransform(found->second, where + ".KHR_texture_transform");
+            const tinygltf::Value& set = found->second.Get("texCoord");
+            if (set.IsInt())
+                texCoord = set.GetNumberAsInt();
+        }
+        if (texCoord != 0)
+            warnings_.noteFile("texCoord", where + ": texCoord " + std::to_string(texCoord) +
+                                               " is not read; the texture is drawn with TEXCOORD_0");
+        return texturePath(reference.index, where);
+    }
+
+    // KHR_texture_transform's uv' = T · R · S · uv in glTF's uv convention (origin at the top
+    // left), conjugated by the v flip readPrimitive applies (F: v → 1 − v, its own inverse), so
+    // that it applies to our uvs: F · T · R · S · F.
+    glm::mat3 uvTransform(const tinygltf::Value& extension, const std::string& where) const
+    {
+        const auto numbers = [&](const char* key, glm::vec2 fallback) {
+            const tinygltf::Value& value = extension.Get(key);
+            if (!value.IsArray())
+                return fallback;
+            if (value.ArrayLen() != 2 || !value.Get(0).IsNumber() || !value.Get(1).IsNumber())
+                fail(where + ": " + key + " needs 2 numbers");
+            return glm::vec2(value.Get(0).GetNumberAsDouble(), value.Get(1).GetNumberAsDouble());
+        };
+        const glm::vec2 offset = numbers("offset", glm::vec2{0.0f});
+        const glm::vec2 scale = numbers("scale", glm::vec2{1.0f});
+        const tinygltf::Value& rotationValue = extension.Get("rotation");
+        const float rotation = rotationValue.IsNumber() ? static_cast<float>(rotationValue.GetNumberAsDouble()) : 0.0f;
+        if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation))
+            fail(where + ": offset, rotation and scale must be finite");
+        // glm matrices are column-major: m[column][row].
+        glm::mat3 translation{1.0f};
+        translation[2] = glm::vec3(offset, 1.0f);
+        glm::mat3 turn{1.0f};
+        turn[0] = glm::vec3(std::cos(rotation), -std::sin(rotation), 0.0f);
+        turn[1] = glm::vec3(std::sin(rotation), std::cos(rotation), 0.0f);
+        glm::mat3 scaling{1.0f};
+        scaling[0][0] = scale.x;
+        scaling[1][1] = scale.y;
+        glm::mat3 flip{1.0f};
+        flip[1][1] = -1.0f;
+        flip[2][1] = 1.0f;
+        return flip * translation * turn * scaling * flip;
     }
 
     // The path (or Scene::encodedImages key) of a texture's image; empty without a texture.
@@ -871,6 +965,13 @@ std::string_view gltfJsonText(const std::vector<unsigned char>& bytes)
 }
 
 }  // namespace
+
+float blinnPhongExponent(float roughness)
+{
+    // The same float operations as shaders/lib/material.glsl, so both give the same exponent.
+    const float r2 = std::max(roughness, 1e-3f) * std::max(roughness, 1e-3f);
+    return std::clamp(2.0f / (r2 * r2) - 2.0f, 1.0f, kMaxShininess);
+}
 
 Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string& displayName,
                      const fs::path& baseDirectory, const GltfOptions& options)

@@ -2,6 +2,7 @@
 // No GL here: the render layer uploads this data, tests inspect it directly.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -105,6 +106,24 @@ struct LightSet {
     std::optional<LightAnimation> animation{};
 };
 
+// The texture slots of a material, in the order of Material::uvTransforms and of the shaders'
+// uv transform array (shaders/lib/material.glsl). The metallic-roughness map takes the specular
+// map's slot: a material has one or the other (a glTF material never has a specular map).
+enum MaterialMapSlot : std::size_t { kDiffuseSlot, kSpecularSlot, kNormalSlot, kEmissiveSlot, kMaterialMapSlots };
+
+enum class AlphaMode : std::uint8_t { Opaque, Mask };
+
+// Which faces of a material's triangles are drawn, and with which normal.
+enum class Sides : std::uint8_t {
+    // Scene-file and OBJ materials: both faces, each lit with the mesh's normal as given. OBJ
+    // files' winding is not reliable (their normals are), so no face is culled or flipped.
+    BothWithMeshNormal,
+    // glTF doubleSided false: back faces (clockwise on screen) are culled.
+    Front,
+    // glTF doubleSided true: both faces, a back face lit with the reversed normal.
+    BothFlipped,
+};
+
 struct Material {
     std::string name;
     glm::vec3 diffuse{0.8f};
@@ -121,6 +140,31 @@ struct Material {
     // Scene::encodedImages (an image embedded in a glTF file) instead of a file.
     float normalScale = 1.0f;
     std::string emissiveMap;
+
+    // glTF's metallic-roughness material (docs/scene-format.md, "Model files"), mapped to the
+    // terms above as: diffuse = base · (1 − metallic), specular = 0.04 · (1 − metallic) and
+    // specularTint = base · metallic. The tint is the part of the specular colour that is the
+    // base colour: the diffuse map and vertex colours multiply it as they multiply `diffuse`,
+    // and the surface's specular colour is specular + specularTint (zero for other materials).
+    glm::vec3 specularTint{0.0f};
+    // glTF metallicRoughnessTexture (roughness in G, metallic in B, linear): with it, the shader
+    // redoes the mapping per texel from the factors times the texel (shaders/lib/material.glsl).
+    std::string metallicRoughnessMap;
+    float metallicFactor = 0.0f;
+    float roughnessFactor = 1.0f;
+
+    // Texture-coordinate transforms per map slot (glTF KHR_texture_transform), in the mesh's uv
+    // convention (origin at the bottom left): uv' = M · (u, v, 1). Identity unless a file says.
+    std::array<glm::mat3, kMaterialMapSlots> uvTransforms{glm::mat3{1.0f}, glm::mat3{1.0f}, glm::mat3{1.0f},
+                                                          glm::mat3{1.0f}};
+
+    // Coverage: opacity (glTF baseColorFactor's alpha) times the diffuse map's alpha times the
+    // vertex colour's alpha. Mask cuts the surface where that falls below alphaCutoff (in every
+    // pass, the shadow maps' too); Opaque ignores it.
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    float opacity = 1.0f;
+    Sides sides = Sides::BothWithMeshNormal;
 };
 
 struct Vertex {
@@ -131,6 +175,9 @@ struct Vertex {
     // w the handedness (±1; bitangent = w · cross(normal, tangent)). All zero when the mesh has
     // no texture coordinates to derive it from.
     glm::vec4 tangent{0.0f};
+    // Multiplies the material's base colour (glTF COLOR_0; alpha joins the coverage). White
+    // unless the file gives colours (Mesh::hasVertexColours).
+    glm::vec4 colour{1.0f};
 };
 
 // A range of a mesh's index list drawn with one material: a model file may give different
@@ -161,6 +208,8 @@ struct Mesh {
     std::vector<std::uint32_t> indices;
     // Empty: the whole index list is one range drawn with the object's material.
     std::vector<SubMesh> subMeshes;
+    // Whether any vertex has a colour other than white: only then do the shaders read it.
+    bool hasVertexColours = false;
     Bounds bounds() const;
 };
 

@@ -5,10 +5,15 @@
 #include "lib/instances.glsl"
 #include "lib/revolution.glsl"
 
+#ifndef MATERIAL_VARIANT
+#error "a mesh program is compiled for one material variant (MATERIAL_VARIANT)"
+#endif
+
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inTangent;  // xyz tangent, w handedness; zero without uvs
+layout(location = 4) in vec4 inColour;   // glTF COLOR_0; read by vertex-colour variants only
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -19,6 +24,12 @@ layout(location = 4) flat out vec3 materialDiffuse;
 layout(location = 5) flat out vec3 materialSpecular;
 layout(location = 6) flat out float materialShininess;
 layout(location = 7) flat out vec3 materialEmissive;
+layout(location = 8) flat out vec3 materialSpecularTint;
+layout(location = 9) flat out vec2 materialAlpha;  // opacity, cutoff
+layout(location = 10) flat out float materialFlipBackFaces;
+#if (MATERIAL_VARIANT & 64) != 0  // kVertexColoursBit
+layout(location = 11) out vec4 vertexColour;
+#endif
 
 void main()
 {
@@ -39,5 +50,11 @@ void main()
     materialSpecular = instance.specularShininess.rgb;
     materialShininess = instance.specularShininess.w;
     materialEmissive = instance.emissive.rgb;
+    materialSpecularTint = instance.specularTint.rgb;
+    materialAlpha = vec2(instance.diffuse.w, instance.emissive.w);
+    materialFlipBackFaces = instance.specularTint.w;
+#if (MATERIAL_VARIANT & 64) != 0
+    vertexColour = inColour;
+#endif
     gl_Position = frame.viewProjection * world;
 }

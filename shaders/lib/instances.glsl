@@ -7,9 +7,11 @@
 struct Instance {
     mat4 model;
     vec4 normalMatrix[3];   // columns of the inverse-transpose of the model's upper 3x3 (w unused)
-    vec4 diffuse;           // rgb, w unused
+    vec4 diffuse;           // rgb, w opacity (coverage before maps and vertex colours)
     vec4 specularShininess; // rgb specular, w shininess
-    vec4 emissive;          // rgb, w unused
+    vec4 emissive;          // rgb, w alpha cutoff (read by alpha-masked variants only)
+    vec4 specularTint;      // rgb base colour · metallic (scene/Scene.h), w 1: back faces lit
+                            // with the reversed normal (Sides::BothFlipped), else 0
 };
 
 layout(std430, binding = 8) readonly buffer Instances {

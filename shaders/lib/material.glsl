@@ -9,18 +9,37 @@ layout(location = 4) flat in vec3 materialDiffuse;
 layout(location = 5) flat in vec3 materialSpecular;
 layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
-// Which maps the material has: bit 0 diffuse, bit 1 specular, bit 2 normal, bit 3 emissive
-// (render/LightingPrograms.h: MaterialMapSet). A missing map leaves the constant as it is.
-// A compile-time constant, one program per set: llvmpipe runs both sides of a branch under a
-// lane mask, so branching on a uniform would pay every map's lookups for every fragment.
-#ifndef MATERIAL_MAPS
-#error "a mesh program is compiled for one set of material maps (MATERIAL_MAPS)"
+layout(location = 8) flat in vec3 materialSpecularTint;  // base colour · metallic (scene/Scene.h)
+layout(location = 9) flat in vec2 materialAlpha;         // opacity, alpha cutoff
+layout(location = 10) flat in float materialFlipBackFaces;
+// What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
+// 4 metallic-roughness map, 5 alpha mask, 6 vertex colours (render/LightingPrograms.h:
+// MaterialVariant). A missing map leaves the constant as it is. A compile-time constant, one
+// program per variant: llvmpipe runs both sides of a branch under a lane mask, so branching on a
+// uniform would pay every map's lookups for every fragment, and a discard that can never run
+// would still keep the depth test from running before the shader.
+#ifndef MATERIAL_VARIANT
+#error "a mesh program is compiled for one material variant (MATERIAL_VARIANT)"
 #endif
-const int materialMaps = MATERIAL_MAPS;
+const int materialVariant = MATERIAL_VARIANT;
+#if (MATERIAL_VARIANT & 64) != 0
+layout(location = 11) in vec4 vertexColour;  // glTF COLOR_0
+#endif
 layout(location = 15) uniform float materialNormalScale;  // glTF normalTexture.scale
+// glTF metallicFactor and roughnessFactor, for the metallic-roughness map's per-texel mapping.
+layout(location = 16) uniform vec2 materialMetallicRoughness;
+// Each map's uv transform (glTF KHR_texture_transform; scene/Scene.h Material::uvTransforms),
+// after the light batch's location 40 (render/LightBatches.h):
+// uv' = M · (u, v, 1). Set per draw for the maps the draw binds.
+layout(location = 50) uniform mat3x2 diffuseUvTransform;
+layout(location = 53) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's
+layout(location = 56) uniform mat3x2 normalUvTransform;
+layout(location = 59) uniform mat3x2 emissiveUvTransform;
 
 layout(binding = 6) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
-layout(binding = 7) uniform sampler2D specularMap;  // linear
+// Linear. A Blinn-Phong specular map, or (bit 4) glTF's metallic-roughness map: G roughness,
+// B metallic. A material has one or the other.
+layout(binding = 7) uniform sampler2D specularMap;
 layout(binding = 8) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
 // Unit 15: units 9-14 hold the shadow and occlusion maps (shaders/lib/shadows.glsl).
 layout(binding = 15) uniform sampler2D emissiveMap;  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
@@ -34,6 +53,9 @@ const int kHasDiffuseMap = 1;
 const int kHasSpecularMap = 2;
 const int kHasNormalMap = 4;
 const int kHasEmissiveMap = 8;
+const int kHasMetallicRoughnessMap = 16;
+const int kAlphaMask = 32;
+const int kHasVertexColours = 64;
 
 // The normal map's tangent-space normal, taken to world space: the interpolated tangent is
 // re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
@@ -45,30 +67,68 @@ vec3 normalMapped(vec3 N)
         return N;
     T = normalize(T);
     vec3 B = (worldTangent.w < 0.0 ? -1.0 : 1.0) * cross(N, T);
-    vec3 t = texture(normalMap, uv).xyz * 2.0 - 1.0;
+    vec3 t = texture(normalMap, normalUvTransform * vec3(uv, 1.0)).xyz * 2.0 - 1.0;
     t.xy *= materialNormalScale;
     vec3 mapped = T * t.x + B * t.y + N * t.z;
     return dot(mapped, mapped) > 0.0 ? normalize(mapped) : N;
+}
+
+// scene/GltfLoader.h blinnPhongExponent, to the same float operations.
+float blinnPhongExponent(float roughness)
+{
+    float r2 = max(roughness, 1e-3) * max(roughness, 1e-3);
+    return clamp(2.0 / (r2 * r2) - 2.0, 1.0, 2048.0);
 }
 
 Surface meshSurface()
 {
     Surface s;
     s.position = worldPosition;
-    s.normal = normalize(worldNormal);
-    s.diffuse = materialDiffuse;
-    s.specular = materialSpecular;
-    // materialMaps is a constant, so the compiler drops the branches of absent maps and the
+    // What multiplies the base colour (diffuse and specular tint) and the coverage.
+    vec3 base = vec3(1.0);
+    float coverage = materialAlpha.x;
+    // materialVariant is a constant, so the compiler drops the branches of absent maps and the
     // implicit derivatives of texture() are defined.
-    if ((materialMaps & kHasDiffuseMap) != 0)
-        s.diffuse *= texture(diffuseMap, uv).rgb;
-    if ((materialMaps & kHasSpecularMap) != 0)
-        s.specular *= texture(specularMap, uv).rgb;
-    if ((materialMaps & kHasNormalMap) != 0)
-        s.normal = normalMapped(s.normal);
+    if ((materialVariant & kHasVertexColours) != 0) {
+#if (MATERIAL_VARIANT & 64) != 0
+        base = vertexColour.rgb;
+        coverage *= vertexColour.a;
+#endif
+    }
+    if ((materialVariant & kHasDiffuseMap) != 0) {
+        vec4 texel = texture(diffuseMap, diffuseUvTransform * vec3(uv, 1.0));
+        base *= texel.rgb;
+        coverage *= texel.a;
+    }
+    // glTF alphaMode MASK: fully there at or above the cutoff, absent below it. The same test
+    // cuts the shadow casters (shaders/shadow_depth.frag).
+    if ((materialVariant & kAlphaMask) != 0 && coverage < materialAlpha.y)
+        discard;
+    s.diffuse = materialDiffuse * base;
+    s.specular = materialSpecular;
+    if ((materialVariant & kHasSpecularMap) != 0)
+        s.specular *= texture(specularMap, specularUvTransform * vec3(uv, 1.0)).rgb;
+    s.specular += materialSpecularTint * base;
     s.shininess = materialShininess;
+    if ((materialVariant & kHasMetallicRoughnessMap) != 0) {
+        // The loader's mapping (scene/Scene.h Material) per texel: diffuse + tint is the base
+        // colour, the factors times the texel are this point's metallic and roughness.
+        vec2 roughnessMetallic = texture(specularMap, specularUvTransform * vec3(uv, 1.0)).gb;
+        float metallic = materialMetallicRoughness.x * roughnessMetallic.y;
+        vec3 baseColour = (materialDiffuse + materialSpecularTint) * base;
+        s.diffuse = baseColour * (1.0 - metallic);
+        s.specular = vec3(0.04 * (1.0 - metallic)) + baseColour * metallic;
+        s.shininess = blinnPhongExponent(materialMetallicRoughness.y * roughnessMetallic.x);
+    }
+    s.normal = normalize(worldNormal);
+    if ((materialVariant & kHasNormalMap) != 0)
+        s.normal = normalMapped(s.normal);
+    // glTF doubleSided: a back face is lit as the front face of the other side (the normal map's
+    // whole frame reversed, which reverses its result).
+    if (materialFlipBackFaces != 0.0 && !gl_FrontFacing)
+        s.normal = -s.normal;
     s.emissive = materialEmissive;
-    if ((materialMaps & kHasEmissiveMap) != 0)
-        s.emissive *= texture(emissiveMap, uv).rgb;
+    if ((materialVariant & kHasEmissiveMap) != 0)
+        s.emissive *= texture(emissiveMap, emissiveUvTransform * vec3(uv, 1.0)).rgb;
     return withTermSwitches(s);
 }

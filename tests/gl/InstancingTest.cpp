@@ -104,7 +104,7 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     // The GL draws every instance: every object's triangles and every marker's.
     const LightingProgram programs("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                                    {});
-    const auto programFor = [&](MaterialMapSet maps) -> const gl::Program& {
+    const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {
         return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
     };
     gpuScene.setViewport(64, 64);
@@ -115,14 +115,15 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     // Shadow casters: every object and no marker, with or without culling splitting batches.
     gl::Program depthProgram("shadow depth",
                              {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}});
+    const auto depthProgramFor = [&](MaterialVariant) -> const gl::Program& { return depthProgram; };
     std::size_t drawn = 0;
-    EXPECT_EQ(primitivesGenerated([&] { drawn = gpuScene.drawObjectsDepthOnly(depthProgram, [](const Bounds&) { return true; }); }),
+    EXPECT_EQ(primitivesGenerated([&] { drawn = gpuScene.drawObjectsDepthOnly(depthProgramFor, [](const Bounds&) { return true; }); }),
               objectTriangles);
     EXPECT_EQ(drawn, objectItems);
     // Every other kept item: the culled items' triangles are not drawn.
     std::size_t asked = 0;
     const GLuint halfPrimitives = primitivesGenerated([&] {
-        drawn = gpuScene.drawObjectsDepthOnly(depthProgram, [&](const Bounds&) { return asked++ % 2 == 0; });
+        drawn = gpuScene.drawObjectsDepthOnly(depthProgramFor, [&](const Bounds&) { return asked++ % 2 == 0; });
     });
     EXPECT_EQ(asked, objectItems);
     EXPECT_EQ(drawn, (objectItems + 1) / 2);

@@ -93,11 +93,11 @@ TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
 {
     const LightingProgram program("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                                   {});
-    const gl::Program& plain = program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{0});
+    const gl::Program& plain = program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0});
     const gl::Program& textured =
-        program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{kDiffuseMapBit | kSpecularMapBit});
+        program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{kDiffuseMapBit | kSpecularMapBit});
     EXPECT_NE(plain.id(), textured.id());
-    EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialMapSet{0}), &plain);
+    EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0}), &plain);
     // The normal map's scale is a uniform only of the programs that sample a normal map
     // (render/GpuScene.cpp sets it only for them).
     EXPECT_EQ(glGetUniformLocation(textured.id(), "materialNormalScale"), -1);

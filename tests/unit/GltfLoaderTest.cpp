@@ -149,23 +149,24 @@ GltfBuilder exampleGltf()
 
 // Extensions: one a file requires but manylights does not read is an error; one it only uses
 // is a warning (once), and the file is drawn. KHR_materials_emissive_strength scales the
-// emissive colour. What a material has that is not drawn yet is said once per kind.
+// emissive colour. What a material has that is not drawn as the file means is said once per kind.
 TEST(GltfModel, ExtensionsAndMaterialFeaturesReadOrSaid)
 {
     GltfBuilder b = exampleGltf();
     b.gltf["materials"][0]["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}}};
-    b.gltf["materials"][0]["alphaMode"] = "MASK";
+    b.gltf["materials"][0]["alphaMode"] = "BLEND";
     b.gltf["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform",
                                 "EXT_unknown"};
+    b.gltf["extensionsRequired"] = {"KHR_texture_transform"};
     Warnings warnings;
     const Model model = b.load({.warnings = &warnings});
     ASSERT_EQ(model.materials.size(), 1u);
     EXPECT_NEAR(model.materials[0].emissive.x, 0.5f, 1e-6f);
     EXPECT_NEAR(model.materials[0].emissive.z, 1.5f, 1e-6f);
-    ASSERT_EQ(warnings.messages().size(), 3u);
-    EXPECT_EQ(warnings.messages()[0], "test.gltf: the extension KHR_texture_transform is not read; the file is drawn without it");
-    EXPECT_EQ(warnings.messages()[1], "test.gltf: the extension EXT_unknown is not read; the file is drawn without it");
-    EXPECT_EQ(warnings.messages()[2], "test.gltf: materials[0]: alphaMode MASK is drawn opaque (alpha is not read yet)");
+    ASSERT_EQ(warnings.messages().size(), 2u);
+    EXPECT_EQ(warnings.messages()[0], "test.gltf: the extension EXT_unknown is not read; the file is drawn without it");
+    EXPECT_EQ(warnings.messages()[1],
+              "test.gltf: materials[0]: alphaMode BLEND is drawn as MASK with alphaCutoff 0.5 (no transparency yet)");
     // Strict: the first is the error.
     Warnings strict(true);
     EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), warnings.messages()[0]);
@@ -173,6 +174,98 @@ TEST(GltfModel, ExtensionsAndMaterialFeaturesReadOrSaid)
     b.gltf["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     EXPECT_EQ(errorOf([&] { b.load(); }),
               "test.gltf: requires the extension KHR_draco_mesh_compression, which manylights does not read");
+}
+
+// alphaMode, alphaCutoff, the base colour's alpha and doubleSided (glTF 2.0, "Materials").
+TEST(GltfModel, AlphaModesAndSidesAreRead)
+{
+    GltfBuilder b = exampleGltf();
+    Json& material = b.gltf["materials"][0];
+    EXPECT_EQ(b.load().materials[0].alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(b.load().materials[0].sides, Sides::Front);  // single-sided: back faces culled
+
+    material["alphaMode"] = "MASK";
+    material["alphaCutoff"] = 0.25;
+    material["pbrMetallicRoughness"]["baseColorFactor"][3] = 0.75;
+    material["doubleSided"] = true;
+    Warnings warnings;
+    const Material masked = b.load({.warnings = &warnings}).materials[0];
+    EXPECT_TRUE(warnings.messages().empty());
+    EXPECT_EQ(masked.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(masked.alphaCutoff, 0.25f);
+    EXPECT_EQ(masked.opacity, 0.75f);
+    EXPECT_EQ(masked.sides, Sides::BothFlipped);
+
+    material.erase("alphaCutoff");  // the default cutoff
+    EXPECT_EQ(b.load().materials[0].alphaCutoff, 0.5f);
+    material["alphaMode"] = "BLEND";
+    material["alphaCutoff"] = 0.9;  // ignored: BLEND is cut at 0.5
+    const Material blended = b.load().materials[0];
+    EXPECT_EQ(blended.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(blended.alphaCutoff, 0.5f);
+    material["alphaMode"] = "TRANSLUCENT";
+    Warnings unknown;
+    EXPECT_EQ(b.load({.warnings = &unknown}).materials[0].alphaMode, AlphaMode::Opaque);
+    ASSERT_EQ(unknown.messages().size(), 1u);
+    EXPECT_EQ(unknown.messages()[0], "test.gltf: materials[0]: unknown alphaMode 'TRANSLUCENT'; drawn OPAQUE");
+
+    material["alphaMode"] = "MASK";
+    material["alphaCutoff"] = -1.0;
+    EXPECT_EQ(errorOf([&] { b.load(); }), "test.gltf: materials[0]: alphaCutoff must be a finite number >= 0");
+}
+
+// KHR_texture_transform: uv' = T · R · S · uv in glTF's uvs, stored for our flipped v.
+TEST(GltfModel, TextureTransformsAreStoredPerMapForFlippedUvs)
+{
+    GltfBuilder b = exampleGltf();
+    b.gltf["images"] = Json::array({{{"uri", "data:image/png;base64,iVBORw0KGgo="}}});
+    b.gltf["textures"] = Json::array({{{"source", 0}}});
+    Json& pbr = b.gltf["materials"][0]["pbrMetallicRoughness"];
+    pbr["baseColorTexture"] = {
+        {"index", 0},
+        {"extensions",
+         {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", std::numbers::pi / 2}, {"scale", {2, 3}}}}}}};
+    pbr["metallicRoughnessTexture"] = {{"index", 0}, {"texCoord", 1}};
+    b.gltf["materials"][0]["emissiveTexture"] = {{"index", 0}};
+    Warnings warnings;
+    const Material material = b.load({.warnings = &warnings}).materials[0];
+    EXPECT_FALSE(material.diffuseMap.empty());
+    EXPECT_EQ(material.metallicRoughnessMap, material.diffuseMap);
+    // glTF uv (0.1, 0.2): scaled (0.2, 0.6); turned by R = [cos sin; −sin cos] at 90°: (0.6, −0.2);
+    // moved: (1.1, 0.05). In our uvs: (0.1, 0.8) → (1.1, 0.95).
+    const glm::vec3 moved = material.uvTransforms[kDiffuseSlot] * glm::vec3(0.1f, 0.8f, 1.0f);
+    EXPECT_NEAR(moved.x, 1.1f, 1e-6f);
+    EXPECT_NEAR(moved.y, 0.95f, 1e-6f);
+    EXPECT_EQ(moved.z, 1.0f);
+    EXPECT_EQ(material.uvTransforms[kEmissiveSlot], glm::mat3{1.0f});
+    // A second uv set is not read: said, and drawn with the first.
+    ASSERT_EQ(warnings.messages().size(), 1u);
+    EXPECT_EQ(warnings.messages()[0], "test.gltf: materials[0].metallicRoughnessTexture: texCoord 1 is not read; the "
+                                      "texture is drawn with TEXCOORD_0");
+}
+
+// COLOR_0: RGB floats or RGBA normalised bytes, white without; Mesh::hasVertexColours says so.
+TEST(GltfModel, VertexColoursAreRead)
+{
+    GltfBuilder b = exampleGltf();
+    EXPECT_FALSE(b.load().meshes[0].hasVertexColours);
+    const float rgb[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5f, 0.5f, 0.5f};
+    const std::uint8_t rgba[] = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0, 51, 51, 51, 51};
+    const int floats = b.view(rgb, sizeof rgb, 4, "VEC3", 5126);
+    const int bytes = b.view(rgba, sizeof rgba, 4, "VEC4", 5121);
+    b.gltf["accessors"][static_cast<std::size_t>(bytes)]["normalized"] = true;
+    Json& primitives = b.gltf["meshes"][0]["primitives"];
+    primitives[0]["attributes"]["COLOR_0"] = floats;
+    primitives[1]["attributes"]["COLOR_0"] = bytes;
+    const Mesh mesh = b.load().meshes[0];
+    EXPECT_TRUE(mesh.hasVertexColours);
+    EXPECT_EQ(mesh.vertices[mesh.indices[2]].colour, glm::vec4(0, 0, 1, 1));      // primitive 0, corner 2
+    EXPECT_EQ(mesh.vertices[mesh.indices[6 + 1]].colour, glm::vec4(0, 1, 0, 128.0f / 255.0f));  // primitive 1, corner 1
+    EXPECT_EQ(mesh.vertices[mesh.indices[12]].colour, glm::vec4(1.0f));           // primitive 2 has none
+
+    b.gltf["accessors"][static_cast<std::size_t>(bytes)]["normalized"] = false;
+    EXPECT_EQ(errorOf([&] { b.load(); }).rfind("test.gltf: meshes[0].primitives[1].COLOR_0: expected 4 float components", 0),
+              0u);
 }
 
 TEST(GltfModel, HierarchyPrimitivesAndIndexWidths)
@@ -208,9 +301,13 @@ TEST(GltfModel, MetallicRoughnessMapsToBlinnPhong)
     const Model model = exampleGltf().load();
     ASSERT_EQ(model.materials.size(), 1u);
     const Material& m = model.materials[0];
-    // kd = base · (1 − metallic), ks = mix(0.04, base, metallic), s = 2/roughness⁴ − 2.
+    // kd = base · (1 − metallic), ks = 0.04 · (1 − metallic) plus the tint base · metallic,
+    // s = 2/roughness⁴ − 2.
     EXPECT_NEAR(m.diffuse.r, 0.25f, 1e-6f);
-    EXPECT_NEAR(m.specular.r, 0.27f, 1e-6f);
+    EXPECT_NEAR(m.specular.r, 0.02f, 1e-6f);
+    EXPECT_NEAR(m.specularTint.r, 0.25f, 1e-6f);
+    EXPECT_EQ(m.metallicFactor, 0.5f);
+    EXPECT_EQ(m.roughnessFactor, 0.5f);
     EXPECT_NEAR(m.shininess, 30.0f, 1e-3f);
     EXPECT_NEAR(m.emissive.b, 0.3f, 1e-6f);
 }
