@@ -35,6 +35,12 @@ void MipmappedTexture2D::setAnisotropy(float anisotropy) const
         glTextureParameterf(id(), GL_TEXTURE_MAX_ANISOTROPY, std::clamp(anisotropy, 1.0f, maximum));
 }
 
+void MipmappedTexture2D::setWrap(GLenum s, GLenum t) const
+{
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(s));
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(t));
+}
+
 MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
                                        std::span<const std::uint8_t> rgba8)
     : GlObject(detail::createTexture(GL_TEXTURE_2D)),

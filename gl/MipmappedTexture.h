@@ -32,6 +32,10 @@ public:
     // Samples up to `anisotropy` (≥ 1, at most maxAnisotropy()) texels along the footprint's
     // long axis; 1 is plain trilinear filtering.
     void setAnisotropy(float anisotropy) const;
+    // How coordinates outside [0, 1] read the image (GL_REPEAT, GL_CLAMP_TO_EDGE,
+    // GL_MIRRORED_REPEAT), per axis. A texture shared by materials that wrap it differently is
+    // set by each before it draws (render/GpuScene.cpp).
+    void setWrap(GLenum s, GLenum t) const;
 
 private:
     int width_ = 0;

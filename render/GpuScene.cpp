@@ -491,10 +491,20 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
         kEmissiveUvTransform = 59,
     };
     enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
+    const auto glWrap = [](TextureWrap wrap) -> GLenum {
+        switch (wrap) {
+        case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+        case TextureWrap::Repeat: break;
+        }
+        return GL_REPEAT;
+    };
     const auto bind = [&](const gl::MipmappedTexture2D* map, GLuint unit, GLint transformLocation, MaterialMapSlot slot) {
         if (!map)
             return false;
         map->bindUnit(unit);
+        // Wrapping belongs to the material's reference, not to the image the cache shares.
+        map->setWrap(glWrap(material.wraps[slot].s), glWrap(material.wraps[slot].t));
         program.set(transformLocation, glm::mat3x2(material.uvTransforms[slot]));
         return true;
     };

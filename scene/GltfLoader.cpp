@@ -808,7 +808,9 @@ private:
         if (texCoord != 0)
             warnings_.noteFile("texCoord", where + ": texCoord " + std::to_string(texCoord) +
                                                " is not read; the texture is drawn with TEXCOORD_0");
-        return texturePath(reference.index, where);
+        std::string path = texturePath(reference.index, where);
+        material.wraps[slot] = samplerWrap(gltf_.textures[static_cast<std::size_t>(reference.index)].sampler);
+        return path;
     }
 
     // KHR_texture_transform's uv' = T · R · S · uv in glTF's uv convention (origin at the top
@@ -863,6 +865,31 @@ private:
         if (!path)
             path = imagePath(static_cast<std::size_t>(source));
         return *path;
+    }
+
+    // A texture's sampler's wrap modes (none: repeat, glTF's default). Its filters are not
+    // read: every map is filtered trilinearly or anisotropically (--anisotropy).
+    MapWrap samplerWrap(int samplerIndex)
+    {
+        if (samplerIndex < 0)
+            return {};
+        if (static_cast<std::size_t>(samplerIndex) >= gltf_.samplers.size())
+            fail("a texture's sampler " + std::to_string(samplerIndex) + " is not a sampler (the file has " +
+                 std::to_string(gltf_.samplers.size()) + ")");
+        const tinygltf::Sampler& sampler = gltf_.samplers[static_cast<std::size_t>(samplerIndex)];
+        const auto wrap = [&](int mode, const char* axis) {
+            switch (mode) {
+            case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+            case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+            case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+            default:
+                warnings_.noteFile("sampler wrap", element("samplers", static_cast<std::size_t>(samplerIndex)) +
+                                                       ": unknown " + axis + " " + std::to_string(mode) +
+                                                       "; drawn with REPEAT");
+                return TextureWrap::Repeat;
+            }
+        };
+        return {wrap(sampler.wrapS, "wrapS"), wrap(sampler.wrapT, "wrapT")};
     }
 
     std::string imagePath(std::size_t index)

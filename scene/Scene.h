@@ -113,6 +113,13 @@ enum MaterialMapSlot : std::size_t { kDiffuseSlot, kSpecularSlot, kNormalSlot, k
 
 enum class AlphaMode : std::uint8_t { Opaque, Mask };
 
+// How a map reads coordinates outside [0, 1] (glTF samplers' wrapS, wrapT), per axis.
+enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+struct MapWrap {
+    TextureWrap s = TextureWrap::Repeat;
+    TextureWrap t = TextureWrap::Repeat;
+};
+
 // Which faces of a material's triangles are drawn, and with which normal.
 enum class Sides : std::uint8_t {
     // Scene-file and OBJ materials: both faces, each lit with the mesh's normal as given. OBJ
@@ -157,6 +164,7 @@ struct Material {
     // convention (origin at the bottom left): uv' = M · (u, v, 1). Identity unless a file says.
     std::array<glm::mat3, kMaterialMapSlots> uvTransforms{glm::mat3{1.0f}, glm::mat3{1.0f}, glm::mat3{1.0f},
                                                           glm::mat3{1.0f}};
+    std::array<MapWrap, kMaterialMapSlots> wraps{};  // repeat unless a file's sampler says
 
     // Coverage: opacity (glTF baseColorFactor's alpha) times the diffuse map's alpha times the
     // vertex colour's alpha. Mask cuts the surface where that falls below alphaCutoff (in every

@@ -699,12 +699,26 @@ private:
         return (base_ / fs::path(text)).lexically_normal();
     }
 
+    // Where a missing file lies in a folder a Debian package installs, the package to install:
+    // the example scenes use real models from assimp-testmodels (docs/scene-format.md).
+    static std::string packageHint(const fs::path& path)
+    {
+        static const std::pair<const char*, const char*> kPackageFolders[] = {
+            {"/usr/share/assimp/models/", "assimp-testmodels"},
+        };
+        for (const auto& [folder, package] : kPackageFolders)
+            if (path.string().starts_with(folder))
+                return std::string(" (installed by the Debian package ") + package + ": apt-get install " + package +
+                       ", or scripts/setup.sh)";
+        return {};
+    }
+
     void expectRegularFile(const Node& node, const fs::path& path) const
     {
         std::error_code error;
         const fs::file_status status = fs::status(path, error);
         if (!fs::exists(status))
-            fail(node, "file not found: " + path.string());
+            fail(node, "file not found: " + path.string() + packageHint(path));
         if (!fs::is_regular_file(status))
             fail(node, "not a regular file: " + path.string());
     }

@@ -541,6 +541,66 @@ TEST_P(Analytic, VertexColoursAndMetallicRoughnessMapShadePerTexel)
     EXPECT_EQ(checkEveryPixel(scene, expected, "65x65", dir), 65 * 65);
 }
 
+TEST_P(Analytic, TextureTransformMovesTurnsAndScalesTheUvs)
+{
+    // A 4x4 quad facing up, its base colour texture four flat quadrants (glTF image space:
+    // top-left white, top-right blue, bottom-left red, bottom-right green), lit by ambient 1
+    // alone: colour = kd = the texel (0 or 1 per channel, exact through the sRGB decode).
+    // KHR_texture_transform offset (0.25, 0.5), rotation 0.5, scale (1.5, 0.75): at glTF uv
+    // (u, v) the texture is read at T · R · S · (u, v) with R = [cos sin; −sin cos] (the
+    // extension's definition), wrapped (repeat); pixels within 0.1 of a quadrant edge in the
+    // texture (where filtering blends quadrants) are not checked.
+    const auto dir = scratchDirectory();
+    const int size = 64;
+    std::vector<unsigned char> texels(size * size * 4, 255);
+    const auto quadrantColour = [](bool left, bool top) {
+        return top ? (left ? glm::dvec3(1, 1, 1) : glm::dvec3(0, 0, 1)) : (left ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+    };
+    for (int row = 0; row < size; ++row)
+        for (int column = 0; column < size; ++column) {
+            const glm::dvec3 colour = quadrantColour(column < size / 2, row < size / 2);
+            for (int c = 0; c < 3; ++c)
+                texels[static_cast<std::size_t>((row * size + column) * 4 + c)] = colour[c] > 0.0 ? 255 : 0;
+        }
+    ASSERT_NE(stbi_write_png((dir / "quadrants.png").string().c_str(), size, size, 4, texels.data(), size * 4), 0);
+    const double rotation = 0.5;
+    const glm::dvec2 offset(0.25, 0.5);
+    const glm::dvec2 scale(1.5, 0.75);
+    writeQuadGltf(dir / "quad.gltf", {glm::vec3(-2, 0, 2), glm::vec3(2, 0, 2), glm::vec3(2, 0, -2), glm::vec3(-2, 0, -2)},
+                  {0, 1, 0}, std::nullopt,
+                  {{"pbrMetallicRoughness",
+                    {{"metallicFactor", 0.0},
+                     {"baseColorTexture",
+                      {{"index", 0},
+                       {"extensions",
+                        {{"KHR_texture_transform",
+                          {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}}}}}}}}}},
+                  {"quadrants.png"});
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "ambient": [1, 1, 1],
+        "objects": [{"mesh": ")" + (dir / "quad.gltf").string() + R"("}]})";
+    int checked = 0;
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        // The quad's glTF uv: u from x = −2 to 2, v from z = −2 (v = 0, the image's top) to 2.
+        const glm::dvec2 uv((p.x + 2.0) / 4.0, (p.z + 2.0) / 4.0);
+        const glm::dvec2 scaled = uv * scale;
+        const glm::dvec2 turned(std::cos(rotation) * scaled.x + std::sin(rotation) * scaled.y,
+                                -std::sin(rotation) * scaled.x + std::cos(rotation) * scaled.y);
+        const glm::dvec2 read = turned + offset;
+        const glm::dvec2 wrapped = read - glm::floor(read);
+        const auto nearEdge = [](double t) {
+            return std::abs(t - 0.5) < 0.1 || t < 0.1 || t > 0.9;
+        };
+        if (nearEdge(wrapped.x) || nearEdge(wrapped.y) || std::abs(std::abs(p.x) - 2.0) < 0.05 ||
+            std::abs(std::abs(p.z) - 2.0) < 0.05)
+            return std::nullopt;
+        ++checked;
+        return quadrantColour(wrapped.x < 0.5, wrapped.y < 0.5);
+    };
+    checkEveryPixel(scene, expected, "129x129", dir);
+    EXPECT_GT(checked, 200);
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
 
 }  // namespace

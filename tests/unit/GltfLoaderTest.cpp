@@ -523,6 +523,30 @@ TEST(GltfAssimpModels, BoxTexturedInAllThreeContainers)
     }
 }
 
+// Khronos' TextureTransformTest: six materials with KHR_texture_transform (offsets, a rotation,
+// a scale, all three), three marker materials without; its sampler clamps to the edge.
+// tests/image/AnalyticTest.cpp checks what the transforms do to the image.
+TEST(GltfAssimpModels, TextureTransformTestReadsEveryTransform)
+{
+    SKIP_WITHOUT_ASSIMP_MODELS();
+    Warnings warnings;
+    const Model model = loadGltfFile(kAssimpGltf / "textureTransform/TextureTransformTest.gltf", {.warnings = &warnings});
+    ASSERT_EQ(model.materials.size(), 9u);
+    std::size_t transformed = 0;
+    std::size_t clamped = 0;
+    for (const Material& material : model.materials) {
+        EXPECT_FALSE(material.diffuseMap.empty()) << material.name;
+        if (material.uvTransforms[kDiffuseSlot] != glm::mat3{1.0f})
+            ++transformed;
+        if (material.wraps[kDiffuseSlot].s == TextureWrap::ClampToEdge &&
+            material.wraps[kDiffuseSlot].t == TextureWrap::ClampToEdge)
+            ++clamped;
+    }
+    EXPECT_EQ(transformed, 6u);
+    EXPECT_EQ(clamped, 6u);  // the textures with sampler 0; the markers' have none (repeat)
+    EXPECT_TRUE(warnings.messages().empty());
+}
+
 TEST(GltfAssimpModels, EngineHasManyNodes)
 {
     SKIP_WITHOUT_ASSIMP_MODELS();

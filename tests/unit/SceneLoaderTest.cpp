@@ -701,6 +701,11 @@ const std::vector<BadScene> kBadScenes = {
      ": /objects/0/mesh: ", "file not found: " + resolved("models/helmet.gltf")},
     {"MeshGlbMissing", withMesh(R"json("models/helmet.GLB")json"), ": /objects/0/mesh: ",
      "file not found: " + resolved("models/helmet.GLB")},
+    // A model from a folder a Debian package installs: the message names the package.
+    {"MeshFromMissingPackage",
+     withMesh(R"json("/usr/share/assimp/models/glTF2/NoSuchModel/NoSuchModel.gltf")json"), ": /objects/0/mesh: ",
+     "file not found: /usr/share/assimp/models/glTF2/NoSuchModel/NoSuchModel.gltf (installed by the Debian package "
+     "assimp-testmodels: apt-get install assimp-testmodels, or scripts/setup.sh)"},
     {"MeshPly", withMesh(R"json("models/bunny.ply")json"), ": /objects/0/mesh: ",
      "unsupported mesh file type '.ply' (expected .obj, .gltf or .glb)"},
     {"MeshObjMissing", withMesh(R"json("models/nothere.obj")json"), ": /objects/0/mesh: ",
