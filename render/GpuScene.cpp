@@ -386,7 +386,7 @@ void GpuScene::writeInstances()
         instance.diffuse = glm::vec4(material.diffuse, material.opacity);
         instance.specularShininess = glm::vec4(material.specular, material.shininess);
         instance.emissive = glm::vec4(material.emissive, material.alphaCutoff);
-        instance.specularTint = glm::vec4(material.specularTint, material.sides == Sides::BothFlipped ? 1.0f : 0.0f);
+        instance.specularTint = glm::vec4(material.specularTint, 0.0f);
     }
     // One update for the whole frame.
     if (!instances_.empty())
@@ -438,6 +438,9 @@ void GpuScene::drawObjects(const MeshProgramFor& programFor) const
 {
     instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
     const gl::Program* current = nullptr;
+    // Face state is changed only where it differs: on llvmpipe every state change revalidates
+    // the pipeline at the next draw. The renderer's default (Renderer.cpp): no culling, CCW.
+    FaceState faces{false, GL_CCW};
     for (const std::size_t index : frontToBack_) {
         const DrawBatch& batch = batches_[index];
         // Every item of a batch of several has the same variant and face state, no maps and no
@@ -450,11 +453,10 @@ void GpuScene::drawObjects(const MeshProgramFor& programFor) const
         }
         setObjectUniforms(program, first);
         bindMaterial(program, *first.material, *first.maps);
-        setFaceState(first);
+        setFaceState(faceStateOf(first), faces);
         drawInstances(program, batch.firstItem, batch.itemCount);
     }
-    glDisable(GL_CULL_FACE);  // the renderer's default (Renderer.cpp): meshes need not be closed
-    glFrontFace(GL_CCW);
+    setFaceState({false, GL_CCW}, faces);
 }
 
 MaterialVariant GpuScene::materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range)
@@ -463,18 +465,31 @@ MaterialVariant GpuScene::materialVariant(const Material& material, const Materi
         (maps.diffuse ? kDiffuseMapBit : 0) | (maps.specular ? kSpecularMapBit : 0) |
         (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0) |
         (maps.metallicRoughness ? kMetallicRoughnessMapBit : 0) |
-        (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0));
+        (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
+        // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
+        (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
+        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0));
 }
 
-void GpuScene::setFaceState(const DrawItem& draw)
+GpuScene::FaceState GpuScene::faceStateOf(const DrawItem& draw)
 {
     // gl_FrontFacing (which Sides::BothFlipped lights by) follows glFrontFace too.
-    glFrontFace(draw.mirrored && draw.material->sides != Sides::BothWithMeshNormal ? GL_CW : GL_CCW);
-    if (draw.material->sides == Sides::Front)
-        glEnable(GL_CULL_FACE);
-    else
-        glDisable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
+    return {draw.material->sides == Sides::Front,
+            draw.mirrored && draw.material->sides != Sides::BothWithMeshNormal ? GLenum{GL_CW} : GLenum{GL_CCW}};
+}
+
+void GpuScene::setFaceState(const FaceState& wanted, FaceState& current)
+{
+    if (wanted.cullBackFaces != current.cullBackFaces) {
+        if (wanted.cullBackFaces) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);  // the volume techniques cull front faces
+        } else
+            glDisable(GL_CULL_FACE);
+    }
+    if (wanted.frontFace != current.frontFace)
+        glFrontFace(wanted.frontFace);
+    current = wanted;
 }
 
 void GpuScene::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const

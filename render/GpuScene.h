@@ -164,7 +164,12 @@ private:
 
     static MaterialVariant materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range);
     // Culling and front-face winding for a batch's material and mirroring.
-    static void setFaceState(const DrawItem& draw);
+    struct FaceState {
+        bool cullBackFaces;
+        GLenum frontFace;
+    };
+    static FaceState faceStateOf(const DrawItem& draw);
+    static void setFaceState(const FaceState& wanted, FaceState& current);
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
     void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
     void addLightMarkers(float radius);

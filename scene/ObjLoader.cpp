@@ -415,6 +415,25 @@ glm::vec3 colour(const tinyobj::real_t (&value)[3])
     return {value[0], value[1], value[2]};
 }
 
+// A map's MTL texture options that manylights reads: `-o u v` and `-s u v` move and scale its
+// uvs, uv' = s · uv + o (OBJ's uvs are ours, origin at the bottom left; Blender's importer reads
+// them the same way), and `-clamp on` clamps to the edge instead of repeating.
+void readTextureOptions(const tinyobj::texture_option_t& options, const MtlLibrary& library,
+                        const std::string& materialName, Material& material, MaterialMapSlot slot)
+{
+    const glm::vec2 offset(options.origin_offset[0], options.origin_offset[1]);
+    const glm::vec2 scale(options.scale[0], options.scale[1]);
+    if (!std::isfinite(offset.x + offset.y + scale.x + scale.y))
+        fail(library.displayName, "material '" + materialName + "': non-finite -o or -s texture option");
+    glm::mat3 transform{1.0f};
+    transform[0][0] = scale.x;
+    transform[1][1] = scale.y;
+    transform[2] = glm::vec3(offset, 1.0f);
+    material.uvTransforms[slot] = transform;
+    if (options.clamp)
+        material.wraps[slot] = {TextureWrap::ClampToEdge, TextureWrap::ClampToEdge};
+}
+
 Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library, const std::string& objName)
 {
     Material material;
@@ -439,6 +458,11 @@ Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library,
     }
     if (!std::isfinite(material.normalScale))
         fail(library.displayName, "material '" + source.name + "': non-finite -bm");
+    readTextureOptions(source.diffuse_texopt, library, source.name, material, kDiffuseSlot);
+    readTextureOptions(source.specular_texopt, library, source.name, material, kSpecularSlot);
+    readTextureOptions(source.emissive_texopt, library, source.name, material, kEmissiveSlot);
+    readTextureOptions(source.normal_texname.empty() ? source.bump_texopt : source.normal_texopt, library, source.name,
+                       material, kNormalSlot);
     // An MTL without Kd leaves it 0 in tinyobjloader, which would blacken its map_Kd: a
     // texture with no Kd is taken at face value (Kd = 1).
     if (!material.diffuseMap.empty() && material.diffuse == glm::vec3{0.0f})

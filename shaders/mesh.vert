@@ -24,9 +24,13 @@ layout(location = 4) flat out vec3 materialDiffuse;
 layout(location = 5) flat out vec3 materialSpecular;
 layout(location = 6) flat out float materialShininess;
 layout(location = 7) flat out vec3 materialEmissive;
+// Only what the variant reads (render/LightingPrograms.h): every varying costs every fragment.
+#if (MATERIAL_VARIANT & 128) != 0  // kSpecularTintBit
 layout(location = 8) flat out vec3 materialSpecularTint;
+#endif
+#if (MATERIAL_VARIANT & 32) != 0  // kAlphaMaskBit
 layout(location = 9) flat out vec2 materialAlpha;  // opacity, cutoff
-layout(location = 10) flat out float materialFlipBackFaces;
+#endif
 #if (MATERIAL_VARIANT & 64) != 0  // kVertexColoursBit
 layout(location = 11) out vec4 vertexColour;
 #endif
@@ -50,9 +54,12 @@ void main()
     materialSpecular = instance.specularShininess.rgb;
     materialShininess = instance.specularShininess.w;
     materialEmissive = instance.emissive.rgb;
+#if (MATERIAL_VARIANT & 128) != 0
     materialSpecularTint = instance.specularTint.rgb;
+#endif
+#if (MATERIAL_VARIANT & 32) != 0
     materialAlpha = vec2(instance.diffuse.w, instance.emissive.w);
-    materialFlipBackFaces = instance.specularTint.w;
+#endif
 #if (MATERIAL_VARIANT & 64) != 0
     vertexColour = inColour;
 #endif

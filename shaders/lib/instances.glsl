@@ -10,8 +10,7 @@ struct Instance {
     vec4 diffuse;           // rgb, w opacity (coverage before maps and vertex colours)
     vec4 specularShininess; // rgb specular, w shininess
     vec4 emissive;          // rgb, w alpha cutoff (read by alpha-masked variants only)
-    vec4 specularTint;      // rgb base colour · metallic (scene/Scene.h), w 1: back faces lit
-                            // with the reversed normal (Sides::BothFlipped), else 0
+    vec4 specularTint;      // rgb base colour · metallic (scene/Scene.h), w unused
 };
 
 layout(std430, binding = 8) readonly buffer Instances {

@@ -9,19 +9,25 @@ layout(location = 4) flat in vec3 materialDiffuse;
 layout(location = 5) flat in vec3 materialSpecular;
 layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
-layout(location = 8) flat in vec3 materialSpecularTint;  // base colour · metallic (scene/Scene.h)
-layout(location = 9) flat in vec2 materialAlpha;         // opacity, alpha cutoff
-layout(location = 10) flat in float materialFlipBackFaces;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
-// 4 metallic-roughness map, 5 alpha mask, 6 vertex colours (render/LightingPrograms.h:
-// MaterialVariant). A missing map leaves the constant as it is. A compile-time constant, one
-// program per variant: llvmpipe runs both sides of a branch under a lane mask, so branching on a
-// uniform would pay every map's lookups for every fragment, and a discard that can never run
-// would still keep the depth test from running before the shader.
+// 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
+// with the reversed normal (render/LightingPrograms.h: MaterialVariant). A missing map leaves
+// the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
+// sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
+// for every fragment, a discard that can never run would still keep the depth test from running
+// before the shader, and every input costs every fragment.
 #ifndef MATERIAL_VARIANT
 #error "a mesh program is compiled for one material variant (MATERIAL_VARIANT)"
 #endif
 const int materialVariant = MATERIAL_VARIANT;
+#if (MATERIAL_VARIANT & 128) != 0
+layout(location = 8) flat in vec3 materialSpecularTint;  // base colour · metallic (scene/Scene.h)
+#else
+const vec3 materialSpecularTint = vec3(0.0);
+#endif
+#if (MATERIAL_VARIANT & 32) != 0
+layout(location = 9) flat in vec2 materialAlpha;  // opacity, alpha cutoff
+#endif
 #if (MATERIAL_VARIANT & 64) != 0
 layout(location = 11) in vec4 vertexColour;  // glTF COLOR_0
 #endif
@@ -56,6 +62,8 @@ const int kHasEmissiveMap = 8;
 const int kHasMetallicRoughnessMap = 16;
 const int kAlphaMask = 32;
 const int kHasVertexColours = 64;
+const int kHasSpecularTint = 128;
+const int kFlipBackFaces = 256;
 
 // The normal map's tangent-space normal, taken to world space: the interpolated tangent is
 // re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
@@ -86,7 +94,10 @@ Surface meshSurface()
     s.position = worldPosition;
     // What multiplies the base colour (diffuse and specular tint) and the coverage.
     vec3 base = vec3(1.0);
-    float coverage = materialAlpha.x;
+    float coverage = 1.0;
+#if (MATERIAL_VARIANT & 32) != 0
+    coverage = materialAlpha.x;
+#endif
     // materialVariant is a constant, so the compiler drops the branches of absent maps and the
     // implicit derivatives of texture() are defined.
     if ((materialVariant & kHasVertexColours) != 0) {
@@ -102,13 +113,16 @@ Surface meshSurface()
     }
     // glTF alphaMode MASK: fully there at or above the cutoff, absent below it. The same test
     // cuts the shadow casters (shaders/shadow_depth.frag).
-    if ((materialVariant & kAlphaMask) != 0 && coverage < materialAlpha.y)
+#if (MATERIAL_VARIANT & 32) != 0
+    if (coverage < materialAlpha.y)
         discard;
+#endif
     s.diffuse = materialDiffuse * base;
     s.specular = materialSpecular;
     if ((materialVariant & kHasSpecularMap) != 0)
         s.specular *= texture(specularMap, specularUvTransform * vec3(uv, 1.0)).rgb;
-    s.specular += materialSpecularTint * base;
+    if ((materialVariant & kHasSpecularTint) != 0)
+        s.specular += materialSpecularTint * base;
     s.shininess = materialShininess;
     if ((materialVariant & kHasMetallicRoughnessMap) != 0) {
         // The loader's mapping (scene/Scene.h Material) per texel: diffuse + tint is the base
@@ -125,7 +139,7 @@ Surface meshSurface()
         s.normal = normalMapped(s.normal);
     // glTF doubleSided: a back face is lit as the front face of the other side (the normal map's
     // whole frame reversed, which reverses its result).
-    if (materialFlipBackFaces != 0.0 && !gl_FrontFacing)
+    if ((materialVariant & kFlipBackFaces) != 0 && !gl_FrontFacing)
         s.normal = -s.normal;
     s.emissive = materialEmissive;
     if ((materialVariant & kHasEmissiveMap) != 0)

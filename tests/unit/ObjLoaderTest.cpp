@@ -89,6 +89,26 @@ TEST(ObjModel, MaterialsBecomeOneDrawRangeEachOverOneVertexBuffer)
     EXPECT_EQ(mesh.vertices.size(), 14u);
 }
 
+// MTL texture options: -o and -s move and scale a map's uvs (uv' = s · uv + o), -clamp on
+// clamps it; a map without options keeps the identity and repeats.
+TEST(ObjModel, TextureOptionsOffsetScaleAndClampTheMap)
+{
+    const fs::path dir = scratch();
+    fs::copy_file(kModels / "brick.png", dir / "brick.png");
+    write(dir / "m.mtl", "newmtl m\nmap_Kd -o 0.5 0.25 0 -s 2 3 1 -clamp on brick.png\nmap_Ks brick.png\n");
+    write(dir / "quad.obj", std::string("mtllib m.mtl\n") + kQuad + "vt 0 0\nusemtl m\nf 1/1 2/1 3/1 4/1\n");
+    const Model model = loadObj(dir / "quad.obj");
+    ASSERT_EQ(model.materials.size(), 1u);
+    const Material& material = model.materials[0];
+    const glm::vec3 moved = material.uvTransforms[kDiffuseSlot] * glm::vec3(0.1f, 0.2f, 1.0f);
+    EXPECT_NEAR(moved.x, 0.7f, 1e-6f);
+    EXPECT_NEAR(moved.y, 0.85f, 1e-6f);
+    EXPECT_EQ(material.wraps[kDiffuseSlot].s, TextureWrap::ClampToEdge);
+    EXPECT_EQ(material.wraps[kDiffuseSlot].t, TextureWrap::ClampToEdge);
+    EXPECT_EQ(material.uvTransforms[kSpecularSlot], glm::mat3{1.0f});
+    EXPECT_EQ(material.wraps[kSpecularSlot].s, TextureWrap::Repeat);
+}
+
 TEST(ObjModel, WithoutUsemtlThereAreNoSubMeshes)
 {
     const fs::path dir = scratch();
