@@ -1,141 +1,36 @@
 #include "render/ClusteredTechnique.h"
 
-#include <algorithm>
-#include <string>
-
 #include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 
 namespace manylights {
 
-namespace {
-
-// Binding points shared with shaders/lib/clusters.glsl and the passes.
-constexpr GLuint kTileDepthRangesBinding = 2;
-constexpr GLuint kTileSlicesBinding = 3;
-constexpr GLuint kMasksBinding = 4;
-constexpr GLuint kSummariesBinding = 5;
-constexpr GLuint kDepthUnit = 5;
-constexpr GLuint kLightGroupSize = 64;  // local_size_x of cluster_assign.comp
-constexpr GLuint kTileGroupSize = 64;   // local_size_x of cluster_tiles.comp
-constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
-constexpr int kTilesPerBand = 1024;
-
-gl::Defines gridDefines(gl::Defines defines)
-{
-    addLightBatchDefines(defines);
-    defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(kClusterTileSize));
-    defines.emplace_back("CLUSTER_SLICES", std::to_string(kClusterSlices));
-    return defines;
-}
-
-GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupSize - 1) / groupSize; }
-
-std::uint32_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
-
-int tilesAlong(int pixels) { return (pixels + kClusterTileSize - 1) / kClusterTileSize; }
-
-}  // namespace
-
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
-    : tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
-             gridDefines(gbufferDefines(options.gbufferLayout))),
-      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, gridDefines({})),
+    : Technique(options),
+      grid_(options.gbufferLayout),
       lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                gridDefines(shaderDefines(options))),
+                clusterGridDefines(shaderDefines(options))),
       lightWindows_(lightWindowsSupported())
 {
 }
 
-std::uint32_t ClusteredTechnique::lightsPerBatch(int width, int height)
-{
-    const std::size_t clusters =
-        static_cast<std::size_t>(tilesAlong(width)) * static_cast<std::size_t>(tilesAlong(height)) * kClusterSlices;
-    const std::size_t affordableWords = kClusterMaskBudgetBytes / (sizeof(std::uint32_t) * clusters);
-    return static_cast<std::uint32_t>(std::clamp<std::size_t>(affordableWords * 32, 32, kLightsPerBatch));
-}
-
-void ClusteredTechnique::resizeGrid(int width, int height, std::uint32_t largestBatch)
-{
-    gridWidth_ = tilesAlong(width);
-    gridHeight_ = tilesAlong(height);
-    const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
-    clusterCount_ = tiles * kClusterSlices;
-    const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
-    if (!tileSlices_ || tileSlices_.size() != tileBytes) {
-        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, 0);
-        tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, 0);
-    }
-    // Sized for the largest batch of this frame: the size is known before any pass runs.
-    const std::uint32_t words = std::max(wordsFor(largestBatch), 1u);
-    const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * words;
-    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * wordsFor(words);
-    if (!masks_ || masks_.size() < maskBytes)
-        masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
-    if (!summaries_ || summaries_.size() < summaryBytes)
-        summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
-}
-
-void ClusteredTechnique::bindGrid() const
-{
-    tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
-    tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
-    masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
-    summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
-}
-
-void ClusteredTechnique::findTileRanges(const GpuScene& scene, FrameTargets& targets)
-{
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    targets.depthStencil.bindUnit(kDepthUnit);
-    bindGrid();
-    tiles_.use();
-    glDispatchCompute(groupsFor(static_cast<std::uint32_t>(gridWidth_ * gridHeight_), kTileGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-}
-
-void ClusteredTechnique::assignLights(const GpuScene& scene, const LightBatch& batch)
-{
-    // Cleared by the GL: on llvmpipe a plain memset of the batch's words beats a compute pass
-    // that clears only the occupied clusters' words.
-    const std::uint32_t words = wordsFor(batch.size());
-    const std::uint32_t zero = 0;
-    glClearNamedBufferSubData(masks_.id(), GL_R32UI, 0,
-                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * words), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
-    glClearNamedBufferSubData(summaries_.id(), GL_R32UI, 0,
-                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * wordsFor(words)),
-                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    scene.bind();
-    bindGrid();
-    setLightBatch(assign_, batch);
-    // Bands of whole rows, at most kTilesPerBand tiles (the shader's loop bound).
-    const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth_));
-    assign_.set(kRowsPerBandLocation, rowsPerBand);
-    assign_.use();
-    glDispatchCompute(groupsFor(batch.size(), kLightGroupSize),
-                      groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-}
-
 std::vector<TechniqueCounter> ClusteredTechnique::counters() const
 {
-    return {{"clusters", static_cast<double>(clusterCount_)}, {"light_batches", static_cast<double>(batchCount_)}};
+    return {{"clusters", static_cast<double>(grid_.clusterCount())},
+            {"light_batches", static_cast<double>(batchCount_)}};
 }
 
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
 {
     targets.gbuffer.fill(scene, profiler);
     const std::vector<LightBatch> batches =
-        lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(targets.width, targets.height));
+        lightBatches(static_cast<std::uint32_t>(scene.lightCount()), ClusterGrid::lightsPerBatch(targets.width, targets.height));
     batchCount_ = static_cast<std::uint32_t>(batches.size());
     {
         auto pass = profiler.pass("clusters");
-        resizeGrid(targets.width, targets.height, batches.front().size());
-        findTileRanges(scene, targets);
+        grid_.resize(targets.width, targets.height, batches.front().size());
+        grid_.fitToSurfaces(scene, targets);
     }
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
     if (oneWindow)
@@ -145,10 +40,10 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
     for (const LightBatch& batch : batches) {
         {
             auto pass = profiler.pass("clusters");
-            assignLights(scene, batch);
+            grid_.assignLights(scene, batch);
         }
         auto pass = profiler.pass("lighting");
-        bindGrid();
+        grid_.bind();
         shadeCoveredPixels(scene, targets, program, batch);
     }
 }

@@ -7,7 +7,8 @@
 namespace manylights {
 
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
-    : lightWindows_(lightWindowsSupported()),
+    : Technique(options),
+      lightWindows_(lightWindowsSupported()),
       lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
                 shaderDefines(options))
 {

@@ -8,7 +8,8 @@
 namespace manylights {
 
 ForwardTechnique::ForwardTechnique(const TechniqueOptions& options)
-    : program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
+    : Technique(options),
+      program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
                shaderDefines(options))
 {
 }

@@ -9,6 +9,7 @@ namespace manylights {
 class ForwardTechnique : public Technique {
 public:
     explicit ForwardTechnique(const TechniqueOptions& options);
+    bool isReference() const override { return true; }
     std::string_view name() const override { return "forward"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 

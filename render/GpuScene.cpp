@@ -225,6 +225,11 @@ bool instanceable(const Object* object, bool hasMaps)
     return !hasMaps && !(object && object->revolution);
 }
 
+bool isTransparent(const Material& material)
+{
+    return material.alphaMode == AlphaMode::Blend;
+}
+
 }  // namespace
 
 void GpuScene::groupDrawsIntoBatches()
@@ -241,8 +246,9 @@ void GpuScene::groupDrawsIntoBatches()
                      [&](const DrawItem& a, const DrawItem& b) { return rangeKey(a) < rangeKey(b); });
     for (std::size_t i = 0; i < draws_.size(); ++i)
         draws_[i].groupedIndex = i;
+    // Transparent items are drawn one at a time, in an order sorted per frame.
     const auto canShare = [](const DrawItem& draw) {
-        return instanceable(draw.object, (draw.variant & kTextureBits) != 0);
+        return instanceable(draw.object, (draw.variant & kTextureBits) != 0) && !isTransparent(*draw.material);
     };
     // One program and one face state per draw call.
     const auto drawnAlike = [](const DrawItem& a, const DrawItem& b) {
@@ -260,6 +266,9 @@ void GpuScene::groupDrawsIntoBatches()
         }
         batches_.push_back({i, 1});
     }
+    transparentBatches_ = static_cast<std::size_t>(std::count_if(batches_.begin(), batches_.end(), [&](const DrawBatch& batch) {
+        return isTransparent(*draws_[batch.firstItem].material);
+    }));
 }
 
 void GpuScene::setViewport(int width, int height)
@@ -446,6 +455,8 @@ void GpuScene::drawObjects(const MeshProgramFor& programFor) const
         // Every item of a batch of several has the same variant and face state, no maps and no
         // revolution: the first item's uniforms hold for all of them.
         const DrawItem& first = draws_[batch.firstItem];
+        if (isTransparent(*first.material))
+            continue;
         const gl::Program& program = programFor(first.variant);
         if (&program != current) {
             program.use();
@@ -459,6 +470,73 @@ void GpuScene::drawObjects(const MeshProgramFor& programFor) const
     setFaceState({false, GL_CCW}, faces);
 }
 
+std::vector<GpuScene::TransparentLayer> GpuScene::transparentLayersBackToFront() const
+{
+    const glm::vec3 eye(frame_.eye);
+    const glm::vec3 axis(frame_.viewAxis);
+    std::vector<std::pair<float, std::size_t>> keyed;  // (view depth, batch)
+    for (std::size_t b = 0; b < batches_.size(); ++b) {
+        const DrawItem& item = draws_[batches_[b].firstItem];
+        if (!isTransparent(*item.material) || item.worldBounds.empty())
+            continue;
+        const glm::vec3 centre = 0.5f * (item.worldBounds.min + item.worldBounds.max);
+        const float depth = glm::dot(centre - eye, axis);
+        keyed.emplace_back(std::isnan(depth) ? std::numeric_limits<float>::max() : depth, b);
+    }
+    // Farthest first; equal depths in the grouped order, so the order is a function of the
+    // scene, the pose and the camera.
+    std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& c) {
+        return a.first != c.first ? a.first > c.first : draws_[batches_[a.second].firstItem].groupedIndex <
+                                                             draws_[batches_[c.second].firstItem].groupedIndex;
+    });
+    std::vector<TransparentLayer> layers;
+    for (const auto& [depth, batch] : keyed) {
+        if (draws_[batches_[batch].firstItem].material->sides != Sides::Front)
+            layers.push_back({batch, true});
+        layers.push_back({batch, false});
+    }
+    return layers;
+}
+
+void GpuScene::drawTransparentLayer(const TransparentLayer& layer, const MeshProgramFor& programFor) const
+{
+    instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
+    const DrawBatch& batch = batches_[layer.batch];
+    const DrawItem& item = draws_[batch.firstItem];
+    const gl::Program& program = programFor(item.variant);
+    program.use();
+    setObjectUniforms(program, item);
+    bindMaterial(program, *item.material, *item.maps);
+    // A transparent mesh's winding decides its layers, whatever its material's sides.
+    glFrontFace(item.mirrored ? GL_CW : GL_CCW);
+    glEnable(GL_CULL_FACE);
+    glCullFace(layer.backFaces ? GL_FRONT : GL_BACK);
+    drawInstances(program, batch.firstItem, batch.itemCount);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+}
+
+std::optional<std::pair<float, float>> GpuScene::transparentDepthRange() const
+{
+    const glm::vec3 eye(frame_.eye);
+    const glm::vec3 axis(frame_.viewAxis);
+    std::optional<std::pair<float, float>> range;
+    for (const DrawBatch& batch : batches_) {
+        const DrawItem& item = draws_[batch.firstItem];
+        if (!isTransparent(*item.material) || item.worldBounds.empty())
+            continue;
+        // The box's nearest and farthest points along the view axis.
+        const glm::vec3 centre = 0.5f * (item.worldBounds.min + item.worldBounds.max);
+        const glm::vec3 halfExtent = 0.5f * (item.worldBounds.max - item.worldBounds.min);
+        const float middle = glm::dot(centre - eye, axis);
+        const float reach = glm::dot(glm::abs(axis), halfExtent);
+        const std::pair<float, float> span{middle - reach, middle + reach};
+        range = range ? std::pair{std::min(range->first, span.first), std::max(range->second, span.second)} : span;
+    }
+    return range;
+}
+
 MaterialVariant GpuScene::materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range)
 {
     return static_cast<MaterialVariant>(
@@ -468,7 +546,8 @@ MaterialVariant GpuScene::materialVariant(const Material& material, const Materi
         (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
         // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
         (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
-        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0));
+        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) |
+        (isTransparent(material) ? kBlendBit : 0));
 }
 
 GpuScene::FaceState GpuScene::faceStateOf(const DrawItem& draw)
@@ -567,7 +646,9 @@ std::size_t GpuScene::drawObjectsDepthOnly(const MeshProgramFor& programFor,
         const std::size_t end = batch.firstItem + batch.itemCount;
         std::optional<std::size_t> runStart;
         for (std::size_t i = batch.firstItem; i <= end; ++i) {
-            const bool kept = i < end && !draws_[i].worldBounds.empty() && keep(draws_[i].worldBounds);
+            // Transparent surfaces cast no shadows (docs/transparency.md).
+            const bool kept = i < end && !draws_[i].worldBounds.empty() && !isTransparent(*draws_[i].material) &&
+                              keep(draws_[i].worldBounds);
             if (kept && !runStart)
                 runStart = i;
             if (!kept && runStart) {

@@ -88,6 +88,24 @@ public:
     void drawObjects(const MeshProgramFor& programFor) const;
     // The union of the drawn objects' world bounds.
     Bounds objectsWorldBounds() const;
+
+    // Transparent objects (AlphaMode::Blend) are left out of drawObjects and of the depth-only
+    // passes (they cast no shadows); the transparency pass draws them (render/TransparencyPass.h).
+    bool hasTransparentObjects() const { return transparentBatches_ > 0; }
+    // One draw of a transparent item: its batch (of one item), and whether it draws the item's
+    // back faces (the far side of a closed mesh) or its front faces.
+    struct TransparentLayer {
+        std::size_t batch;
+        bool backFaces;
+    };
+    // Farthest first by the view depth of the item's world bounds' centre; each item's back
+    // faces before its front faces (a single-sided glTF material has front faces only).
+    std::vector<TransparentLayer> transparentLayersBackToFront() const;
+    // Draws a layer as drawObjects draws a batch, culling the other side's faces.
+    void drawTransparentLayer(const TransparentLayer& layer, const MeshProgramFor& programFor) const;
+    // The view depths (along the view axis) the transparent items' world bounds span:
+    // nearest ≤ farthest; nullopt without transparent items.
+    std::optional<std::pair<float, float>> transparentDepthRange() const;
     // Depth-only passes (shadow maps, shaders/shadow_depth.*): draws the items whose world
     // bounds pass `keep`, each run of kept items of a batch as one instanced draw, with
     // programFor(depthOnlyVariant(the material's variant)) (an alpha-masked caster's program
@@ -198,6 +216,7 @@ private:
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
     std::vector<DrawItem> draws_;  // grouped by mesh range (groupDrawsIntoBatches)
     std::vector<DrawBatch> batches_;
+    std::size_t transparentBatches_ = 0;
     std::vector<std::size_t> frontToBack_;  // indices into batches_, the order drawObjects draws
     std::vector<GpuInstance> instances_;  // draws_[i]'s record is instances_[i]
     std::vector<GpuLight> packedLights_;

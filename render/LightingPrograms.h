@@ -65,6 +65,7 @@ inline constexpr MaterialVariant kAlphaMaskBit = 32;
 inline constexpr MaterialVariant kVertexColoursBit = 64;
 inline constexpr MaterialVariant kSpecularTintBit = 128;  // Material::specularTint not zero
 inline constexpr MaterialVariant kFlipBackFacesBit = 256;  // Sides::BothFlipped
+inline constexpr MaterialVariant kBlendBit = 512;  // AlphaMode::Blend: the coverage is the opacity
 // The bits that mean a texture is bound per draw (such draws are not instanced).
 inline constexpr MaterialVariant kTextureBits =
     kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit;

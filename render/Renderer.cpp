@@ -61,6 +61,11 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
         technique.render(gpuScene_, *targets_, profiler_);
+        if (gpuScene_.hasTransparentObjects()) {
+            if (!transparency_ || !(transparency_->options() == technique.options()))
+                transparency_ = std::make_unique<TransparencyPass>(technique.options());
+            transparency_->run(gpuScene_, *targets_, profiler_, technique.isReference());
+        }
         if (view == ViewMode::Volumes)
             drawVolumeOverlay();
     } else {
@@ -180,7 +185,10 @@ void Renderer::countWork()
                           static_cast<GLuint>((height() + kGroupSize - 1) / kGroupSize), 1);
     }
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-    workCounts_.lightEvaluations = sumOfTexels(targets_->lightEvaluations);
+    // The image holds every pair, the transparent surfaces' too (the light-count view shows
+    // both); the transparent ones are reported apart.
+    workCounts_.transparentLightEvaluations = transparency_ ? transparency_->lastLightEvaluations() : 0;
+    workCounts_.lightEvaluations = sumOfTexels(targets_->lightEvaluations) - workCounts_.transparentLightEvaluations;
     workCounts_.inRangePairs = sumOfTexels(targets_->inRangeCounts);
 }
 

@@ -15,6 +15,7 @@
 #include "render/ShadowMaps.h"
 #include "render/Ssao.h"
 #include "render/Technique.h"
+#include "render/TransparencyPass.h"
 #include "render/Views.h"
 #include "render/VolumeDrawer.h"
 
@@ -22,7 +23,8 @@ namespace manylights {
 
 // Deterministic work of one frame (docs/cli.md --count-work).
 struct WorkCounts {
-    std::uint64_t lightEvaluations = 0;  // (pixel, light) pairs the technique evaluated
+    std::uint64_t lightEvaluations = 0;  // (pixel, light) pairs the technique evaluated on opaque surfaces
+    std::uint64_t transparentLightEvaluations = 0;  // ... on transparent ones (render/TransparencyPass.h)
     std::uint64_t inRangePairs = 0;      // (pixel, light) pairs with A·S > 0: the least possible
 };
 
@@ -112,6 +114,8 @@ private:
     ShadowMaps shadowMaps_;
     AmbientOcclusion ambientOcclusion_;
     std::unique_ptr<Ssao> ssao_;  // made on first use
+    // Made for the options of the technique it follows, when the scene has transparent objects.
+    std::unique_ptr<TransparencyPass> transparency_;
     gl::Program shadowingViewProgram_;  // made on first use of the shadow and ssao views
     void prepareShadowing(ViewMode view);
     bool countWork_ = false;

@@ -30,6 +30,8 @@ struct TechniqueOptions {
     // light) pair even when no light has a map (it runs masked, not skipped): 5x the deferred
     // lighting pass.
     bool localShadows = false;
+
+    bool operator==(const TechniqueOptions&) const = default;
 };
 
 // The shader #defines that realise `options`.
@@ -44,12 +46,22 @@ struct TechniqueCounter {
 
 class Technique {
 public:
+    explicit Technique(const TechniqueOptions& options) : options_(options) {}
     virtual ~Technique() = default;
     virtual std::string_view name() const = 0;
+    // What the technique's shaders were made for; the passes the renderer adds to every
+    // technique's frame (render/TransparencyPass.h) are made for the same.
+    const TechniqueOptions& options() const { return options_; }
+    // The reference (forward): passes shared by every technique then loop over every light
+    // instead of culling them, so that the reference stays free of culling.
+    virtual bool isReference() const { return false; }
     virtual std::vector<TechniqueCounter> counters() const { return {}; }
     // Renders the frame into targets.lit (already cleared to the background colour) and
     // leaves the scene's depth in targets.depthStencil.
     virtual void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) = 0;
+
+private:
+    TechniqueOptions options_;
 };
 
 // The techniques docs/cli.md names, in the order of the docs.

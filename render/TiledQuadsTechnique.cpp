@@ -53,7 +53,8 @@ void upload(gl::Buffer& buffer, std::string_view label, std::span<const T> data)
 }  // namespace
 
 TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
-    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}},
+    : Technique(options),
+      global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}},
               shaderDefines(options))
 {
     for (std::size_t v = 0; v < kVariants; ++v)

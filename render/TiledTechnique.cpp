@@ -24,7 +24,8 @@ gl::Defines tiledDefines(const TechniqueOptions& options)
 }  // namespace
 
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
-    : program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options)),
+    : Technique(options),
+      program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options)),
       lightWindows_(lightWindowsSupported())
 {
 }

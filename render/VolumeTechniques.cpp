@@ -63,7 +63,8 @@ void VolumesTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
 }
 
 StencilTechnique::StencilTechnique(const TechniqueOptions& options)
-    : drawer_(shaderDefines(options)), stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
+    : Technique(options),
+      drawer_(shaderDefines(options)), stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
 {
 }
 

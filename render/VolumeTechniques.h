@@ -15,7 +15,7 @@ namespace manylights {
 // every pixel they should.
 class VolumesTechnique : public Technique {
 public:
-    explicit VolumesTechnique(const TechniqueOptions& options) : drawer_(shaderDefines(options)) {}
+    explicit VolumesTechnique(const TechniqueOptions& options) : Technique(options), drawer_(shaderDefines(options)) {}
     std::string_view name() const override { return "volumes"; }
     void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
 

@@ -766,8 +766,7 @@ private:
         return material;
     }
 
-    // alphaMode, alphaCutoff and the base colour's alpha. BLEND needs transparency, which the
-    // renderer does not draw yet: such a material is cut at 0.5 as MASK, with one warning per file.
+    // alphaMode, alphaCutoff and the base colour's alpha.
     void readCoverage(const tinygltf::Material& source, const std::string& where, Material& material)
     {
         const double alpha = source.pbrMetallicRoughness.baseColorFactor[3];
@@ -780,10 +779,7 @@ private:
             material.alphaMode = AlphaMode::Mask;
             material.alphaCutoff = static_cast<float>(source.alphaCutoff);
         } else if (source.alphaMode == "BLEND") {
-            material.alphaMode = AlphaMode::Mask;
-            material.alphaCutoff = 0.5f;
-            warnings_.noteFile("alphaMode BLEND",
-                               where + ": alphaMode BLEND is drawn as MASK with alphaCutoff 0.5 (no transparency yet)");
+            material.alphaMode = AlphaMode::Blend;
         } else if (source.alphaMode != "OPAQUE") {
             warnings_.noteFile("alphaMode " + source.alphaMode,
                                where + ": unknown alphaMode '" + source.alphaMode + "'; drawn OPAQUE");

@@ -463,6 +463,12 @@ Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library,
     readTextureOptions(source.emissive_texopt, library, source.name, material, kEmissiveSlot);
     readTextureOptions(source.normal_texname.empty() ? source.bump_texopt : source.normal_texopt, library, source.name,
                        material, kNormalSlot);
+    // `d` (tinyobjloader also reads `Tr` into it as 1 − Tr): below 1 the material is transparent.
+    if (!std::isfinite(source.dissolve))
+        fail(library.displayName, "material '" + source.name + "': non-finite d or Tr");
+    material.opacity = std::clamp(static_cast<float>(source.dissolve), 0.0f, 1.0f);
+    if (material.opacity < 1.0f)
+        material.alphaMode = AlphaMode::Blend;
     // An MTL without Kd leaves it 0 in tinyobjloader, which would blacken its map_Kd: a
     // texture with no Kd is taken at face value (Kd = 1).
     if (!material.diffuseMap.empty() && material.diffuse == glm::vec3{0.0f})

@@ -111,7 +111,10 @@ struct LightSet {
 // map's slot: a material has one or the other (a glTF material never has a specular map).
 enum MaterialMapSlot : std::size_t { kDiffuseSlot, kSpecularSlot, kNormalSlot, kEmissiveSlot, kMaterialMapSlots };
 
-enum class AlphaMode : std::uint8_t { Opaque, Mask };
+// Opaque ignores the coverage; Mask cuts the surface where it is below alphaCutoff; Blend draws
+// the surface see-through, "over" what lies behind it with the coverage as its opacity
+// (render/TransparencyPass.h).
+enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
 // How a map reads coordinates outside [0, 1] (glTF samplers' wrapS, wrapT), per axis.
 enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
@@ -166,9 +169,9 @@ struct Material {
                                                           glm::mat3{1.0f}};
     std::array<MapWrap, kMaterialMapSlots> wraps{};  // repeat unless a file's sampler says
 
-    // Coverage: opacity (glTF baseColorFactor's alpha) times the diffuse map's alpha times the
-    // vertex colour's alpha. Mask cuts the surface where that falls below alphaCutoff (in every
-    // pass, the shadow maps' too); Opaque ignores it.
+    // Coverage: opacity (the scene file's `opacity`, glTF baseColorFactor's alpha, MTL `d`)
+    // times the diffuse map's alpha times the vertex colour's alpha (AlphaMode says what it
+    // does).
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     float opacity = 1.0f;

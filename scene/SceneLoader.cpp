@@ -961,7 +961,7 @@ private:
     Material readMaterial(const Node& node) const
     {
         expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map",
-                           "normal_scale"});
+                           "normal_scale", "opacity"});
         Material material;
         if (const auto diffuse = member(node, "diffuse"))
             material.diffuse = colour(*diffuse);
@@ -976,6 +976,15 @@ private:
         material.normalMap = texturePath(node, "normal_map");
         if (const auto value = member(node, "normal_scale"))
             material.normalScale = number(*value);
+        // Below 1 the material is transparent: drawn over what lies behind it (the diffuse
+        // map's alpha multiplies the opacity).
+        if (const auto value = member(node, "opacity")) {
+            material.opacity = number(*value);
+            if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+                fail(*value, "must be in [0, 1], got " + describeValue(*value->json));
+            if (material.opacity < 1.0f)
+                material.alphaMode = AlphaMode::Blend;
+        }
         return material;
     }
 

@@ -28,7 +28,7 @@ layout(location = 7) flat out vec3 materialEmissive;
 #if (MATERIAL_VARIANT & 128) != 0  // kSpecularTintBit
 layout(location = 8) flat out vec3 materialSpecularTint;
 #endif
-#if (MATERIAL_VARIANT & 32) != 0  // kAlphaMaskBit
+#if (MATERIAL_VARIANT & (32 | 512)) != 0  // kAlphaMaskBit, kBlendBit
 layout(location = 9) flat out vec2 materialAlpha;  // opacity, cutoff
 #endif
 #if (MATERIAL_VARIANT & 64) != 0  // kVertexColoursBit
@@ -57,7 +57,7 @@ void main()
 #if (MATERIAL_VARIANT & 128) != 0
     materialSpecularTint = instance.specularTint.rgb;
 #endif
-#if (MATERIAL_VARIANT & 32) != 0
+#if (MATERIAL_VARIANT & (32 | 512)) != 0
     materialAlpha = vec2(instance.diffuse.w, instance.emissive.w);
 #endif
 #if (MATERIAL_VARIANT & 64) != 0

@@ -79,6 +79,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
         stats[counter.name] = counter.value;
     if (work) {
         stats["light_evaluations"] = work->lightEvaluations;
+        stats["transparent_light_evaluations"] = work->transparentLightEvaluations;
         stats["in_range_pairs"] = work->inRangePairs;
     }
     return stats;

@@ -11,7 +11,7 @@ layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
 // 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
-// with the reversed normal (render/LightingPrograms.h: MaterialVariant). A missing map leaves
+// with the reversed normal, 9 blended (render/LightingPrograms.h: MaterialVariant). A missing map leaves
 // the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
 // sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
 // for every fragment, a discard that can never run would still keep the depth test from running
@@ -25,7 +25,7 @@ layout(location = 8) flat in vec3 materialSpecularTint;  // base colour · metal
 #else
 const vec3 materialSpecularTint = vec3(0.0);
 #endif
-#if (MATERIAL_VARIANT & 32) != 0
+#if (MATERIAL_VARIANT & (32 | 512)) != 0
 layout(location = 9) flat in vec2 materialAlpha;  // opacity, alpha cutoff
 #endif
 #if (MATERIAL_VARIANT & 64) != 0
@@ -88,6 +88,10 @@ float blinnPhongExponent(float roughness)
     return clamp(2.0 / (r2 * r2) - 2.0, 1.0, 2048.0);
 }
 
+// The surface's coverage as meshSurface() found it: the opacity a blended (transparent)
+// material is drawn with (shaders/transparent.frag); 1 for other variants.
+float meshCoverage = 1.0;
+
 Surface meshSurface()
 {
     Surface s;
@@ -95,7 +99,7 @@ Surface meshSurface()
     // What multiplies the base colour (diffuse and specular tint) and the coverage.
     vec3 base = vec3(1.0);
     float coverage = 1.0;
-#if (MATERIAL_VARIANT & 32) != 0
+#if (MATERIAL_VARIANT & (32 | 512)) != 0
     coverage = materialAlpha.x;
 #endif
     // materialVariant is a constant, so the compiler drops the branches of absent maps and the
@@ -117,6 +121,7 @@ Surface meshSurface()
     if (coverage < materialAlpha.y)
         discard;
 #endif
+    meshCoverage = coverage;
     s.diffuse = materialDiffuse * base;
     s.specular = materialSpecular;
     if ((materialVariant & kHasSpecularMap) != 0)

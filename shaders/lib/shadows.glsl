@@ -122,6 +122,9 @@ ivec2 screenPixel(vec3 position)
 // The ambient-occlusion factor (1: open, 0: fully occluded) at a visible surface point.
 float ambientOcclusion(vec3 position)
 {
+#ifdef NO_AMBIENT_OCCLUSION  // a surface the occlusion map was not made from (a transparent one)
+    return 1.0;
+#endif
     if (shadowing.occlusionParams.x == 0.0)
         return 1.0;
     return texelFetch(ambientOcclusionMap, screenPixel(position), 0).r;

@@ -15,7 +15,7 @@
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
 #include "render/GBuffer.h"
-#include "render/ClusteredTechnique.h"
+#include "render/ClusterGrid.h"
 #include "render/LightBatches.h"
 #include "core/Error.h"
 
@@ -293,17 +293,17 @@ namespace {
 // (in whole mask words) so the masks stay within kClusterMaskBudgetBytes.
 TEST(ClusteredBatches, FitTheMaskBudgetAtEverySize)
 {
-    EXPECT_EQ(ClusteredTechnique::lightsPerBatch(1280, 720), kLightsPerBatch);
-    EXPECT_EQ(ClusteredTechnique::lightsPerBatch(1920, 1080), kLightsPerBatch);
+    EXPECT_EQ(ClusterGrid::lightsPerBatch(1280, 720), kLightsPerBatch);
+    EXPECT_EQ(ClusterGrid::lightsPerBatch(1920, 1080), kLightsPerBatch);
     for (const auto& [width, height] : {std::pair{3840, 2160}, std::pair{8192, 8192}, std::pair{16384, 16384}}) {
-        const std::uint32_t lights = ClusteredTechnique::lightsPerBatch(width, height);
+        const std::uint32_t lights = ClusterGrid::lightsPerBatch(width, height);
         const std::size_t clusters = static_cast<std::size_t>((width + kClusterTileSize - 1) / kClusterTileSize) *
                                      ((height + kClusterTileSize - 1) / kClusterTileSize) * kClusterSlices;
         EXPECT_EQ(lights % 32, 0u) << width << "x" << height;
         EXPECT_GE(lights, 32u) << width << "x" << height;
         EXPECT_LE(clusters * (lights / 32) * sizeof(std::uint32_t), kClusterMaskBudgetBytes) << width << "x" << height;
     }
-    EXPECT_LT(ClusteredTechnique::lightsPerBatch(8192, 8192), kLightsPerBatch);
+    EXPECT_LT(ClusterGrid::lightsPerBatch(8192, 8192), kLightsPerBatch);
 }
 
 TEST(LightWindows, OnlyAFrameOfOneSmallBatchFitsOne)
@@ -313,7 +313,7 @@ TEST(LightWindows, OnlyAFrameOfOneSmallBatchFitsOne)
     EXPECT_FALSE(fitsOneLightWindow(lightBatches(kLightsPerWindow + 1)));
     // clustered at 8192x4096: batches of 512 by the mask budget. The second would start at
     // light 512, inside the first window: it rendered with an assertion failure before this.
-    const std::uint32_t clusteredBatch = ClusteredTechnique::lightsPerBatch(8192, 4096);
+    const std::uint32_t clusteredBatch = ClusterGrid::lightsPerBatch(8192, 4096);
     ASSERT_LT(clusteredBatch, 1000u);
     EXPECT_FALSE(fitsOneLightWindow(lightBatches(1000, clusteredBatch)));
     // Deferred's own batches are whole windows, each starting at a multiple of the window.

@@ -681,6 +681,10 @@ const std::vector<BadScene> kBadScenes = {
      ": /materials/m/specular_map: ", "not a regular file"},
     {"TextureEmptyPath", R"json({"materials": {"m": {"normal_map": ""}}})json", ": /materials/m/normal_map: ",
      "expected a file path, got an empty string"},
+    {"OpacityAboveOne", R"json({"materials": {"m": {"opacity": 1.5}}})json", ": /materials/m/opacity: ",
+     "must be in [0, 1], got 1.5"},
+    {"OpacityNegative", R"json({"materials": {"m": {"opacity": -0.1}}})json", ": /materials/m/opacity: ",
+     "must be in [0, 1], got -0.1"},
     {"NormalScaleNotANumber", R"json({"materials": {"m": {"normal_scale": "2"}}})json",
      ": /materials/m/normal_scale: ", "expected a number, got a string"},
 
@@ -848,7 +852,7 @@ TEST(SceneLoader, ExactMessages)
               "scene.json:3:24: syntax error while parsing object key: unexpected '}'; expected string literal");
     EXPECT_EQ(errorOf(R"json({"materials": {"m": {"colour": [1, 0, 0]}}})json"),
               "scene.json: /materials/m/colour: unknown key 'colour' (expected one of: diffuse, specular, shininess, "
-              "emissive, diffuse_map, specular_map, normal_map, normal_scale)");
+              "emissive, diffuse_map, specular_map, normal_map, normal_scale, opacity)");
 }
 
 }  // namespace

@@ -1,0 +1,69 @@
+// The cluster grid of shaders/lib/clusters.glsl: screen tiles of kClusterTileSize pixels, each
+// cut into kClusterSlices depth slices spaced exponentially over a depth range of its own, and
+// per cluster a bit mask over a light batch. Two users fill it differently:
+// - the clustered technique fits each tile's range to the opaque surfaces seen through it and
+//   gives lights only to the slices that hold one (fitToSurfaces): Olsson et al.'s compaction;
+// - the transparency pass (render/TransparencyPass.h) needs lights wherever a transparent
+//   surface may be, in front of, between or beyond the opaque ones: every tile spans the same
+//   range, the transparent objects' depths, and every slice is occupied (coverDepthRange).
+// The masks have a fixed size (a bit per light of the batch), so no light can be dropped,
+// nothing is read back and no pass loops more than a bounded number of times.
+#pragma once
+
+#include <cstdint>
+
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "render/FrameTargets.h"
+#include "render/LightBatches.h"
+
+namespace manylights {
+
+class GpuScene;
+
+// 16-pixel tiles, 8 slices each (the shaders get them as CLUSTER_TILE_SIZE and CLUSTER_SLICES;
+// docs/techniques.md has the measurements behind them).
+inline constexpr int kClusterTileSize = 16;
+inline constexpr int kClusterSlices = 8;
+// The cluster masks of one batch may take this much memory; at sizes where a batch of
+// kLightsPerBatch lights would need more, the batches get smaller (in whole mask words).
+inline constexpr std::size_t kClusterMaskBudgetBytes = std::size_t{64} << 20;
+
+// `defines` plus the light batch's and the grid's, for programs that include lib/clusters.glsl.
+gl::Defines clusterGridDefines(gl::Defines defines);
+
+class ClusterGrid {
+public:
+    explicit ClusterGrid(GBufferLayout gbufferLayout);
+
+    // The most lights one batch takes for an image of this size (a multiple of 32).
+    static std::uint32_t lightsPerBatch(int width, int height);
+
+    // Sizes the buffers for the image and the frame's largest light batch.
+    void resize(int width, int height, std::uint32_t largestBatch);
+    // Binds the buffers at lib/clusters.glsl's binding points.
+    void bind() const;
+    // Each tile's range: its opaque surfaces' nearest to farthest view depth (from the depth
+    // buffer and the G-buffer); its occupied slices: those holding a surface.
+    void fitToSurfaces(const GpuScene& scene, FrameTargets& targets);
+    // Every tile's range: view depths nearest to farthest (0 < nearest < farthest); every
+    // slice occupied.
+    void coverDepthRange(float nearest, float farthest);
+    // Sets each light of the batch in the masks of the occupied clusters it may reach.
+    void assignLights(const GpuScene& scene, const LightBatch& batch);
+
+    std::uint32_t clusterCount() const { return clusterCount_; }
+
+private:
+    gl::Program tiles_;
+    gl::Program assign_;
+    int gridWidth_ = 0;
+    int gridHeight_ = 0;
+    std::uint32_t clusterCount_ = 0;
+    gl::Buffer tileDepthRanges_;
+    gl::Buffer tileSlices_;
+    gl::Buffer masks_;
+    gl::Buffer summaries_;
+};
+
+}  // namespace manylights

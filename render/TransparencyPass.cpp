@@ -1,0 +1,104 @@
+#include "render/TransparencyPass.h"
+
+#include <algorithm>
+
+#include "render/GpuScene.h"
+
+namespace manylights {
+
+namespace {
+
+constexpr GLuint kEvaluationsBinding = 9;  // shaders/transparent.frag
+
+gl::Defines everyLightDefines(gl::Defines defines)
+{
+    defines.emplace_back("EVERY_LIGHT", "1");
+    return defines;
+}
+
+}  // namespace
+
+TransparencyPass::TransparencyPass(const TechniqueOptions& options)
+    : options_(options),
+      gridProgram_("transparency", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
+                   clusterGridDefines(shaderDefines(options))),
+      everyLightProgram_("transparency (every light)",
+                         {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
+                         everyLightDefines(shaderDefines(options))),
+      evaluations_("transparent light evaluations", sizeof(std::uint32_t), nullptr,
+                   GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT)
+{
+}
+
+void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler, bool everyLight)
+{
+    lastEvaluations_ = 0;
+    lastLayers_ = 0;
+    if (!scene.hasTransparentObjects())
+        return;
+    auto pass = profiler.pass("transparency");
+    const FrameUniforms& frame = scene.frameUniforms();
+    const float nearPlane = frame.projection.z;
+    const float farPlane = frame.projection.w;
+    const auto depths = scene.transparentDepthRange();
+    if (!depths || depths->second <= nearPlane || depths->first >= farPlane)
+        return;  // nothing transparent within the view's depth
+    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
+    const std::vector<LightBatch> batches =
+        everyLight ? lightBatches(lightCount) : lightBatches(lightCount, ClusterGrid::lightsPerBatch(targets.width, targets.height));
+    if (!everyLight) {
+        if (!grid_)
+            grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout);
+        grid_->resize(targets.width, targets.height, batches.front().size());
+        // Widened so that rounding cannot put a surface of the objects outside the slices.
+        grid_->coverDepthRange(std::max(depths->first * 0.99f, nearPlane), std::min(depths->second * 1.01f, farPlane));
+    }
+    if (options_.countWork) {
+        const std::uint32_t zero = 0;
+        evaluations_.update(0, sizeof zero, &zero);
+        evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
+    }
+    const std::vector<GpuScene::TransparentLayer> layers = scene.transparentLayersBackToFront();
+    // One grid build serves every layer when the lights are one batch.
+    const bool gridPerLayer = !everyLight && batches.size() > 1;
+    if (!everyLight && !gridPerLayer)
+        grid_->assignLights(scene, batches.front());
+
+    targets.litFramebuffer.bind();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    // Premultiplied over; the lit image's alpha is left as it is.
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    const LightingProgram& programs = everyLight ? everyLightProgram_ : gridProgram_;
+    for (const GpuScene::TransparentLayer& layer : layers) {
+        for (const LightBatch& batch : batches) {
+            if (gridPerLayer) {
+                grid_->assignLights(scene, batch);
+                targets.litFramebuffer.bind();
+            }
+            scene.bind();
+            if (!everyLight)
+                grid_->bind();
+            scene.drawTransparentLayer(layer, [&](MaterialVariant variant) -> const gl::Program& {
+                const gl::Program& program =
+                    programs.variant(scene.lightingFeatures(), LightSource::StorageBuffer, variant);
+                setLightBatch(program, batch);
+                return program;
+            });
+            ++lastLayers_;
+        }
+    }
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    if (options_.countWork) {
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::uint32_t count = 0;
+        glGetNamedBufferSubData(evaluations_.id(), 0, sizeof count, &count);
+        lastEvaluations_ = count;
+    }
+}
+
+}  // namespace manylights
