@@ -163,10 +163,9 @@ TEST(GltfModel, ExtensionsAndMaterialFeaturesReadOrSaid)
     ASSERT_EQ(model.materials.size(), 1u);
     EXPECT_NEAR(model.materials[0].emissive.x, 0.5f, 1e-6f);
     EXPECT_NEAR(model.materials[0].emissive.z, 1.5f, 1e-6f);
-    ASSERT_EQ(warnings.messages().size(), 2u);
+    EXPECT_EQ(model.materials[0].alphaMode, AlphaMode::Blend);
+    ASSERT_EQ(warnings.messages().size(), 1u);
     EXPECT_EQ(warnings.messages()[0], "test.gltf: the extension EXT_unknown is not read; the file is drawn without it");
-    EXPECT_EQ(warnings.messages()[1],
-              "test.gltf: materials[0]: alphaMode BLEND is drawn as MASK with alphaCutoff 0.5 (no transparency yet)");
     // Strict: the first is the error.
     Warnings strict(true);
     EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), warnings.messages()[0]);
@@ -198,11 +197,10 @@ TEST(GltfModel, AlphaModesAndSidesAreRead)
 
     material.erase("alphaCutoff");  // the default cutoff
     EXPECT_EQ(b.load().materials[0].alphaCutoff, 0.5f);
-    material["alphaMode"] = "BLEND";
-    material["alphaCutoff"] = 0.9;  // ignored: BLEND is cut at 0.5
+    material["alphaMode"] = "BLEND";  // transparent: the coverage is its opacity
     const Material blended = b.load().materials[0];
-    EXPECT_EQ(blended.alphaMode, AlphaMode::Mask);
-    EXPECT_EQ(blended.alphaCutoff, 0.5f);
+    EXPECT_EQ(blended.alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(blended.opacity, 0.75f);
     material["alphaMode"] = "TRANSLUCENT";
     Warnings unknown;
     EXPECT_EQ(b.load({.warnings = &unknown}).materials[0].alphaMode, AlphaMode::Opaque);
