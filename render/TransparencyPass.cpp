@@ -36,7 +36,6 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
     lastLayers_ = 0;
     if (!scene.hasTransparentObjects())
         return;
-    auto pass = profiler.pass("transparency");
     const FrameUniforms& frame = scene.frameUniforms();
     const float nearPlane = frame.projection.z;
     const float farPlane = frame.projection.w;
@@ -46,23 +45,25 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     const std::vector<LightBatch> batches =
         everyLight ? lightBatches(lightCount) : lightBatches(lightCount, ClusterGrid::lightsPerBatch(targets.width, targets.height));
+    // One grid build serves every layer when the lights are one batch.
+    const bool gridPerLayer = !everyLight && batches.size() > 1;
     if (!everyLight) {
+        auto pass = profiler.pass("transparency grid");
         if (!grid_)
             grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout);
         grid_->resize(targets.width, targets.height, batches.front().size());
         // Widened so that rounding cannot put a surface of the objects outside the slices.
         grid_->coverDepthRange(std::max(depths->first * 0.99f, nearPlane), std::min(depths->second * 1.01f, farPlane));
+        if (!gridPerLayer)
+            grid_->assignLights(scene, batches.front());
     }
+    auto pass = profiler.pass("transparency");
     if (options_.countWork) {
         const std::uint32_t zero = 0;
         evaluations_.update(0, sizeof zero, &zero);
         evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
     }
     const std::vector<GpuScene::TransparentLayer> layers = scene.transparentLayersBackToFront();
-    // One grid build serves every layer when the lights are one batch.
-    const bool gridPerLayer = !everyLight && batches.size() > 1;
-    if (!everyLight && !gridPerLayer)
-        grid_->assignLights(scene, batches.front());
 
     targets.litFramebuffer.bind();
     glEnable(GL_DEPTH_TEST);
