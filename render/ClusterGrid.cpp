@@ -102,6 +102,11 @@ void ClusterGrid::coverDepthRange(float nearest, float farthest)
 
 void ClusterGrid::assignLights(const GpuScene& scene, const LightBatch& batch)
 {
+    // The draws that read the masks of the previous build must be done with them first:
+    // llvmpipe queues draws but clears buffers and runs compute passes at once, and without
+    // this barrier (which makes it finish the queued draws) a transparent layer drawn before
+    // a rebuild read the next build's masks (1,799 values off forward's in a test of it).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     // Cleared by the GL: on llvmpipe a plain memset of the batch's words beats a compute pass
     // that clears only the occupied clusters' words.
     const std::uint32_t words = wordsFor(batch.size());

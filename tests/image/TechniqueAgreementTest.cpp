@@ -180,7 +180,14 @@ INSTANTIATE_TEST_SUITE_P(
                       // Shadows (directional, spot maps, cube maps for points and wide spots)
                       // and SSAO: every technique samples the same maps at the same positions.
                       AgreementCase{"shadows_and_ssao", kScenes + "shadows_and_ssao.json",
-                                    {"--size", "160x120", "--shadow-lights", "24"}}),
+                                    {"--size", "160x120", "--shadow-lights", "24"}},
+                      // Transparent panes and drops (the transparency pass, issue 16): over the
+                      // grid of the transparent objects' depths, against forward's every light;
+                      // past one light batch, the grid rebuilt per layer and batch.
+                      AgreementCase{"glass_transparency", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
+                                    {"--size", "320x180"}},
+                      AgreementCase{"glass_transparency_two_batches", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
+                                    {"--size", "128x72", "--lights", "9000"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 // The sizes people render at. A light whose sphere covers much of the view reaches tens of
