@@ -23,6 +23,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -599,6 +600,155 @@ TEST_P(Analytic, TextureTransformMovesTurnsAndScalesTheUvs)
     };
     checkEveryPixel(scene, expected, "129x129", dir);
     EXPECT_GT(checked, 200);
+}
+
+// --- transparency (docs/transparency.md) -------------------------------------------------
+
+// "Over" with the front surface's opacity: the colour a transparent layer leaves.
+glm::dvec3 over(const glm::dvec3& front, double opacity, const glm::dvec3& behind)
+{
+    return opacity * front + (1.0 - opacity) * behind;
+}
+
+// Whether the eye ray to plane point p (y = 0) crosses y = height inside |x - cx| < hx,
+// |z| < hz; nullopt within 1e-3 of the rectangle's edge.
+std::optional<bool> rayCrossesRectangle(const glm::dvec3& eye, const glm::dvec3& p, double height, double cx,
+                                        double hx, double hz)
+{
+    const glm::dvec3 q = eye + (p - eye) * ((eye.y - height) / (eye.y - p.y));
+    if (std::abs(std::abs(q.x - cx) - hx) < 1e-3 || std::abs(std::abs(q.z) - hz) < 1e-3)
+        return std::nullopt;
+    return std::abs(q.x - cx) < hx && std::abs(q.z) < hz;
+}
+
+TEST_P(Analytic, HalfTransparentQuadIsTheOverOfBothShadedColours)
+{
+    // A 2x2 quad at y = 1 (kd (1, 0.5, 0.25), opacity 0.4) over a grey plane (kd 0.5), ambient
+    // 0.2, a directional light straight down (N·L = 1 on both; no specular): each surface is
+    // kd · 1.2, and where the quad covers the plane the pixel is 0.4 · quad + 0.6 · plane.
+    // The position view holds the opaque surface (the plane) under every pixel.
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "ambient": [0.2, 0.2, 0.2],
+        "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
+        "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
+                      "glass": {"diffuse": [1, 0.5, 0.25], "opacity": 0.4}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
+                    {"mesh": {"primitive": "plane", "size": [2, 2]}, "material": "glass",
+                     "transform": {"translate": [0, 1, 0]}}]})";
+    const glm::dvec3 eye(0, 10, 0);
+    const glm::dvec3 plane(0.5 * 1.2);
+    const glm::dvec3 glass = glm::dvec3(1.0, 0.5, 0.25) * 1.2;
+    int covered = 0;
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        const auto under = rayCrossesRectangle(eye, p, 1.0, 0.0, 1.0, 1.0);
+        if (!under)
+            return std::nullopt;
+        if (!*under)
+            return plane;
+        ++covered;
+        return over(glass, 0.4, plane);
+    };
+    EXPECT_EQ(checkEveryPixel(scene, expected), 65 * 65);
+    EXPECT_GT(covered, 100);
+}
+
+TEST_P(Analytic, OverlappingPanesInEitherOrderGiveTheBackToFrontResult)
+{
+    // Pane A (y = 1, x in [−2, 1], kd (1, 0.2, 0.2), opacity 0.5) under pane B (y = 2, x in
+    // [−1, 2], kd (0.2, 0.2, 1), opacity 0.25), both 2 deep, over the grey plane; lit as above.
+    // Where both cover the plane: over(B, over(A, plane)), whichever order the scene lists them.
+    const std::string paneA = R"({"mesh": {"primitive": "plane", "size": [3, 2]}, "material": "red glass",
+                                  "transform": {"translate": [-0.5, 1, 0]}})";
+    const std::string paneB = R"({"mesh": {"primitive": "plane", "size": [3, 2]}, "material": "blue glass",
+                                  "transform": {"translate": [0.5, 2, 0]}})";
+    const auto scene = [&](const std::string& first, const std::string& second) {
+        return std::string("{") + kTopCamera + R"(,
+            "ambient": [0.2, 0.2, 0.2],
+            "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
+            "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
+                          "red glass": {"diffuse": [1, 0.2, 0.2], "opacity": 0.5},
+                          "blue glass": {"diffuse": [0.2, 0.2, 1], "opacity": 0.25}},
+            "objects": [)" + first + ", " + second + R"(,
+                        {"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"}]})";
+    };
+    const glm::dvec3 eye(0, 10, 0);
+    const glm::dvec3 plane(0.5 * 1.2);
+    const glm::dvec3 red = glm::dvec3(1.0, 0.2, 0.2) * 1.2;
+    const glm::dvec3 blue = glm::dvec3(0.2, 0.2, 1.0) * 1.2;
+    int both = 0;
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        const auto underA = rayCrossesRectangle(eye, p, 1.0, -0.5, 1.5, 1.0);
+        const auto underB = rayCrossesRectangle(eye, p, 2.0, 0.5, 1.5, 1.0);
+        if (!underA || !underB)
+            return std::nullopt;
+        glm::dvec3 colour = plane;
+        if (*underA)
+            colour = over(red, 0.5, colour);
+        if (*underB)
+            colour = over(blue, 0.25, colour);
+        if (*underA && *underB)
+            ++both;
+        return colour;
+    };
+    checkEveryPixel(scene(paneA, paneB), expected);
+    const int bothInOneOrder = both;
+    EXPECT_GT(bothInOneOrder, 100);
+    both = 0;
+    checkEveryPixel(scene(paneB, paneA), expected);
+    EXPECT_EQ(both, bothInOneOrder);
+}
+
+TEST_P(Analytic, TransparentSurfacesNearerAndFartherThanEveryOpaqueOneGetTheirLights)
+{
+    // The opaque surfaces: one box at the origin. Quad N (kd (1, 0.5, 0.25), opacity 0.5)
+    // hangs at (−2, 2, 6), nearer than any opaque surface; quad F (kd (0.25, 0.5, 1),
+    // opacity 0.5) at (2, 2, −20), beyond them all, with only the black background behind it.
+    // Each faces the camera (+Z) and has a small light 0.5 in front of its centre (range 1.5,
+    // intensity 1: A = 1/0.25 − 1/2.25 at the centre, N·L = 1) that reaches nothing else;
+    // ambient 0.1. At the pixel nearest each quad's centre the colour is 0.5 · kd · (0.1 +
+    // A(d) · N·L) at the point it sees, over black: a grid fitted to the opaque surfaces'
+    // depths would have no cluster there and leave it at 0.5 · kd · 0.1.
+    const std::string scene = R"({
+        "camera": {"eye": [0, 2, 10], "look_at": [0, 2, 0], "up": [0, 1, 0], "fov_y": 60, "near": 0.1, "far": 100},
+        "ambient": [0.1, 0.1, 0.1],
+        "lights": [{"type": "point", "pos": [-2, 2, 6.5], "intensity": [1, 1, 1], "range": 1.5},
+                   {"type": "point", "pos": [2, 2, -19.5], "intensity": [1, 1, 1], "range": 1.5}],
+        "materials": {"near glass": {"diffuse": [1, 0.5, 0.25], "opacity": 0.5},
+                      "far glass": {"diffuse": [0.25, 0.5, 1], "opacity": 0.5}},
+        "objects": [{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 2, 0]}},
+                    {"mesh": {"primitive": "plane", "size": [1, 1]}, "material": "near glass",
+                     "transform": {"translate": [-2, 2, 6], "rotate": [90, 0, 0]}},
+                    {"mesh": {"primitive": "plane", "size": [6, 6]}, "material": "far glass",
+                     "transform": {"translate": [2, 2, -20], "rotate": [90, 0, 0]}}]})";
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", scene);
+    const int width = 129;
+    const int height = 65;
+    const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
+                                  {"--size", "129x65", "--technique", GetParam(), "--gbuffer", "seed"});
+    // The quads' centres on screen: x = ±2 at depth 4 and 30 from the eye; fov 60, aspect 129/65.
+    const double tanHalf = std::tan(kPi / 6);
+    const double aspect = static_cast<double>(width) / height;
+    const auto column = [&](double x, double depth) {
+        return static_cast<int>(std::floor((0.5 + 0.5 * x / (depth * tanHalf * aspect)) * width));
+    };
+    for (const auto& [x, depth, kd] : {std::tuple{-2.0, 4.0, glm::dvec3(1, 0.5, 0.25)},
+                                       std::tuple{2.0, 30.0, glm::dvec3(0.25, 0.5, 1)}}) {
+        // The point the pixel's centre sees on the quad (the centre row looks straight ahead),
+        // lit by the light 0.5 in front of the quad's centre.
+        const int px = column(x, depth);
+        const double ndcX = (px + 0.5) / width * 2.0 - 1.0;
+        const glm::dvec3 seen(ndcX * depth * tanHalf * aspect, 2.0, 10.0 - depth);
+        const glm::dvec3 light(x, 2.0, 10.0 - depth + 0.5);
+        const double d = glm::length(light - seen);
+        const double attenuation = 1.0 / (d * d) - 1.0 / 2.25;
+        const double NdotL = (light.z - seen.z) / d;
+        const glm::dvec3 want = 0.5 * kd * (0.1 + attenuation * NdotL);
+        const float* got = image.pixel(px, height / 2);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(got[c], want[c], kAbsoluteTolerance + kRelativeTolerance * want[c])
+                << "quad at depth " << depth << ", channel " << c;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
