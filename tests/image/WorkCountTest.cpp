@@ -181,7 +181,7 @@ TEST(WorkCounts, TiledAndClusteredCullingOnTheBenchmarkScene)
 
 // The transparency pass's pairs go to transparent_light_evaluations, apart from the opaque
 // surfaces' light_evaluations: forward's opaque count is the same with the transparent objects
-// made opaque-free (removed), its transparent count a whole number of fragments times every
+// removed, its transparent count a whole number of fragments times every
 // light; the grid's count is a part of forward's (measured on scenes/glass.json at 320x180:
 // 1,030 lights; forward 18,434,940 transparent pairs = 17,898 fragments x 1,030, clustered
 // 683,858, 3.7%).

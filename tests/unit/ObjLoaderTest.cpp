@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "core/Error.h"
 #include "scene/ObjLoader.h"
@@ -107,6 +108,26 @@ TEST(ObjModel, TextureOptionsOffsetScaleAndClampTheMap)
     EXPECT_EQ(material.wraps[kDiffuseSlot].t, TextureWrap::ClampToEdge);
     EXPECT_EQ(material.uvTransforms[kSpecularSlot], glm::mat3{1.0f});
     EXPECT_EQ(material.wraps[kSpecularSlot].s, TextureWrap::Repeat);
+}
+
+// `d` below 1 (or `Tr` above 0, which tinyobjloader reads as d = 1 − Tr) makes the material
+// transparent with that opacity; `d 1` keeps it opaque.
+TEST(ObjModel, DissolveMakesTheMaterialTransparent)
+{
+    const fs::path dir = scratch();
+    write(dir / "m.mtl", "newmtl glass\nKd 0.2 0.4 0.8\nd 0.25\nnewmtl tinted\nTr 0.5\nnewmtl solid\nd 1\n");
+    write(dir / "quads.obj", std::string("mtllib m.mtl\n") + kQuad +
+                                 "usemtl glass\nf 1 2 3\nusemtl tinted\nf 1 3 4\nusemtl solid\nf 2 3 4\n");
+    const Model model = loadObj(dir / "quads.obj");
+    ASSERT_EQ(model.materials.size(), 3u);
+    std::map<std::string, const Material*> byName;
+    for (const Material& material : model.materials)
+        byName[material.name.substr(material.name.find('#') + 1)] = &material;
+    EXPECT_EQ(byName.at("glass")->alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(byName.at("glass")->opacity, 0.25f);
+    EXPECT_EQ(byName.at("tinted")->alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(byName.at("tinted")->opacity, 0.5f);
+    EXPECT_EQ(byName.at("solid")->alphaMode, AlphaMode::Opaque);
 }
 
 TEST(ObjModel, WithoutUsemtlThereAreNoSubMeshes)

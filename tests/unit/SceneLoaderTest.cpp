@@ -9,6 +9,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <map>
 #include <unistd.h>
 
 #include "core/Error.h"
@@ -227,6 +229,24 @@ TEST(SceneLoader, DefaultMaterialAddedOnceAndMaterialDefaults)
     }
     // Identical primitives share one mesh.
     EXPECT_EQ(scene.meshes.size(), 1u);
+}
+
+// `opacity` below 1 makes a material transparent (AlphaMode::Blend); 1, or none, opaque.
+TEST(SceneLoader, OpacityBelowOneIsTransparent)
+{
+    const Scene scene = parse(R"json({ "materials": {
+        "glass": { "diffuse": [0.2, 0.4, 0.8], "opacity": 0.3 },
+        "solid": { "opacity": 1 },
+        "plain": {} } })json");
+    ASSERT_EQ(scene.materials.size(), 3u);
+    std::map<std::string, const Material*> byName;
+    for (const Material& m : scene.materials)
+        byName[m.name] = &m;
+    EXPECT_EQ(byName.at("glass")->alphaMode, AlphaMode::Blend);
+    EXPECT_FLOAT_EQ(byName.at("glass")->opacity, 0.3f);
+    EXPECT_EQ(byName.at("solid")->alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(byName.at("plain")->alphaMode, AlphaMode::Opaque);
+    EXPECT_FLOAT_EQ(byName.at("plain")->opacity, 1.0f);
 }
 
 TEST(SceneLoader, MeshesAreShared)
