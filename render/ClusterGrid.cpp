@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/Error.h"
 #include "render/GpuScene.h"
 
 namespace manylights {
@@ -60,7 +61,8 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
     if (!tileSlices_ || tileSlices_.size() != tileBytes) {
         tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, 0);
-        tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, 0);
+        // Dynamic: coverDepthRange writes it from the CPU.
+        tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
     const std::uint32_t words = std::max(wordsFor(largestBatch), 1u);
@@ -91,12 +93,16 @@ void ClusterGrid::fitToSurfaces(const GpuScene& scene, FrameTargets& targets)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void ClusterGrid::coverDepthRange(float nearest, float farthest)
+void ClusterGrid::coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered)
 {
+    ML_ASSERT(covered.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
     const float range[2] = {nearest, farthest};
     glClearNamedBufferData(tileDepthRanges_.id(), GL_RG32F, GL_RG, GL_FLOAT, range);
     const std::uint32_t allSlices = (1u << kClusterSlices) - 1u;
-    glClearNamedBufferData(tileSlices_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &allSlices);
+    std::vector<std::uint32_t> slices(covered.size());
+    for (std::size_t tile = 0; tile < covered.size(); ++tile)
+        slices[tile] = covered[tile] ? allSlices : 0u;
+    tileSlices_.update(0, slices.size() * sizeof(std::uint32_t), slices.data());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -47,12 +48,16 @@ public:
     // buffer and the G-buffer); its occupied slices: those holding a surface.
     void fitToSurfaces(const GpuScene& scene, FrameTargets& targets);
     // Every tile's range: view depths nearest to farthest (0 < nearest < farthest); every
-    // slice occupied.
-    void coverDepthRange(float nearest, float farthest);
+    // slice of the tiles where `covered` (one flag per tile, row by row) is true occupied, no
+    // slice of the others (lights are then assigned only where something needs them).
+    void coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered);
     // Sets each light of the batch in the masks of the occupied clusters it may reach.
     void assignLights(const GpuScene& scene, const LightBatch& batch);
 
     std::uint32_t clusterCount() const { return clusterCount_; }
+    // The tiles across and down, after resize.
+    int gridWidth() const { return gridWidth_; }
+    int gridHeight() const { return gridHeight_; }
 
 private:
     gl::Program tiles_;

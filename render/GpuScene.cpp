@@ -517,6 +517,17 @@ void GpuScene::drawTransparentLayer(const TransparentLayer& layer, const MeshPro
     glFrontFace(GL_CCW);
 }
 
+std::vector<Bounds> GpuScene::transparentWorldBounds() const
+{
+    std::vector<Bounds> bounds;
+    for (const DrawBatch& batch : batches_) {
+        const DrawItem& item = draws_[batch.firstItem];
+        if (isTransparent(*item.material) && !item.worldBounds.empty())
+            bounds.push_back(item.worldBounds);
+    }
+    return bounds;
+}
+
 std::optional<std::pair<float, float>> GpuScene::transparentDepthRange() const
 {
     const glm::vec3 eye(frame_.eye);

@@ -106,6 +106,8 @@ public:
     // The view depths (along the view axis) the transparent items' world bounds span:
     // nearest ≤ farthest; nullopt without transparent items.
     std::optional<std::pair<float, float>> transparentDepthRange() const;
+    // The transparent items' world bounds (empty bounds left out).
+    std::vector<Bounds> transparentWorldBounds() const;
     // Depth-only passes (shadow maps, shaders/shadow_depth.*): draws the items whose world
     // bounds pass `keep`, each run of kept items of a batch as one instanced draw, with
     // programFor(depthOnlyVariant(the material's variant)) (an alpha-masked caster's program

@@ -1,6 +1,9 @@
 #include "render/TransparencyPass.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 #include "render/GpuScene.h"
 
@@ -14,6 +17,49 @@ gl::Defines everyLightDefines(gl::Defines defines)
 {
     defines.emplace_back("EVERY_LIGHT", "1");
     return defines;
+}
+
+// The grid's tiles that a transparent item's world bounds may cover on screen: the rectangle
+// around its box's projected corners, widened by a tile; every tile when a corner lies at or
+// behind the eye plane (the projection is not bounded there).
+std::vector<bool> coveredTiles(const GpuScene& scene, int tilesAcross, int tilesDown)
+{
+    std::vector<bool> covered(static_cast<std::size_t>(tilesAcross * tilesDown), false);
+    const FrameUniforms& frame = scene.frameUniforms();
+    const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
+    for (const Bounds& bounds : scene.transparentWorldBounds()) {
+        glm::vec2 lo(std::numeric_limits<float>::max());
+        glm::vec2 hi(-std::numeric_limits<float>::max());
+        bool behindEye = false;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                              (corner & 4) ? bounds.max.z : bounds.min.z);
+            const glm::vec4 clip = frame.viewProjection * glm::vec4(p, 1.0f);
+            if (!(clip.w > 0.0f)) {
+                behindEye = true;
+                break;
+            }
+            const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * viewport;
+            lo = glm::min(lo, pixel);
+            hi = glm::max(hi, pixel);
+        }
+        int x0 = 0, y0 = 0, x1 = tilesAcross - 1, y1 = tilesDown - 1;
+        if (!behindEye) {
+            const auto tile = [](float pixel, int tiles) {
+                return std::clamp(static_cast<int>(std::floor(pixel / kClusterTileSize)), 0, tiles - 1);
+            };
+            if (hi.x < 0.0f || hi.y < 0.0f || lo.x > viewport.x || lo.y > viewport.y)
+                continue;  // off screen
+            x0 = std::max(tile(lo.x, tilesAcross) - 1, 0);
+            y0 = std::max(tile(lo.y, tilesDown) - 1, 0);
+            x1 = std::min(tile(hi.x, tilesAcross) + 1, tilesAcross - 1);
+            y1 = std::min(tile(hi.y, tilesDown) + 1, tilesDown - 1);
+        }
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                covered[static_cast<std::size_t>(y * tilesAcross + x)] = true;
+    }
+    return covered;
 }
 
 }  // namespace
@@ -53,7 +99,8 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
             grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout);
         grid_->resize(targets.width, targets.height, batches.front().size());
         // Widened so that rounding cannot put a surface of the objects outside the slices.
-        grid_->coverDepthRange(std::max(depths->first * 0.99f, nearPlane), std::min(depths->second * 1.01f, farPlane));
+        grid_->coverDepthRange(std::max(depths->first * 0.99f, nearPlane), std::min(depths->second * 1.01f, farPlane),
+                               coveredTiles(scene, grid_->gridWidth(), grid_->gridHeight()));
         if (!gridPerLayer)
             grid_->assignLights(scene, batches.front());
     }

@@ -26,6 +26,12 @@ $ml render scenes/gltf-models.json -o $out/scene-gltf-models.png --size 640x360
 $ml render scenes/textured-normal-mapped.json -o $out/scene-textured-normal-mapped.png --size 640x384 \
   --shadow-lights 2
 
+# Transparency (docs/transparency.md): the glass scene, and the light-count view of its
+# transparent surfaces' grid against forward's every light.
+$ml render scenes/glass.json -o $out/scene-glass.png --size 1280x720 --technique clustered
+$ml render scenes/glass.json -o $out/glass-light-count-clustered.png --size 640x360 --technique clustered \
+  --view light-count
+
 # The techniques side by side (docs/techniques.md).
 for technique in forward deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique
