@@ -28,7 +28,7 @@ $ml render scenes/textured-normal-mapped.json -o $out/scene-textured-normal-mapp
 
 # Transparency (docs/transparency.md): the glass scene, and the light-count view of its
 # transparent surfaces' grid against forward's every light.
-$ml render scenes/glass.json -o $out/scene-glass.png --size 1280x720 --technique clustered
+$ml render scenes/glass.json -o $out/scene-glass.png --size 960x540 --technique clustered
 $ml render scenes/glass.json -o $out/glass-light-count-clustered.png --size 640x360 --technique clustered \
   --view light-count
 
