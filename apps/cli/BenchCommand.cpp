@@ -28,21 +28,13 @@ namespace {
 constexpr int kMaxLights = 16'777'216;
 constexpr int kMaxFrames = 100'000;
 
-struct PassResult {
-    std::string name;
-    double wallMs = 0.0;  // median over the measured frames
-    std::optional<std::uint64_t> fragmentInvocations;
-};
-
 // One combination of the sweep.
 struct BenchResult {
     std::string technique;
     std::size_t lights = 0;  // every light rendered: the scene's explicit lights and its sets'
     ImageSize size;
     int frames = 0;
-    Statistics frameMs;   // wall clock (render/PassProfiler.h says why)
-    double frameGpuMs = 0.0;  // median of the timer-query frame times
-    std::vector<PassResult> passes;
+    FrameSummary measured;  // the measured frames
     std::optional<WorkCounts> work;  // with --count-work
 };
 
@@ -61,10 +53,10 @@ void rejectRepeats(const std::vector<T>& values, const std::string& option)
         }
 }
 
-std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassResult>& passes)
+std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassSummary>& passes)
 {
     std::uint64_t total = 0;
-    for (const PassResult& pass : passes) {
+    for (const PassSummary& pass : passes) {
         if (!pass.fragmentInvocations)
             return std::nullopt;
         total += *pass.fragmentInvocations;
@@ -93,22 +85,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     result.lights = lights.size();
     result.size = size;
     result.frames = options.frames;
-    std::vector<double> wallMs;
-    std::vector<double> gpuMs;
-    for (const FrameSample& frame : frames) {
-        wallMs.push_back(frame.wallMs);
-        gpuMs.push_back(frame.gpuMs);
-    }
-    result.frameMs = summarize(wallMs);
-    result.frameGpuMs = summarize(gpuMs).median;
-    // Every frame runs the same passes in the same order.
-    for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
-        std::vector<double> passWallMs;
-        for (const FrameSample& frame : frames)
-            passWallMs.push_back(frame.passes[p].wallMs);
-        const PassSample& last = frames.back().passes[p];
-        result.passes.push_back({last.name, summarize(passWallMs).median, last.fragmentInvocations});
-    }
+    result.measured = summarizeFrames(frames);
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
@@ -205,7 +182,7 @@ std::string csvText(const std::vector<BenchResult>& results)
         "fragment_invocations,passes,light_evaluations,in_range_pairs\n";
     for (const BenchResult& r : results) {
         std::string passes;
-        for (const PassResult& pass : r.passes) {
+        for (const PassSummary& pass : r.measured.passes) {
             if (!passes.empty())
                 passes += ';';
             passes += pass.name + ':' + formatMs(pass.wallMs) + ':' + optionalCount(pass.fragmentInvocations);
@@ -216,11 +193,11 @@ std::string csvText(const std::vector<BenchResult>& results)
             std::to_string(r.size.width),
             std::to_string(r.size.height),
             std::to_string(r.frames),
-            formatMs(r.frameMs.median),
-            formatMs(r.frameMs.min),
-            formatMs(r.frameMs.max),
-            formatMs(r.frameGpuMs),
-            optionalCount(totalFragmentInvocations(r.passes)),
+            formatMs(r.measured.wallMs.median),
+            formatMs(r.measured.wallMs.min),
+            formatMs(r.measured.wallMs.max),
+            formatMs(r.measured.gpuMs.median),
+            optionalCount(totalFragmentInvocations(r.measured.passes)),
             passes,
             r.work ? std::to_string(r.work->lightEvaluations) : "",
             r.work ? std::to_string(r.work->inRangePairs) : "",
@@ -273,9 +250,9 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
         std::vector<std::string> row = {r.technique,
                                         std::to_string(r.lights),
                                         formatSize(r.size),
-                                        formatMs(r.frameMs.median),
-                                        formatMs(r.frameMs.min),
-                                        formatMs(r.frameMs.max)};
+                                        formatMs(r.measured.wallMs.median),
+                                        formatMs(r.measured.wallMs.min),
+                                        formatMs(r.measured.wallMs.max)};
         if (countWork) {
             row.push_back(std::to_string(r.work->lightEvaluations));
             row.push_back(std::to_string(r.work->inRangePairs));
@@ -288,7 +265,7 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
             row.emplace_back(efficiency);
         }
         std::string passes;
-        for (const PassResult& pass : r.passes) {
+        for (const PassSummary& pass : r.measured.passes) {
             char entry[96];
             std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(),
                           pass.wallMs);
@@ -325,9 +302,9 @@ std::string plotText(const std::vector<BenchResult>& results, const BenchOptions
                     continue;
                 char note[128];
                 std::snprintf(note, sizeof note, "%s: %zu lights, %.1f ms (min %.1f, max %.1f)", technique.c_str(),
-                              r.lights, r.frameMs.median, r.frameMs.min, r.frameMs.max);
-                series.points.push_back({static_cast<double>(r.lights), r.frameMs.median, r.frameMs.min,
-                                         r.frameMs.max, note});
+                              r.lights, r.measured.wallMs.median, r.measured.wallMs.min, r.measured.wallMs.max);
+                series.points.push_back({static_cast<double>(r.lights), r.measured.wallMs.median, r.measured.wallMs.min,
+                                         r.measured.wallMs.max, note});
             }
             panel.series.push_back(std::move(series));
         }
@@ -458,8 +435,8 @@ void runBench(const BenchOptions& options)
                     }
                     progress.start(label);
                     results.push_back(measure(scene, lights, technique, size, options));
-                    progress.finish(label, results.back().frameMs.median);
-                    if (options.budgetMs > 0.0 && results.back().frameMs.median > options.budgetMs)
+                    progress.finish(label, results.back().measured.wallMs.median);
+                    if (options.budgetMs > 0.0 && results.back().measured.wallMs.median > options.budgetMs)
                         overBudget.insert(technique);
                 }
             }

@@ -51,6 +51,32 @@ std::string formatSize(const ImageSize& size)
     return std::to_string(size.width) + "x" + std::to_string(size.height);
 }
 
+FrameSummary summarizeFrames(const std::vector<FrameSample>& frames)
+{
+    ML_ASSERT(!frames.empty());
+    FrameSummary summary;
+    std::vector<double> wallMs;
+    std::vector<double> gpuMs;
+    for (const FrameSample& frame : frames) {
+        wallMs.push_back(frame.wallMs);
+        gpuMs.push_back(frame.gpuMs);
+    }
+    summary.wallMs = summarize(wallMs);
+    summary.gpuMs = summarize(gpuMs);
+    for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
+        std::vector<double> passWallMs;
+        std::vector<double> passGpuMs;
+        for (const FrameSample& frame : frames) {
+            passWallMs.push_back(frame.passes[p].wallMs);
+            passGpuMs.push_back(frame.passes[p].gpuMs);
+        }
+        const PassSample& last = frames.back().passes[p];
+        summary.passes.push_back(
+            {last.name, summarize(passWallMs).median, summarize(passGpuMs).median, last.fragmentInvocations});
+    }
+    return summary;
+}
+
 Statistics summarize(std::vector<double> values)
 {
     ML_ASSERT(!values.empty());

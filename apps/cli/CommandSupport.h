@@ -3,6 +3,7 @@
 // and report the same statistics.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -14,6 +15,7 @@
 
 #include "core/Error.h"
 
+#include "render/PassProfiler.h"
 #include "render/ShadowMaps.h"  // kMaxShadowLights
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
@@ -79,6 +81,22 @@ struct Statistics {
     double max = 0.0;
 };
 Statistics summarize(std::vector<double> values);
+
+// The measured frames of render --frames and of one bench combination, summarised the same
+// way for both: the frame's wall clock and timer-query times, and per pass (every frame runs
+// the same passes in the same order) the medians and the last frame's fragment invocations.
+struct PassSummary {
+    std::string name;
+    double wallMs = 0.0;  // medians over the frames
+    double gpuMs = 0.0;
+    std::optional<std::uint64_t> fragmentInvocations;
+};
+struct FrameSummary {
+    Statistics wallMs;  // wall clock (render/PassProfiler.h says why it is the one to compare)
+    Statistics gpuMs;
+    std::vector<PassSummary> passes;
+};
+FrameSummary summarizeFrames(const std::vector<FrameSample>& frames);
 
 // The camera options of render, bench and view (docs/cli.md): a model file's camera by name
 // or index, then any of its parts replaced.

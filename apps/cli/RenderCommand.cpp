@@ -42,38 +42,22 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["anisotropy"] = anisotropy;
     stats["warmup_frames"] = kWarmupFrames;
     stats["warnings"] = scene.warnings.size();
-    const auto summaryJson = [](const std::vector<double>& values) {
-        const Statistics summary = summarize(values);
-        return nlohmann::json{{"median", summary.median}, {"min", summary.min}, {"max", summary.max}};
+    const auto summaryJson = [](const Statistics& statistics) {
+        return nlohmann::json{{"median", statistics.median}, {"min", statistics.min}, {"max", statistics.max}};
     };
-    std::vector<double> frameWallMs;
-    std::vector<double> frameGpuMs;
-    for (const FrameSample& frame : frames) {
-        frameWallMs.push_back(frame.wallMs);
-        frameGpuMs.push_back(frame.gpuMs);
-    }
+    const FrameSummary summary = summarizeFrames(frames);
     // frame_ms is the wall clock between glFinish calls: exact on llvmpipe, whose timer
     // queries miss its tile threads' work (render/PassProfiler.h). frame_gpu_ms is the
     // timer-query view of the same frames.
-    stats["frame_ms"] = summaryJson(frameWallMs);
-    stats["frame_gpu_ms"] = summaryJson(frameGpuMs);
+    stats["frame_ms"] = summaryJson(summary.wallMs);
+    stats["frame_gpu_ms"] = summaryJson(summary.gpuMs);
     nlohmann::json passes = nlohmann::json::array();
-    // Every frame runs the same passes in the same order.
-    for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
-        std::vector<double> passGpuMs;
-        std::vector<double> passWallMs;
-        for (const FrameSample& frame : frames) {
-            passGpuMs.push_back(frame.passes[p].gpuMs);
-            passWallMs.push_back(frame.passes[p].wallMs);
-        }
-        const PassSample& last = frames.back().passes[p];
-        nlohmann::json pass = {{"name", last.name},
-                               {"gpu_ms", summarize(passGpuMs).median},
-                               {"wall_ms", summarize(passWallMs).median}};
-        pass["fragment_invocations"] =
-            last.fragmentInvocations ? nlohmann::json(*last.fragmentInvocations) : nlohmann::json(nullptr);
-        passes.push_back(pass);
-    }
+    for (const PassSummary& pass : summary.passes)
+        passes.push_back({{"name", pass.name},
+                          {"gpu_ms", pass.gpuMs},
+                          {"wall_ms", pass.wallMs},
+                          {"fragment_invocations", pass.fragmentInvocations ? nlohmann::json(*pass.fragmentInvocations)
+                                                                            : nlohmann::json(nullptr)}});
     stats["passes"] = passes;
     for (const TechniqueCounter& counter : technique.counters())
         stats[counter.name] = counter.value;

@@ -13,6 +13,7 @@
 #include "render/Renderer.h"
 #include "render/TiledQuadsTechnique.h"
 #include "scene/Meshes.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -67,20 +68,6 @@ void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, st
         light.intensity = 0.02f * glm::vec3(hue(random), hue(random), hue(random));
         lights.push_back(light);
     }
-}
-
-void expectSameImage(const Image& reference, const Image& candidate)
-{
-    ASSERT_EQ(reference.rgb.size(), candidate.rgb.size());
-    int failures = 0;
-    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
-        // The tolerance of tests/image/TechniqueAgreementTest.cpp, for the same reasons.
-        const float difference = std::abs(candidate.rgb[i] - reference.rgb[i]);
-        if (!(difference <= 1e-5f * std::abs(reference.rgb[i]) + 1e-6f) && ++failures <= 5)
-            ADD_FAILURE() << "pixel " << i / 3 << " channel " << i % 3 << ": " << reference.rgb[i] << " vs "
-                          << candidate.rgb[i];
-    }
-    EXPECT_EQ(failures, 0);
 }
 
 TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
@@ -143,7 +130,7 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
     const Image image = renderer.readColour();
     DeferredTechnique deferred({.countWork = true});
     renderer.renderFrame(deferred, ViewMode::Final);
-    expectSameImage(renderer.readColour(), image);
+    test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
 }
 
 TEST_F(TiledQuadsTest, NoLightsAndResizing)
@@ -158,7 +145,7 @@ TEST_F(TiledQuadsTest, NoLightsAndResizing)
         const Image image = renderer.readColour();
         DeferredTechnique deferred({});
         renderer.renderFrame(deferred, ViewMode::Final);
-        expectSameImage(renderer.readColour(), image);
+        test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
     // The grid follows the image size from frame to frame.
     std::mt19937 random(2);
@@ -175,7 +162,7 @@ TEST_F(TiledQuadsTest, NoLightsAndResizing)
         EXPECT_EQ(tiled.lastLists().tilesY, (height + 31) / 32);
         const Image image = renderer.readColour();
         renderer.renderFrame(deferred, ViewMode::Final);
-        expectSameImage(renderer.readColour(), image);
+        test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
 }
 

@@ -32,6 +32,7 @@
 
 #include "TestSupport.h"
 #include "render/Technique.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -41,8 +42,8 @@ using test::scratchDirectory;
 using test::writeFile;
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kAbsoluteTolerance = 2e-5;
-constexpr double kRelativeTolerance = 1e-4;
+constexpr double kAbsoluteTolerance = test::kAnalyticTolerance.absolute;  // 2e-5, tests/support/ImageComparison.h
+constexpr double kRelativeTolerance = test::kAnalyticTolerance.relative;  // 1e-4
 // How far from a shadow's edge the shadow test's filter can reach (as tests/image/ShadowTest.cpp).
 constexpr double kPenumbraMargin = 0.05;
 

@@ -13,6 +13,7 @@
 
 #include "TestSupport.h"
 #include "render/Technique.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -72,12 +73,7 @@ TEST(ModelFile, GltfScenesEveryTechniqueMatchesForward)
             continue;
         const Image image = renderPfm(scene, dir / (technique + ".pfm"),
                                       {"--size", "64x36", "--technique", technique, "--gbuffer", "seed"});
-        ASSERT_EQ(image.rgb.size(), forward.rgb.size());
-        int failures = 0;
-        for (std::size_t i = 0; i < forward.rgb.size(); ++i)
-            if (std::abs(image.rgb[i] - forward.rgb[i]) > 1e-5f * std::abs(forward.rgb[i]) + 1e-6f)
-                ++failures;
-        EXPECT_EQ(failures, 0) << technique;
+        test::expectImagesNear(forward, image, test::kAgreementTolerance, technique);
     }
 }
 

@@ -21,6 +21,7 @@
 
 #include "TestSupport.h"
 #include "render/Technique.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 // Every render here uses the exact seed G-buffer layout: the expected values are docs/lighting.md
@@ -32,8 +33,8 @@ using test::renderPfm;
 using test::scratchDirectory;
 using test::writeFile;
 
-constexpr double kAbsoluteTolerance = 2e-5;
-constexpr double kRelativeTolerance = 1e-4;
+constexpr double kAbsoluteTolerance = test::kAnalyticTolerance.absolute;  // 2e-5, tests/support/ImageComparison.h
+constexpr double kRelativeTolerance = test::kAnalyticTolerance.relative;  // 1e-4
 constexpr double kPenumbraMargin = 0.05;
 
 struct Box {

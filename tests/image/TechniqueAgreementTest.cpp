@@ -29,6 +29,7 @@
 
 #include "TestSupport.h"
 #include "render/Technique.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -36,26 +37,6 @@ namespace {
 using test::renderPfm;
 using test::scratchDirectory;
 using test::writeFile;
-
-void expectSameImage(const Image& reference, const Image& candidate, const std::string& what)
-{
-    ASSERT_EQ(reference.width, candidate.width);
-    ASSERT_EQ(reference.height, candidate.height);
-    int failures = 0;
-    double worst = 0.0;
-    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
-        const double want = reference.rgb[i];
-        const double got = candidate.rgb[i];
-        const double difference = std::abs(got - want);
-        worst = std::max(worst, difference);
-        if (!(difference <= 1e-5 * std::abs(want) + 1e-6) && ++failures <= 5) {
-            const std::size_t pixel = i / 3;
-            ADD_FAILURE() << what << ": pixel (" << pixel % reference.width << ", " << pixel / reference.width
-                          << ") channel " << i % 3 << ": forward " << want << ", got " << got;
-        }
-    }
-    EXPECT_EQ(failures, 0) << what << " (largest difference " << worst << ")";
-}
 
 // Relative error the compact layout's 8-bit rounding of a material channel k can cause in
 // everything k multiplies (see the top of this file); 0 for k = 0, which rounds exactly.
@@ -74,24 +55,11 @@ void expectWithinCompactTolerance(const Image& reference, const Image& candidate
     ASSERT_EQ(reference.rgb.size(), specular.rgb.size());
     constexpr double kHalfFloatEmissive = 1.0 / 1024.0;
     constexpr double kNormalEncoding = 3e-4;
-    int failures = 0;
-    double worstRatio = 0.0;
-    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
-        const double want = reference.rgb[i];
-        const double got = candidate.rgb[i];
+    EXPECT_TRUE(test::imagesNear(reference, candidate, [&](std::size_t i, double want) {
         const double relative = eightBitRelativeError(diffuse.rgb[i]) + eightBitRelativeError(specular.rgb[i]) +
-                                kHalfFloatEmissive + kNormalEncoding + 1e-5;
-        const double allowed = relative * std::abs(want) + 1e-6;
-        const double difference = std::abs(got - want);
-        worstRatio = std::max(worstRatio, difference / allowed);
-        if (!(difference <= allowed) && ++failures <= 5) {
-            const std::size_t pixel = i / 3;
-            ADD_FAILURE() << what << ": pixel (" << pixel % reference.width << ", " << pixel / reference.width
-                          << ") channel " << i % 3 << ": forward " << want << ", got " << got << ", allowed "
-                          << allowed;
-        }
-    }
-    EXPECT_EQ(failures, 0) << what << " (largest difference / allowed " << worstRatio << ")";
+                                kHalfFloatEmissive + kNormalEncoding + test::kAgreementTolerance.relative;
+        return relative * std::abs(want) + test::kAgreementTolerance.absolute;
+    })) << what;
 }
 
 struct AgreementCase {
@@ -133,7 +101,7 @@ TEST_P(TechniqueAgreement, EveryTechniqueMatchesForward)
         if (c.compact)
             expectWithinCompactTolerance(reference, image, diffuse, specular, technique);
         else
-            expectSameImage(reference, image, technique);
+            test::expectImagesNear(reference, image, test::kAgreementTolerance, technique);
     }
 }
 
