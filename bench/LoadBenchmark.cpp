@@ -19,7 +19,8 @@ void loadModel(benchmark::State& state, const std::filesystem::path& path)
     std::size_t triangles = 0;
     for (auto _ : state) {
         manylights::Warnings warnings;
-        const manylights::Model model = obj ? manylights::loadObjModelFile(path, warnings) : manylights::loadGltfFile(path);
+        const manylights::Model model =
+            obj ? manylights::loadObjModelFile(path, warnings) : manylights::loadGltfFile(path);
         triangles = 0;
         for (const manylights::Mesh& mesh : model.meshes)
             triangles += mesh.indices.size() / 3;

@@ -20,10 +20,7 @@ constexpr std::size_t kMaxNameBytes = 255;
     throw Error(path.string() + ": cannot write " + what + ": " + reason);
 }
 
-std::string errnoText(int error)
-{
-    return error != 0 ? std::strerror(error) : "write failed";
-}
+std::string errnoText(int error) { return error != 0 ? std::strerror(error) : "write failed"; }
 
 // Writes all of `bytes` to `file`, then fsync and close; each checked. Returns 0 or the errno
 // of the first failure (the descriptor is closed either way).

@@ -23,15 +23,13 @@ public:
 // file whose name holds a newline is still one line. Every error message is printed through it.
 std::string printableLine(std::string_view text);
 
-[[noreturn]] inline void assertionFailed(const char* expression, const char* function, const char* file,
-                                         int line)
+[[noreturn]] inline void assertionFailed(const char* expression, const char* function, const char* file, int line)
 {
-    std::fprintf(stderr, "manylights: internal error: %s failed in %s (%s:%d)\n", expression, function, file,
-                 line);
+    std::fprintf(stderr, "manylights: internal error: %s failed in %s (%s:%d)\n", expression, function, file, line);
     std::abort();
 }
 
 }  // namespace manylights
 
-#define ML_ASSERT(expression) \
+#define ML_ASSERT(expression)                                                                                          \
     ((expression) ? static_cast<void>(0) : ::manylights::assertionFailed(#expression, __func__, __FILE__, __LINE__))

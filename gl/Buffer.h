@@ -1,3 +1,5 @@
+// gl::Buffer: a buffer object with immutable storage (DSA), owned and labelled for the debug
+// output; the scene, the light grid and the passes keep their GPU data in these.
 #pragma once
 
 #include <cstddef>

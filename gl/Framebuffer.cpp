@@ -13,8 +13,7 @@ GLuint createFramebuffer()
 }
 }  // namespace
 
-Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour,
-                         const Texture2D* depth)
+Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth)
     : GlObject(createFramebuffer())
 {
     setLabel(GL_FRAMEBUFFER, id(), label);

@@ -1,3 +1,5 @@
+// gl::Framebuffer: a framebuffer object (DSA) with its attachments, clears and draw buffers,
+// owned and labelled: every pass that renders into textures renders through one.
 #pragma once
 
 #include <initializer_list>

@@ -63,8 +63,8 @@ Program::Program(std::string_view label, const std::vector<ShaderStage>& stages,
         GLint ok = GL_FALSE;
         glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
         if (ok != GL_TRUE)
-            throw Error(std::string(stageName(stage.type)) + " shader " + stage.file + " failed to compile: " +
-                        mapCompileLog(infoLog(shader, false), source.files));
+            throw Error(std::string(stageName(stage.type)) + " shader " + stage.file +
+                        " failed to compile: " + mapCompileLog(infoLog(shader, false), source.files));
         glAttachShader(id(), shader);
     }
     glLinkProgram(id());

@@ -1,3 +1,6 @@
+// gl::Program: a linked shader program made from shader files with #defines and #includes
+// (gl/ShaderSource.h), whose compile and link errors become manylights::Error naming the file and
+// line; uniforms are set by explicit location (glProgramUniform*), never looked up by name.
 #pragma once
 
 #include <string>

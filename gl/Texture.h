@@ -1,3 +1,5 @@
+// gl::Texture2D: a single-level 2D texture for render targets and the G-buffer, owned and
+// labelled (material textures with mipmaps are gl/MipmappedTexture.h).
 #pragma once
 
 #include <string_view>

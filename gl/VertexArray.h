@@ -1,3 +1,5 @@
+// gl::VertexArray: a vertex array object (DSA): its vertex buffer bindings, attribute formats and
+// index buffer, owned and labelled.
 #pragma once
 
 #include <string_view>

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "gl/Debug.h"
 #include "core/Error.h"
+#include "gl/Debug.h"
 
 namespace manylights {
 

@@ -16,8 +16,8 @@ constexpr GLuint kTileSlicesBinding = 3;
 constexpr GLuint kMasksBinding = 4;
 constexpr GLuint kSummariesBinding = 5;
 constexpr GLuint kDepthUnit = 5;
-constexpr GLuint kLightGroupSize = 64;  // local_size_x of cluster_assign.comp
-constexpr GLuint kTileGroupSize = 64;   // local_size_x of cluster_tiles.comp
+constexpr GLuint kLightGroupSize = 64;     // local_size_x of cluster_assign.comp
+constexpr GLuint kTileGroupSize = 64;      // local_size_x of cluster_tiles.comp
 constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
 constexpr int kTilesPerBand = 1024;
 

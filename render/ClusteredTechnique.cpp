@@ -1,8 +1,8 @@
 #include "render/ClusteredTechnique.h"
 
-#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
+#include "render/ScreenPasses.h"
 
 namespace manylights {
 
@@ -24,8 +24,8 @@ std::vector<TechniqueCounter> ClusteredTechnique::counters() const
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
 {
     targets.gbuffer.fill(scene, profiler);
-    const std::vector<LightBatch> batches =
-        lightBatches(static_cast<std::uint32_t>(scene.lightCount()), ClusterGrid::lightsPerBatch(targets.width, targets.height));
+    const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()),
+                                                         ClusterGrid::lightsPerBatch(targets.width, targets.height));
     batchCount_ = static_cast<std::uint32_t>(batches.size());
     {
         auto pass = profiler.pass("clusters");
@@ -35,8 +35,8 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Pa
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
     if (oneWindow)
         scene.bindLightWindow(batches.front());
-    const gl::Program& program = lighting_.variant(
-        scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
+    const gl::Program& program = lighting_.variant(scene.lightingFeatures(),
+                                                   oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
     for (const LightBatch& batch : batches) {
         {
             auto pass = profiler.pass("clusters");

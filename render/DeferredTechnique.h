@@ -1,3 +1,4 @@
+// deferred: the G-buffer, then one full-screen lighting pass per light batch (docs/techniques.md).
 #pragma once
 
 #include "gl/Program.h"

@@ -21,8 +21,9 @@ const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb, int
                             {"SUPERSAMPLE", std::to_string(supersample)}};
         if (srgb)
             defines.emplace_back("SRGB_ENCODE", "1");
-        found->second = gl::Program("display transform",
-                                    {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}, defines);
+        found->second =
+            gl::Program("display transform",
+                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}, defines);
     }
     return found->second;
 }

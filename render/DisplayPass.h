@@ -41,7 +41,7 @@ private:
     void resize(int width, int height);
 
     std::map<std::tuple<ToneCurve, bool, int>, gl::Program> transformPrograms_;  // made on first use
-    gl::Program fxaaEdgesProgram_;  // made on first use, with fxaaProgram_
+    gl::Program fxaaEdgesProgram_;                                               // made on first use, with fxaaProgram_
     gl::Program fxaaProgram_;
     gl::VertexArray emptyVertexArray_{"display pass"};  // the full-screen triangle needs no attributes
     gl::Texture2D transformed_;

@@ -7,8 +7,8 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
 #include "core/Error.h"
@@ -86,7 +86,8 @@ std::string encodeExr(const std::vector<ExrLayer>& layers, ExrPixels pixels)
     }
 }
 
-Image readExrLayer(const std::filesystem::path& path, const std::string& layer, const std::vector<std::string>& channels)
+Image readExrLayer(const std::filesystem::path& path, const std::string& layer,
+                   const std::vector<std::string>& channels)
 {
     try {
         Imf::InputFile file(path.string().c_str());

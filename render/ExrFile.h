@@ -29,7 +29,8 @@ std::string encodeExr(const std::vector<ExrLayer>& layers, ExrPixels pixels);
 // The channels `layer.channel…` of an EXR file as an Image (missing channels of the three
 // stay 0), converted to float. Throws manylights::Error naming the file when it cannot be
 // read or lacks a channel.
-Image readExrLayer(const std::filesystem::path& path, const std::string& layer, const std::vector<std::string>& channels);
+Image readExrLayer(const std::filesystem::path& path, const std::string& layer,
+                   const std::vector<std::string>& channels);
 
 // The full channel names of an EXR file, sorted as the file stores them.
 std::vector<std::string> exrChannelNames(const std::filesystem::path& path);

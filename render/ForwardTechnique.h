@@ -1,3 +1,4 @@
+// forward: the reference every technique is checked against (docs/techniques.md).
 #pragma once
 
 #include "gl/Program.h"

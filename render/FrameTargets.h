@@ -15,7 +15,7 @@ struct FrameTargets {
     int width;
     int height;
     gl::Texture2D depthStencil;
-    gl::Texture2D lit;  // RGBA32F: the unclamped linear colour of docs/lighting.md
+    gl::Texture2D lit;               // RGBA32F: the unclamped linear colour of docs/lighting.md
     gl::Framebuffer litFramebuffer;  // lit + depthStencil
     GBuffer gbuffer;
     gl::Texture2D lightEvaluations;  // R32UI: pairs evaluated per pixel, when counting work

@@ -17,10 +17,7 @@ std::array<gl::Texture2D, kSeedGBufferTargets.size()> makeTargets(int width, int
 }
 }  // namespace
 
-std::string_view gbufferLayoutName(GBufferLayout layout)
-{
-    return layout == GBufferLayout::Seed ? "seed" : "compact";
-}
+std::string_view gbufferLayoutName(GBufferLayout layout) { return layout == GBufferLayout::Seed ? "seed" : "compact"; }
 
 std::optional<GBufferLayout> parseGBufferLayout(std::string_view name)
 {

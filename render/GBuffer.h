@@ -113,7 +113,7 @@ private:
     std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
     gl::Framebuffer framebuffer_;
     LightingProgram programs_;  // one per set of material maps
-    bool current_ = false;  // filled since the last invalidate()
+    bool current_ = false;      // filled since the last invalidate()
 };
 
 }  // namespace manylights

@@ -51,8 +51,8 @@ GpuLight packLight(const Light& light, float attenuationThreshold)
     const bool spot = light.type == LightType::Spot;
     packed.intensityExponent = glm::vec4(light.intensity, spot ? light.exponent : 0.0f);
     if (light.falloff == Falloff::Classic)
-        packed.attenuation = glm::vec4(light.attenuation.constant, light.attenuation.linear,
-                                       light.attenuation.quadratic, 0.0f);
+        packed.attenuation =
+            glm::vec4(light.attenuation.constant, light.attenuation.linear, light.attenuation.quadratic, 0.0f);
     else
         packed.attenuation = glm::vec4(light.range, 0.0f, 0.0f, 1.0f);
     packed.spotAxisCosCutoff =
@@ -91,7 +91,9 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     : scene_(scene),
       textures_(scene.encodedImages),
       lightingFeatures_(lightingFeaturesOf(lights, scene.directional)),
-      restLights_(lights), currentLights_(lights), lightCount_(lights.size()),
+      restLights_(lights),
+      currentLights_(lights),
+      lightCount_(lights.size()),
       vertexArray_("scene vertices")
 {
     std::vector<Vertex> allVertices;
@@ -109,13 +111,16 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         const Mesh& mesh = *meshPointer;
         const auto baseVertex = static_cast<GLint>(allVertices.size());
         if (mesh.subMeshes.empty())
-            meshRanges_.push_back({{baseVertex, allIndices.size(), static_cast<GLsizei>(mesh.indices.size()), {},
+            meshRanges_.push_back({{baseVertex,
+                                    allIndices.size(),
+                                    static_cast<GLsizei>(mesh.indices.size()),
+                                    {},
                                     mesh.hasVertexColours}});
         else {
             std::vector<MeshRange> ranges;
             for (const SubMesh& sub : mesh.subMeshes)
-                ranges.push_back({baseVertex, allIndices.size() + sub.firstIndex,
-                                  static_cast<GLsizei>(sub.indexCount), sub.material, mesh.hasVertexColours});
+                ranges.push_back({baseVertex, allIndices.size() + sub.firstIndex, static_cast<GLsizei>(sub.indexCount),
+                                  sub.material, mesh.hasVertexColours});
             meshRanges_.push_back(std::move(ranges));
         }
         allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
@@ -144,12 +149,12 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
                 throw Error(std::string(e.what()) + " (" + key + " of material '" + material.name + "')");
             }
         };
-        materialMaps_.push_back({load(material.diffuseMap, TextureColourSpace::Srgb, "diffuse_map"),
-                                 load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
-                                 load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
-                                 load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map"),
-                                 load(material.metallicRoughnessMap, TextureColourSpace::Linear,
-                                      "metallic-roughness map")});
+        materialMaps_.push_back(
+            {load(material.diffuseMap, TextureColourSpace::Srgb, "diffuse_map"),
+             load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
+             load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
+             load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map"),
+             load(material.metallicRoughnessMap, TextureColourSpace::Linear, "metallic-roughness map")});
         // The two share the specular map's unit (scene/Scene.h MaterialMapSlot).
         ML_ASSERT(!materialMaps_.back().specular || !materialMaps_.back().metallicRoughness);
     }
@@ -161,8 +166,8 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         for (const MeshRange& range : meshRanges_[object.mesh]) {
             const std::size_t material =
                 object.materialOverridesMesh || !range.material ? object.material : *range.material;
-            draws_.push_back({object.transform, normalMatrix(object.transform), range,
-                              &scene.materials[material], &materialMaps_[material], &object, std::nullopt,
+            draws_.push_back({object.transform, normalMatrix(object.transform), range, &scene.materials[material],
+                              &materialMaps_[material], &object, std::nullopt,
                               objectSpaceBounds(object, meshBounds[object.mesh]), Bounds{}});
         }
     for (DrawItem& draw : draws_) {
@@ -175,25 +180,23 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
         addLightMarkers(*scene.lightMarkerRadius);
     groupDrawsIntoBatches();
     instances_.resize(draws_.size());
-    instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance), nullptr,
-                                 GL_DYNAMIC_STORAGE_BIT);
+    instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance),
+                                 nullptr, GL_DYNAMIC_STORAGE_BIT);
 
     packedLights_.reserve(lights.size());
     for (const Light& light : lights)
         packedLights_.push_back(packLight(light, scene.attenuationThreshold));
     // Dynamic storage: setTime rewrites it every frame of an animation.
     // Whole windows (bindLightWindow), so that every window bound is backed by the buffer.
-    const std::size_t windows = std::max<std::size_t>(1, (packedLights_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
+    const std::size_t windows =
+        std::max<std::size_t>(1, (packedLights_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
     lightBuffer_ = gl::Buffer("lights", windows * kLightWindowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
     setTime(0.0);
     setViewport(1, 1);
 }
 
-Mesh GpuScene::lightMarkerMesh()
-{
-    return makeSphere(1.0f, kMarkerSlices, kMarkerStacks);
-}
+Mesh GpuScene::lightMarkerMesh() { return makeSphere(1.0f, kMarkerSlices, kMarkerStacks); }
 
 void GpuScene::addLightMarkers(float radius)
 {
@@ -212,7 +215,8 @@ void GpuScene::addLightMarkers(float radius)
         material.emissive = brightest > 0.0f ? intensity / brightest : glm::vec3{0.0f};
         markerMaterials_.push_back(material);
         const glm::mat4 model = glm::scale(glm::mat4{1.0f}, glm::vec3{radius});
-        draws_.push_back({model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i, Bounds{}, Bounds{}});
+        draws_.push_back(
+            {model, normalMatrix(model), sphere, &markerMaterials_.back(), &noMaps_, nullptr, i, Bounds{}, Bounds{}});
     }
 }
 
@@ -220,15 +224,9 @@ namespace {
 
 // Whether a draw item can share an instanced draw: material maps are bound per draw and a
 // surface of revolution has its own uniforms, so such items are drawn one at a time.
-bool instanceable(const Object* object, bool hasMaps)
-{
-    return !hasMaps && !(object && object->revolution);
-}
+bool instanceable(const Object* object, bool hasMaps) { return !hasMaps && !(object && object->revolution); }
 
-bool isTransparent(const Material& material)
-{
-    return material.alphaMode == AlphaMode::Blend;
-}
+bool isTransparent(const Material& material) { return material.alphaMode == AlphaMode::Blend; }
 
 }  // namespace
 
@@ -266,9 +264,10 @@ void GpuScene::groupDrawsIntoBatches()
         }
         batches_.push_back({i, 1});
     }
-    transparentBatches_ = static_cast<std::size_t>(std::count_if(batches_.begin(), batches_.end(), [&](const DrawBatch& batch) {
-        return isTransparent(*draws_[batch.firstItem].material);
-    }));
+    transparentBatches_ =
+        static_cast<std::size_t>(std::count_if(batches_.begin(), batches_.end(), [&](const DrawBatch& batch) {
+            return isTransparent(*draws_[batch.firstItem].material);
+        }));
 }
 
 void GpuScene::setViewport(int width, int height)
@@ -376,8 +375,8 @@ void GpuScene::poseDraws()
     }
     // A dynamic surface of revolution changes shape with time even where it does not move.
     const bool reshaped = time_ != posedTime_ && std::any_of(draws_.begin(), draws_.end(), [](const DrawItem& draw) {
-        return draw.object && draw.object->revolution && draw.object->revolution->speed != 0.0f;
-    });
+                              return draw.object && draw.object->revolution && draw.object->revolution->speed != 0.0f;
+                          });
     posedTime_ = time_;
     if (moved || reshaped)
         noteTransformsChanged();
@@ -486,8 +485,9 @@ std::vector<GpuScene::TransparentLayer> GpuScene::transparentLayersBackToFront()
     // Farthest first; equal depths in the grouped order, so the order is a function of the
     // scene, the pose and the camera.
     std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& c) {
-        return a.first != c.first ? a.first > c.first : draws_[batches_[a.second].firstItem].groupedIndex <
-                                                             draws_[batches_[c.second].firstItem].groupedIndex;
+        return a.first != c.first ? a.first > c.first
+                                  : draws_[batches_[a.second].firstItem].groupedIndex <
+                                        draws_[batches_[c.second].firstItem].groupedIndex;
     });
     std::vector<TransparentLayer> layers;
     for (const auto& [depth, batch] : keyed) {
@@ -557,8 +557,7 @@ MaterialVariant GpuScene::materialVariant(const Material& material, const Materi
         (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
         // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
         (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
-        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) |
-        (isTransparent(material) ? kBlendBit : 0));
+        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) | (isTransparent(material) ? kBlendBit : 0));
 }
 
 GpuScene::FaceState GpuScene::faceStateOf(const DrawItem& draw)
@@ -604,7 +603,8 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
         }
         return GL_REPEAT;
     };
-    const auto bind = [&](const gl::MipmappedTexture2D* map, GLuint unit, GLint transformLocation, MaterialMapSlot slot) {
+    const auto bind = [&](const gl::MipmappedTexture2D* map, GLuint unit, GLint transformLocation,
+                          MaterialMapSlot slot) {
         if (!map)
             return false;
         map->bindUnit(unit);

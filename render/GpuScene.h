@@ -112,7 +112,8 @@ public:
     // bounds pass `keep`, each run of kept items of a batch as one instanced draw, with
     // programFor(depthOnlyVariant(the material's variant)) (an alpha-masked caster's program
     // cuts its holes; the batch's diffuse map is bound for it); returns how many items were drawn.
-    std::size_t drawObjectsDepthOnly(const MeshProgramFor& programFor, const std::function<bool(const Bounds&)>& keep) const;
+    std::size_t drawObjectsDepthOnly(const MeshProgramFor& programFor,
+                                     const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
     // update) and the frame uniforms' time. A pure function of t: no state carries over.
@@ -170,13 +171,13 @@ private:
         glm::mat3 normalMatrix;
         MeshRange range;
         const Material* material;
-        const MaterialMaps* maps;               // the material's textures
-        const Object* object;                   // the scene's object; none for a light marker
+        const MaterialMaps* maps;                // the material's textures
+        const Object* object;                    // the scene's object; none for a light marker
         std::optional<std::size_t> markedLight;  // the light a marker follows
-        Bounds meshBounds;   // object space; empty for light markers, which cast no shadows
-        Bounds worldBounds;  // for culling depth-only passes against a light's volume
-        std::size_t groupedIndex = 0;  // place after groupDrawsIntoBatches; breaks draw-order ties
-        MaterialVariant variant = 0;   // what the mesh program reads (materialVariant)
+        Bounds meshBounds;                       // object space; empty for light markers, which cast no shadows
+        Bounds worldBounds;                      // for culling depth-only passes against a light's volume
+        std::size_t groupedIndex = 0;            // place after groupDrawsIntoBatches; breaks draw-order ties
+        MaterialVariant variant = 0;             // what the mesh program reads (materialVariant)
         // A transform with a negative determinant mirrors the mesh, which reverses its winding:
         // the front faces of a mirrored glTF mesh are clockwise (glTF 2.0, "Meshes").
         bool mirrored = false;
@@ -209,18 +210,18 @@ private:
     LightingFeatures lightingFeatures_;
     std::vector<MaterialMaps> materialMaps_;  // per scene material
     MaterialMaps noMaps_;                     // light markers' materials have no textures
-    std::vector<Light> restLights_;     // the lights at rest; their animations move them
-    std::vector<Light> currentLights_;  // at time_
+    std::vector<Light> restLights_;           // the lights at rest; their animations move them
+    std::vector<Light> currentLights_;        // at time_
     std::vector<Material> markerMaterials_;
     double time_ = 0.0;
     glm::vec4 terms_{1.0f, 1.0f, 1.0f, 0.0f};
     std::uint64_t lightsVersion_ = 0;
     std::vector<std::vector<MeshRange>> meshRanges_;  // per mesh, its sub-meshes
-    std::vector<DrawItem> draws_;  // grouped by mesh range (groupDrawsIntoBatches)
+    std::vector<DrawItem> draws_;                     // grouped by mesh range (groupDrawsIntoBatches)
     std::vector<DrawBatch> batches_;
     std::size_t transparentBatches_ = 0;
     std::vector<std::size_t> frontToBack_;  // indices into batches_, the order drawObjects draws
-    std::vector<GpuInstance> instances_;  // draws_[i]'s record is instances_[i]
+    std::vector<GpuInstance> instances_;    // draws_[i]'s record is instances_[i]
     std::vector<GpuLight> packedLights_;
     std::size_t lightCount_ = 0;
     std::uint64_t transformsVersion_ = 0;

@@ -104,7 +104,8 @@ Image readPfm(const std::filesystem::path& path)
         throw Error(path.string() + ": not a little-endian colour PFM");
     image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
     for (int y = image.height - 1; y >= 0; --y)
-        in.read(reinterpret_cast<char*>(image.pixel(0, y)), static_cast<std::streamsize>(sizeof(float) * 3 * image.width));
+        in.read(reinterpret_cast<char*>(image.pixel(0, y)),
+                static_cast<std::streamsize>(sizeof(float) * 3 * image.width));
     if (!in)
         throw Error(path.string() + ": truncated PFM");
     return image;

@@ -23,13 +23,13 @@ Mesh makeBoundingSphere(int subdivisions)
     // The icosahedron, then each triangle split in four with the new vertices pushed out to
     // the unit sphere.
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<glm::vec3> positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<glm::vec3> positions = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     for (glm::vec3& p : positions)
         p = glm::normalize(p);
-    std::vector<std::uint32_t> triangles = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
-                                            11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
-                                            3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    std::vector<std::uint32_t> triangles = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                            4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                            6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
     for (int level = 0; level < subdivisions; ++level) {
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
         const auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
@@ -77,7 +77,7 @@ Mesh makeBoundingCone(int segments)
     constexpr float kApexMargin = 0.01f;
     const float corner = kBaseMargin / std::cos(3.14159265358979f / static_cast<float>(segments));
     addVertex(mesh, glm::vec3(0.0f, 0.0f, -kApexMargin));  // apex
-    addVertex(mesh, glm::vec3(0.0f, 0.0f, 1.0f));  // centre of the base cap
+    addVertex(mesh, glm::vec3(0.0f, 0.0f, 1.0f));          // centre of the base cap
     for (int i = 0; i < segments; ++i) {
         const float angle = 2.0f * 3.14159265358979f * static_cast<float>(i) / static_cast<float>(segments);
         addVertex(mesh, glm::vec3(corner * std::cos(angle), corner * std::sin(angle), 1.0f));

@@ -6,7 +6,8 @@
 
 namespace manylights {
 
-LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional)
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
+                                    const std::optional<DirectionalLight>& directional)
 {
     const auto any = [&](auto predicate) { return std::any_of(lights.begin(), lights.end(), predicate); };
     return {

@@ -34,7 +34,8 @@ struct LightingFeatures {
 
 // What `lights` and the scene's directional light use. Animation moves lights but never
 // changes their kind, so this holds for every frame of a scene.
-LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional);
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
+                                    const std::optional<DirectionalLight>& directional);
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF and
 // NO_DIRECTIONAL_LIGHT as `features` allow.
@@ -63,9 +64,9 @@ inline constexpr MaterialVariant kEmissiveMapBit = 8;
 inline constexpr MaterialVariant kMetallicRoughnessMapBit = 16;  // in the specular map's unit
 inline constexpr MaterialVariant kAlphaMaskBit = 32;
 inline constexpr MaterialVariant kVertexColoursBit = 64;
-inline constexpr MaterialVariant kSpecularTintBit = 128;  // Material::specularTint not zero
+inline constexpr MaterialVariant kSpecularTintBit = 128;   // Material::specularTint not zero
 inline constexpr MaterialVariant kFlipBackFacesBit = 256;  // Sides::BothFlipped
-inline constexpr MaterialVariant kBlendBit = 512;  // AlphaMode::Blend: the coverage is the opacity
+inline constexpr MaterialVariant kBlendBit = 512;          // AlphaMode::Blend: the coverage is the opacity
 // The bits that mean a texture is bound per draw (such draws are not instanced).
 inline constexpr MaterialVariant kTextureBits =
     kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit;

@@ -34,9 +34,9 @@ PassProfiler::PassQueries& PassProfiler::nextPass(std::string_view name)
 {
     if (passesThisFrame_ == passes_.size())
         passes_.push_back({std::string(name), gl::Query(std::string(name) + " time", GL_TIME_ELAPSED),
-                           countInvocations_ ? gl::Query(std::string(name) + " invocations",
-                                                         GL_FRAGMENT_SHADER_INVOCATIONS_ARB)
-                                             : gl::Query()});
+                           countInvocations_
+                               ? gl::Query(std::string(name) + " invocations", GL_FRAGMENT_SHADER_INVOCATIONS_ARB)
+                               : gl::Query()});
     PassQueries& queries = passes_[passesThisFrame_++];
     queries.name = name;
     return queries;

@@ -22,8 +22,8 @@ namespace manylights {
 
 struct PassSample {
     std::string name;
-    double gpuMs = 0.0;   // GL_TIME_ELAPSED
-    double wallMs = 0.0;  // wall clock from glFinish to glFinish
+    double gpuMs = 0.0;                                // GL_TIME_ELAPSED
+    double wallMs = 0.0;                               // wall clock from glFinish to glFinish
     std::optional<std::uint64_t> fragmentInvocations;  // absent where the driver cannot count
 };
 

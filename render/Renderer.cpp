@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "render/ScreenPasses.h"
-#include "render/LightBatches.h"
 #include "core/Error.h"
+#include "render/LightBatches.h"
+#include "render/ScreenPasses.h"
 
 namespace manylights {
 
@@ -23,8 +23,8 @@ void checkSize(int width, int height)
     const int maxHeight = std::min(maxTexture, maxFramebufferHeight);
     if (width < 1 || height < 1 || width > maxWidth || height > maxHeight)
         throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is outside what this OpenGL implementation supports (1x1 to " + std::to_string(maxWidth) +
-                    "x" + std::to_string(maxHeight) + ")");
+                    " is outside what this OpenGL implementation supports (1x1 to " + std::to_string(maxWidth) + "x" +
+                    std::to_string(maxHeight) + ")");
 }
 
 }  // namespace
@@ -79,8 +79,8 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         if (view == ViewMode::Shadow || view == ViewMode::Ssao) {
             if (!shadowingViewProgram_)
                 shadowingViewProgram_ =
-                    gl::Program("shadowing view", {{GL_VERTEX_SHADER, "fullscreen.vert"},
-                                                   {GL_FRAGMENT_SHADER, "shadowing_view.frag"}},
+                    gl::Program("shadowing view",
+                                {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadowing_view.frag"}},
                                 gbufferDefines(gbufferLayout_));
             shadowingViewProgram_.set(0, static_cast<int>(view));
             drawCoveredPixels(shadowingViewProgram_);

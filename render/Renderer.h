@@ -23,9 +23,9 @@ namespace manylights {
 
 // Deterministic work of one frame (docs/cli.md --count-work).
 struct WorkCounts {
-    std::uint64_t lightEvaluations = 0;  // (pixel, light) pairs the technique evaluated on opaque surfaces
+    std::uint64_t lightEvaluations = 0;             // (pixel, light) pairs the technique evaluated on opaque surfaces
     std::uint64_t transparentLightEvaluations = 0;  // ... on transparent ones (render/TransparencyPass.h)
-    std::uint64_t inRangePairs = 0;      // (pixel, light) pairs with A·S > 0: the least possible
+    std::uint64_t inRangePairs = 0;                 // (pixel, light) pairs with A·S > 0: the least possible
 };
 
 class Renderer {
@@ -107,7 +107,7 @@ private:
     // The debug and counting programs are made on first use: most runs render the final image
     // only and need not compile them.
     gl::Program viewProgram_;
-    gl::Program inRangeProgram_;  // made on first use of work counting
+    gl::Program inRangeProgram_;                   // made on first use of work counting
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
     gl::Program overlayProgram_;
     PassProfiler profiler_;

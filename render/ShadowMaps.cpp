@@ -156,10 +156,7 @@ bool sameLight(const GpuLight& a, const GpuLight& b)
 }
 
 // Spot lights are packed with cos(cutoff) ≥ −1; point lights with −2 (render/GpuScene.cpp).
-bool isSpot(const GpuLight& light)
-{
-    return light.spotAxisCosCutoff.w >= -1.0f;
-}
+bool isSpot(const GpuLight& light) { return light.spotAxisCosCutoff.w >= -1.0f; }
 
 float cutoffDegrees(const GpuLight& light)
 {
@@ -279,9 +276,8 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
         slot.renderedVersion = scene.transformsVersion();
         slot.valid = true;
     }
-    uniforms_.localShadowParams =
-        glm::vec4(slots_.empty() ? 0.0f : 1.0f, 1.0f / static_cast<float>(sizes_.spot),
-                  1.0f / static_cast<float>(sizes_.cubeFace), 0.0f);
+    uniforms_.localShadowParams = glm::vec4(slots_.empty() ? 0.0f : 1.0f, 1.0f / static_cast<float>(sizes_.spot),
+                                            1.0f / static_cast<float>(sizes_.cubeFace), 0.0f);
 }
 
 void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
@@ -295,9 +291,8 @@ void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
     const glm::mat4 viewProjection =
         glm::perspective(glm::radians(2.0f * cutoff + kSpotFovMarginDegrees), 1.0f, kNearFraction * far, far) *
         glm::lookAt(position, position + axis, up);
-    renderDepth(scene, spotArray_.id(), slot.layer, sizes_.spot, viewProjection, [&](const Bounds& box) {
-        return boxMayIntersectCone(box, position, axis, cutoff, far);
-    });
+    renderDepth(scene, spotArray_.id(), slot.layer, sizes_.spot, viewProjection,
+                [&](const Bounds& box) { return boxMayIntersectCone(box, position, axis, cutoff, far); });
     slot.gpu.viewProjection = viewProjection;
     slot.gpu.params = glm::vec4(1.0f, static_cast<float>(slot.layer), kNearFraction * far, far);
 }
@@ -328,8 +323,7 @@ void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
 }
 
 void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, int size,
-                             const glm::mat4& viewProjection,
-                             const std::function<bool(const Bounds&)>& keep)
+                             const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep)
 {
     const GLuint framebuffer = localFramebuffer_.id();
     glNamedFramebufferTextureLayer(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0, layer);
@@ -398,8 +392,8 @@ void ShadowMaps::bind(bool ambientOcclusion)
         std::vector<std::int32_t> slotOfLight(lightCount, -1);
         for (std::size_t i = 0; i < slotLights.size(); ++i)
             slotOfLight[slotLights[i]] = static_cast<std::int32_t>(i);
-        slotOfLightBuffer_ = gl::Buffer("shadow slot of each light", slotOfLight.size() * sizeof(std::int32_t),
-                                        slotOfLight.data(), 0);
+        slotOfLightBuffer_ =
+            gl::Buffer("shadow slot of each light", slotOfLight.size() * sizeof(std::int32_t), slotOfLight.data(), 0);
         slotOfLightCapacity_ = lightCount;
         uploadedSlotLights_ = std::move(slotLights);
     }

@@ -165,7 +165,7 @@ private:
     gl::GlObject<gl::detail::deleteFramebuffer> localFramebuffer_;  // one layer attached at a time
     gl::Buffer slotOfLightBuffer_;
     gl::Buffer slotsBuffer_;
-    std::size_t slotOfLightCapacity_ = 0;        // entries in slotOfLightBuffer_
+    std::size_t slotOfLightCapacity_ = 0;          // entries in slotOfLightBuffer_
     std::vector<std::size_t> uploadedSlotLights_;  // the lights of the slots it was written for
     std::size_t slotsCapacity_ = 0;
 };

@@ -10,8 +10,8 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
-#include "render/GBuffer.h"
 #include "gl/Texture.h"
+#include "render/GBuffer.h"
 #include "scene/Scene.h"
 
 namespace manylights {

@@ -26,8 +26,8 @@ std::unique_ptr<Technique> make(const TechniqueOptions& options)
 }
 
 constexpr TechniqueEntry kTechniques[] = {
-    {"forward", make<ForwardTechnique>},       {"deferred", make<DeferredTechnique>},
-    {"volumes", make<VolumesTechnique>},       {"stencil", make<StencilTechnique>},
+    {"forward", make<ForwardTechnique>},        {"deferred", make<DeferredTechnique>},
+    {"volumes", make<VolumesTechnique>},        {"stencil", make<StencilTechnique>},
     {"tiled-quads", make<TiledQuadsTechnique>}, {"tiled", make<TiledTechnique>},
     {"clustered", make<ClusteredTechnique>},
 };

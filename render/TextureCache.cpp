@@ -21,10 +21,7 @@ struct StbiFree {
     void operator()(stbi_uc* pixels) const { stbi_image_free(pixels); }
 };
 
-[[noreturn]] void fail(const std::string& path, const std::string& problem)
-{
-    throw Error(path + ": " + problem);
-}
+[[noreturn]] void fail(const std::string& path, const std::string& problem) { throw Error(path + ": " + problem); }
 
 // One key per file however a scene spells its path.
 std::string canonicalKey(const std::string& path)
@@ -73,8 +70,8 @@ DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned
 
 const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, TextureColourSpace space)
 {
-    const auto embedded = std::find_if(embedded_.begin(), embedded_.end(),
-                                       [&](const EncodedImage& image) { return image.key == path; });
+    const auto embedded =
+        std::find_if(embedded_.begin(), embedded_.end(), [&](const EncodedImage& image) { return image.key == path; });
     const bool isEmbedded = embedded != embedded_.end();
     const auto key = std::make_pair(isEmbedded ? path : canonicalKey(path), space);
     if (const auto found = textures_.find(key); found != textures_.end())

@@ -43,8 +43,7 @@ public:
             std::vector<float> result(static_cast<std::size_t>(tiles) + 1);
             for (int i = 0; i <= tiles; ++i) {
                 const int edge = std::min(i * tileSize, pixels);
-                result[static_cast<std::size_t>(i)] =
-                    static_cast<float>((2.0 * edge / pixels - 1.0) * tanHalf);
+                result[static_cast<std::size_t>(i)] = static_cast<float>((2.0 * edge / pixels - 1.0) * tanHalf);
             }
             return result;
         };
@@ -260,10 +259,9 @@ const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<co
                 if (!frustums.ballTouches(centre, reach, tx, ty))
                     continue;
                 // A side plane that the spot's sector lies wholly outside separates the two.
-                if (sector && !(sector->reaches(frustums.left(tx), margin) &&
-                                sector->reaches(frustums.right(tx), margin) &&
-                                sector->reaches(frustums.bottom(ty), margin) &&
-                                sector->reaches(frustums.top(ty), margin)))
+                if (sector &&
+                    !(sector->reaches(frustums.left(tx), margin) && sector->reaches(frustums.right(tx), margin) &&
+                      sector->reaches(frustums.bottom(ty), margin) && sector->reaches(frustums.top(ty), margin)))
                     continue;
                 accept(lists_.tileIndex(tx, ty), index);
             }

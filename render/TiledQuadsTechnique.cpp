@@ -5,9 +5,9 @@
 #include <span>
 #include <string>
 
-#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
+#include "render/ScreenPasses.h"
 
 namespace manylights {
 

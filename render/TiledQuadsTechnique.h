@@ -21,8 +21,7 @@ namespace manylights {
 // per-tile loops cheap on hardware with weak dynamic loops. The last bound is a light batch
 // (render/LightBatches.h): a tile with more lights is drawn as several quads, one per run of
 // that many of its lights, added together.
-inline constexpr std::array<std::uint32_t, 9> kTileLightBounds = {8, 16, 32, 64, 128, 256, 512, 1024,
-                                                                  kLightsPerBatch};
+inline constexpr std::array<std::uint32_t, 9> kTileLightBounds = {8, 16, 32, 64, 128, 256, 512, 1024, kLightsPerBatch};
 
 class TiledQuadsTechnique : public Technique {
 public:

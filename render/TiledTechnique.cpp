@@ -44,8 +44,8 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, PassPr
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
     if (oneWindow)
         scene.bindLightWindow(batches.front());
-    const gl::Program& program = program_.variant(
-        scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
+    const gl::Program& program =
+        program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
     program.use();
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
     for (const LightBatch& batch : batches) {

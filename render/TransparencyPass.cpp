@@ -90,7 +90,8 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
         return;  // nothing transparent within the view's depth
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     const std::vector<LightBatch> batches =
-        everyLight ? lightBatches(lightCount) : lightBatches(lightCount, ClusterGrid::lightsPerBatch(targets.width, targets.height));
+        everyLight ? lightBatches(lightCount)
+                   : lightBatches(lightCount, ClusterGrid::lightsPerBatch(targets.width, targets.height));
     // One grid build serves every layer when the lights are one batch.
     const bool gridPerLayer = !everyLight && batches.size() > 1;
     if (!everyLight) {

@@ -1,8 +1,8 @@
 #include "render/Views.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace manylights {
@@ -53,8 +53,13 @@ const std::vector<std::string>& viewModeNames()
 void heatMapColour(float count, float rgb[3])
 {
     static const std::array<std::array<float, 3>, 7> kStops = {{
-        {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 1.0f}, {0.0f, 1.0f, 0.0f},
-        {1.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f},
+        {0.0f, 0.0f, 0.0f},
+        {0.0f, 0.0f, 1.0f},
+        {0.0f, 1.0f, 1.0f},
+        {0.0f, 1.0f, 0.0f},
+        {1.0f, 1.0f, 0.0f},
+        {1.0f, 0.0f, 0.0f},
+        {1.0f, 1.0f, 1.0f},
     }};
     // Stop k (k ≥ 1) sits at count 4^(k-1): the scale is logarithmic, two bits a stop.
     float position = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;

@@ -26,7 +26,10 @@ enum class ViewMode {
 };
 
 // Whether the view shows a G-buffer quantity (rendered by the geometry pass alone).
-inline bool isGBufferView(ViewMode mode) { return mode != ViewMode::Final && mode != ViewMode::LightCount && mode != ViewMode::Volumes; }
+inline bool isGBufferView(ViewMode mode)
+{
+    return mode != ViewMode::Final && mode != ViewMode::LightCount && mode != ViewMode::Volumes;
+}
 
 // The heat-map colour of a light-evaluation count (docs/techniques.md has the legend): black
 // for 0, then blue, cyan, green, yellow, red and white at 1, 4, 16, 64, 256 and 1024 or more.

@@ -1,7 +1,7 @@
 #include "render/VolumeDrawer.h"
 
-#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
+#include "render/ScreenPasses.h"
 
 namespace manylights {
 

@@ -1,8 +1,8 @@
 #include "render/VolumeTechniques.h"
 
-#include "render/ScreenPasses.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
+#include "render/ScreenPasses.h"
 
 namespace manylights {
 
@@ -64,7 +64,8 @@ void VolumesTechnique::render(const GpuScene& scene, FrameTargets& targets, Pass
 
 StencilTechnique::StencilTechnique(const TechniqueOptions& options)
     : Technique(options),
-      drawer_(shaderDefines(options)), stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
+      drawer_(shaderDefines(options)),
+      stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
 {
 }
 

@@ -4,8 +4,8 @@
 #include <optional>
 #include <variant>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <sstream>
 #include <string>
@@ -90,10 +90,10 @@ struct Item {
     std::optional<ObjectAnimation> animation{};  // its pivot or base filled in once placed
 };
 
-constexpr float kHalfExtent = 16.0f;   // objects stay within ±16 in X and Z
-constexpr float kGap = 0.35f;          // the least free floor between two objects
+constexpr float kHalfExtent = 16.0f;  // objects stay within ±16 in X and Z
+constexpr float kGap = 0.35f;         // the least free floor between two objects
 constexpr int kPrimitiveCount = 128;
-constexpr int kModelCount = 6;         // bunnies, and as many teapots
+constexpr int kModelCount = 6;  // bunnies, and as many teapots
 constexpr std::uint32_t kSceneSeed = 20240601u;
 constexpr std::uint32_t kLightSeed = 7u;
 constexpr std::uint32_t kDriftingLightSeed = 8u;
@@ -228,8 +228,11 @@ Scene makeDefaultScene()
         const float scale = kModelHeight / (bounds.max.y - bounds.min.y);
         // Teapots are glazed: always shiny.
         Material material = randomMaterial(bunny ? 0.3f : 1.0f);
-        items.push_back({bunny ? Shape::Bunny : Shape::Teapot, mesh, {0.0f, random.between(0.0f, 360.0f), 0.0f},
-                         glm::vec3{scale}, material});
+        items.push_back({bunny ? Shape::Bunny : Shape::Teapot,
+                         mesh,
+                         {0.0f, random.between(0.0f, 360.0f), 0.0f},
+                         glm::vec3{scale},
+                         material});
         // Bunnies turn about their vertical axis, one way or the other; teapots sway from side
         // to side, each in its own direction and rhythm.
         if (bunny) {
@@ -237,8 +240,11 @@ Scene makeDefaultScene()
             items.back().animation = SpinAnimation{{0.0f, 1.0f, 0.0f}, std::nullopt, speed, 0.0f};
         } else {
             const float heading = glm::radians(random.between(0.0f, 360.0f));
-            items.back().animation = SwayAnimation{{std::cos(heading), 0.0f, std::sin(heading)}, kSwayAmplitude,
-                                                   random.between(0.3f, 0.7f), random.between(0.0f, 360.0f), 0.0f};
+            items.back().animation = SwayAnimation{{std::cos(heading), 0.0f, std::sin(heading)},
+                                                   kSwayAmplitude,
+                                                   random.between(0.3f, 0.7f),
+                                                   random.between(0.0f, 360.0f),
+                                                   0.0f};
         }
     }
     for (int i = 0; i < kPrimitiveCount; ++i) {
@@ -320,8 +326,7 @@ Scene makeDefaultScene()
         const glm::vec3 bottomCentre{0.5f * (bounds.min.x + bounds.max.x), bounds.min.y,
                                      0.5f * (bounds.min.z + bounds.max.z)};
         const glm::vec3 translate = glm::vec3{spot.x, 0.0f, spot.y} - bottomCentre;
-        const std::string name =
-            shapeName(item.shape) + std::to_string(counters[static_cast<int>(item.shape)]++);
+        const std::string name = shapeName(item.shape) + std::to_string(counters[static_cast<int>(item.shape)]++);
         item.material.name = name;
         scene.materials.push_back(item.material);
         Object object;

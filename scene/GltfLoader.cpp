@@ -68,24 +68,15 @@ bool keepEncodedImage(tinygltf::Image* image, const int /*index*/, std::string* 
 }
 
 // File-system callbacks that refuse every file: memory loading without external files.
-bool noFileExists(const std::string&, void*)
-{
-    return false;
-}
-std::string keepPath(const std::string& path, void*)
-{
-    return path;
-}
+bool noFileExists(const std::string&, void*) { return false; }
+std::string keepPath(const std::string& path, void*) { return path; }
 bool noFileRead(std::vector<unsigned char>*, std::string* error, const std::string& path, void*)
 {
     if (error)
         *error += "external file '" + path + "' not allowed when loading from memory\n";
     return false;
 }
-bool noFileWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*)
-{
-    return false;
-}
+bool noFileWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 // External buffers and images through the one input reader (core/InputFile.h): a FIFO or a
 // device named as a buffer's uri is refused, not read for ever.
 bool inputFileExists(const std::string& path, void*)
@@ -154,7 +145,8 @@ private:
                 fail("requires the extension " + name + ", which manylights does not read");
         for (const std::string& name : gltf_.extensionsUsed)
             if (!supported.contains(name))
-                warnings_.noteFile("extension " + name, "the extension " + name + " is not read; the file is drawn without it");
+                warnings_.noteFile("extension " + name,
+                                   "the extension " + name + " is not read; the file is drawn without it");
     }
 
     // --- nodes ---------------------------------------------------------------------------
@@ -285,8 +277,8 @@ private:
         const tinygltf::Camera& source = gltf_.cameras[static_cast<std::size_t>(cameraIndex)];
         const std::string where = element("cameras", static_cast<std::size_t>(cameraIndex));
         if (source.type != "perspective") {
-            warnings_.noteFile("camera " + source.type,
-                               where + ": type " + source.type + " has no counterpart in the scene's camera; passed over");
+            warnings_.noteFile("camera " + source.type, where + ": type " + source.type +
+                                                            " has no counterpart in the scene's camera; passed over");
             return;
         }
         const tinygltf::PerspectiveCamera& perspective = source.perspective;
@@ -344,7 +336,8 @@ private:
         }
         // Candela are taken as the scene's unit-less intensity, one to one.
         const glm::vec3 intensity = colour * static_cast<float>(source.intensity);
-        if (!std::isfinite(intensity.x + intensity.y + intensity.z) || glm::any(glm::lessThan(intensity, glm::vec3{0.0f})))
+        if (!std::isfinite(intensity.x + intensity.y + intensity.z) ||
+            glm::any(glm::lessThan(intensity, glm::vec3{0.0f})))
             fail(where + ": color and intensity must be finite and not negative");
         const float maxIntensity = std::max({intensity.r, intensity.g, intensity.b});
         if (maxIntensity == 0.0f)
@@ -414,8 +407,8 @@ private:
         const std::size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
         if (stride < elementSize)
             fail(element("bufferViews", static_cast<std::size_t>(a.bufferView)) + ": byteStride " +
-                 std::to_string(stride) + " is smaller than the element size " + std::to_string(elementSize) +
-                 " of " + name);
+                 std::to_string(stride) + " is smaller than the element size " + std::to_string(elementSize) + " of " +
+                 name);
         // Everything in 64-bit sizes, each step checked before it can overflow.
         if (a.byteOffset > view.byteLength ||
             (a.count > 0 && ((a.count - 1) > (view.byteLength - a.byteOffset) / stride ||
@@ -470,7 +463,8 @@ private:
     }
 
     // Checks that an attribute has the type the loader reads.
-    void expectFormat(const AccessorView& view, int components, bool allowNormalizedInts, const std::string& where) const
+    void expectFormat(const AccessorView& view, int components, bool allowNormalizedInts,
+                      const std::string& where) const
     {
         const bool floats = view.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
         const bool normalizedInts = allowNormalizedInts && view.normalized &&
@@ -598,7 +592,8 @@ private:
                 corners[i] = static_cast<std::uint32_t>(i);
         }
         if (mode == TINYGLTF_MODE_TRIANGLES && corners.size() % 3 != 0)
-            fail(where + ": " + std::to_string(corners.size()) + " corners are not whole triangles (not a multiple of 3)");
+            fail(where + ": " + std::to_string(corners.size()) +
+                 " corners are not whole triangles (not a multiple of 3)");
         const std::vector<std::uint32_t> triangles = triangleList(corners, mode);
 
         // glTF asks for flat normals when a primitive has none, so such a primitive gets three
@@ -624,8 +619,8 @@ private:
                 vertex.uv.y = 1.0f - vertex.uv.y;
             }
             if (colours) {
-                vertex.colour = colours->components == 3 ? glm::vec4(readVector<3>(*colours, i), 1.0f)
-                                                         : readVector<4>(*colours, i);
+                vertex.colour =
+                    colours->components == 3 ? glm::vec4(readVector<3>(*colours, i), 1.0f) : readVector<4>(*colours, i);
                 if (!std::isfinite(vertex.colour.r + vertex.colour.g + vertex.colour.b + vertex.colour.a))
                     fail(where + ".COLOR_0: element " + std::to_string(i) + " is not finite");
                 // Colours are linear and in [0, 1] by the specification; anything outside is clamped.
@@ -672,8 +667,9 @@ private:
         }
         if (flat) {
             for (std::size_t v = base; v + 2 < mesh.vertices.size(); v += 3) {
-                const glm::vec3 n = glm::normalize(glm::cross(mesh.vertices[v + 1].position - mesh.vertices[v].position,
-                                                              mesh.vertices[v + 2].position - mesh.vertices[v].position));
+                const glm::vec3 n =
+                    glm::normalize(glm::cross(mesh.vertices[v + 1].position - mesh.vertices[v].position,
+                                              mesh.vertices[v + 2].position - mesh.vertices[v].position));
                 for (std::size_t k = 0; k < 3; ++k)
                     mesh.vertices[v + k].normal = std::isfinite(n.x + n.y + n.z) ? n : glm::vec3{0.0f, 1.0f, 0.0f};
             }
@@ -795,7 +791,8 @@ private:
         if (reference.index < 0)
             return {};
         int texCoord = reference.texCoord;
-        if (const auto found = reference.extensions.find("KHR_texture_transform"); found != reference.extensions.end()) {
+        if (const auto found = reference.extensions.find("KHR_texture_transform");
+            found != reference.extensions.end()) {
             material.uvTransforms[slot] = uvTransform(found->second, where + ".KHR_texture_transform");
             const tinygltf::Value& set = found->second.Get("texCoord");
             if (set.IsInt())

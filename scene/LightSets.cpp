@@ -77,8 +77,8 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
             // light the floor of a scene whose up is +Y, as light-set scenes are built.
             const float tilt = glm::radians(kMaxSpotTiltDegrees) * random.unit();
             const float azimuth = glm::radians(360.0f) * random.unit();
-            light.direction = glm::vec3(std::sin(tilt) * std::cos(azimuth), -std::cos(tilt),
-                                        std::sin(tilt) * std::sin(azimuth));
+            light.direction =
+                glm::vec3(std::sin(tilt) * std::cos(azimuth), -std::cos(tilt), std::sin(tilt) * std::sin(azimuth));
             light.cutoffDegrees = random.in(set.cutoffDegrees);
             light.exponent = random.in(set.exponent);
         }
@@ -86,8 +86,8 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
         // lockstep whatever the count; drawn from no random number, so the lights above keep
         // their values.
         if (set.animation)
-            light.animation = withExtraPhase(*set.animation,
-                                             static_cast<float>(std::fmod(kGoldenAngleDegrees * i, 360.0)));
+            light.animation =
+                withExtraPhase(*set.animation, static_cast<float>(std::fmod(kGoldenAngleDegrees * i, 360.0)));
         out.push_back(std::move(light));
     }
 }

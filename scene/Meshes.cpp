@@ -1,7 +1,7 @@
 #include "scene/Meshes.h"
 
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -26,10 +26,7 @@ std::string formatNumber(float value)
     return buffer;
 }
 
-std::uint32_t vertexIndex(const Mesh& mesh)
-{
-    return static_cast<std::uint32_t>(mesh.vertices.size());
-}
+std::uint32_t vertexIndex(const Mesh& mesh) { return static_cast<std::uint32_t>(mesh.vertices.size()); }
 
 void addTriangle(Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c)
 {
@@ -54,15 +51,9 @@ void addQuad(Mesh& mesh, const glm::vec3& centre, const glm::vec3& u, const glm:
 
 // The unit vector around the Y axis at angle phi, measured from +Z towards +X, so that
 // increasing phi (increasing u) together with +Y gives an outward-facing frame.
-glm::vec3 aroundY(double phi)
-{
-    return {static_cast<float>(std::sin(phi)), 0.0f, static_cast<float>(std::cos(phi))};
-}
+glm::vec3 aroundY(double phi) { return {static_cast<float>(std::sin(phi)), 0.0f, static_cast<float>(std::cos(phi))}; }
 
-double sliceAngle(double j, int slices)
-{
-    return kTwoPi * j / slices;
-}
+double sliceAngle(double j, int slices) { return kTwoPi * j / slices; }
 
 // A flat disc at height y facing up (+Y) or down (−Y), with its own vertices so that the
 // edge between it and the side stays sharp.
@@ -75,9 +66,9 @@ void addDisc(Mesh& mesh, float radius, float y, bool facingUp, int slices)
     mesh.vertices.push_back({{0.0f, y, 0.0f}, normal, {0.5f, 0.5f}});
     for (int j = 0; j < slices; ++j) {
         const glm::vec3 direction = aroundY(sliceAngle(j, slices));
-        mesh.vertices.push_back(
-            {direction * radius + glm::vec3{0.0f, y, 0.0f}, normal,
-             {0.5f + 0.5f * direction.x, 0.5f + 0.5f * vSign * direction.z}});
+        mesh.vertices.push_back({direction * radius + glm::vec3{0.0f, y, 0.0f},
+                                 normal,
+                                 {0.5f + 0.5f * direction.x, 0.5f + 0.5f * vSign * direction.z}});
     }
     for (int j = 0; j < slices; ++j) {
         const std::uint32_t a = centre + 1 + static_cast<std::uint32_t>(j);
@@ -142,12 +133,12 @@ Mesh makeBox(const glm::vec3& size)
         glm::vec3 u, v;
     };
     const Face faces[6] = {
-        {{0.0f, 0.0f, -1.0f}, {0.0f, 1.0f, 0.0f}},   // +X
-        {{0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}},    // −X
-        {{1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}},   // +Y
-        {{1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}},    // −Y
-        {{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},    // +Z
-        {{-1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},   // −Z
+        {{0.0f, 0.0f, -1.0f}, {0.0f, 1.0f, 0.0f}},  // +X
+        {{0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}},   // −X
+        {{1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}},  // +Y
+        {{1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}},   // −Y
+        {{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},   // +Z
+        {{-1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},  // −Z
     };
     for (const Face& face : faces) {
         const glm::vec3 normal = glm::cross(face.u, face.v);
@@ -200,7 +191,8 @@ Mesh makeCone(float radius, float height, int slices)
     const std::uint32_t base = vertexIndex(mesh);
     for (int j = 0; j <= slices; ++j) {
         const double phi = sliceAngle(j, slices);
-        mesh.vertices.push_back({aroundY(phi) * radius + glm::vec3{0.0f, bottom, 0.0f}, sideNormal(phi),
+        mesh.vertices.push_back({aroundY(phi) * radius + glm::vec3{0.0f, bottom, 0.0f},
+                                 sideNormal(phi),
                                  {static_cast<float>(j) / static_cast<float>(slices), 0.0f}});
     }
     // One apex vertex per slice, with the normal of the slice's middle: a single shared apex
@@ -208,8 +200,8 @@ Mesh makeCone(float radius, float height, int slices)
     const std::uint32_t apex = vertexIndex(mesh);
     for (int j = 0; j < slices; ++j) {
         const double phi = sliceAngle(j + 0.5, slices);
-        mesh.vertices.push_back({{0.0f, top, 0.0f}, sideNormal(phi),
-                                 {(static_cast<float>(j) + 0.5f) / static_cast<float>(slices), 1.0f}});
+        mesh.vertices.push_back(
+            {{0.0f, top, 0.0f}, sideNormal(phi), {(static_cast<float>(j) + 0.5f) / static_cast<float>(slices), 1.0f}});
     }
     for (int j = 0; j < slices; ++j) {
         const auto offset = static_cast<std::uint32_t>(j);
@@ -230,7 +222,8 @@ Mesh makeCylinder(float radius, float height, int slices)
         const float y = row == 0 ? -half : half;
         for (int j = 0; j <= slices; ++j) {
             const glm::vec3 normal = aroundY(sliceAngle(j, slices));
-            mesh.vertices.push_back({normal * radius + glm::vec3{0.0f, y, 0.0f}, normal,
+            mesh.vertices.push_back({normal * radius + glm::vec3{0.0f, y, 0.0f},
+                                     normal,
                                      {static_cast<float>(j) / static_cast<float>(slices), static_cast<float>(row)}});
         }
     }
@@ -255,7 +248,8 @@ Mesh makeTorus(float radius, float tube, int rings, int sides)
         for (int j = 0; j <= rings; ++j) {
             const glm::vec3 around = aroundY(sliceAngle(j, rings));
             const glm::vec3 normal = around * cosPsi + glm::vec3{0.0f, sinPsi, 0.0f};
-            mesh.vertices.push_back({around * radius + normal * tube, normal,
+            mesh.vertices.push_back({around * radius + normal * tube,
+                                     normal,
                                      {static_cast<float>(j) / static_cast<float>(rings),
                                       static_cast<float>(i) / static_cast<float>(sides)}});
         }
@@ -314,8 +308,8 @@ void smoothNormals(Mesh& mesh, const std::vector<bool>& replace)
         const glm::dvec3& n = sum[group[i]];
         const double length = glm::length(n);
         // A vertex on no face (or only on faces that cancel out) still needs a unit normal.
-        mesh.vertices[i].normal = length > 0.0 && std::isfinite(length) ? glm::vec3{n / length}
-                                                                         : glm::vec3{0.0f, 1.0f, 0.0f};
+        mesh.vertices[i].normal =
+            length > 0.0 && std::isfinite(length) ? glm::vec3{n / length} : glm::vec3{0.0f, 1.0f, 0.0f};
     }
 }
 
@@ -331,10 +325,7 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
     return !(crossLength > 1e-12 * glm::length(e1) * glm::length(e2));
 }
 
-void computeSmoothNormals(Mesh& mesh)
-{
-    smoothNormals(mesh, std::vector<bool>(mesh.vertices.size(), true));
-}
+void computeSmoothNormals(Mesh& mesh) { smoothNormals(mesh, std::vector<bool>(mesh.vertices.size(), true)); }
 
 void computeSmoothNormals(Mesh& mesh, const std::vector<bool>& replace)
 {

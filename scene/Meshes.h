@@ -10,7 +10,7 @@
 
 namespace manylights {
 
-Mesh makePlane(float sizeX, float sizeZ);                  // XZ plane, normal +Y
+Mesh makePlane(float sizeX, float sizeZ);  // XZ plane, normal +Y
 Mesh makeBox(const glm::vec3& size);
 Mesh makeSphere(float radius, int slices = 48, int stacks = 24);
 Mesh makeCone(float radius, float height, int slices = 48);      // apex at +height/2, base capped

@@ -15,8 +15,8 @@
 namespace manylights {
 
 struct ModelInstance {
-    std::string name;  // the glTF node's name (or "nodes[i]"); the file name for an OBJ
-    std::size_t mesh = 0;  // index into Model::meshes
+    std::string name;           // the glTF node's name (or "nodes[i]"); the file name for an OBJ
+    std::size_t mesh = 0;       // index into Model::meshes
     glm::mat4 transform{1.0f};  // the node's world matrix in the model
 };
 
@@ -24,7 +24,7 @@ struct Model {
     std::vector<Mesh> meshes;  // SubMesh::material indexes Model::materials
     std::vector<Material> materials;
     std::vector<ModelInstance> instances;
-    std::vector<Light> lights;  // in model space
+    std::vector<Light> lights;         // in model space
     std::vector<NamedCamera> cameras;  // in model space, named after their nodes
     std::vector<EncodedImage> images;
 };

@@ -122,7 +122,9 @@ void appendUtf8(std::string& out, std::uint32_t c)
 // order, told by its mark) is converted; both noted. Unpaired surrogates become U+FFFD.
 std::string decodedText(const std::string& bytes, FileWarnings& warnings)
 {
-    const auto starts = [&](const char* mark, std::size_t length) { return bytes.compare(0, length, mark, length) == 0; };
+    const auto starts = [&](const char* mark, std::size_t length) {
+        return bytes.compare(0, length, mark, length) == 0;
+    };
     if (starts("\xEF\xBB\xBF", 3)) {
         warnings.noteFile("bom", "a UTF-8 byte-order mark, skipped");
         return bytes.substr(3);
@@ -130,7 +132,8 @@ std::string decodedText(const std::string& bytes, FileWarnings& warnings)
     const bool bigEndian = starts("\xFE\xFF", 2);
     if (!bigEndian && !starts("\xFF\xFE", 2))
         return bytes;
-    warnings.noteFile("utf16", std::string("UTF-16 text (") + (bigEndian ? "big" : "little") + "-endian), read as such");
+    warnings.noteFile("utf16",
+                      std::string("UTF-16 text (") + (bigEndian ? "big" : "little") + "-endian), read as such");
     const auto unit = [&](std::size_t i) {
         const auto hi = static_cast<unsigned char>(bytes[bigEndian ? i : i + 1]);
         const auto lo = static_cast<unsigned char>(bytes[bigEndian ? i + 1 : i]);
@@ -152,12 +155,13 @@ std::string decodedText(const std::string& bytes, FileWarnings& warnings)
 }
 
 // The statements this loader reads or knowingly passes over; any other is reported once.
-const std::set<std::string, std::less<>> kObjStatements{"v", "vn", "vt", "vp", "f", "l", "p", "g", "o", "s", "usemtl", "mtllib"};
+const std::set<std::string, std::less<>> kObjStatements{"v", "vn", "vt", "vp", "f",      "l",
+                                                        "p", "g",  "o",  "s",  "usemtl", "mtllib"};
 const std::set<std::string, std::less<>> kMtlStatements{
-    "newmtl", "Ka",      "Kd",    "Ks",    "Ke",    "Ns",   "Ni",    "d",         "Tr",   "Tf",   "illum",
-    "map_Ka", "map_Kd",  "map_Ks", "map_Ke", "map_Ns", "map_d", "map_bump", "map_Bump", "bump", "norm", "disp",
-    "decal",  "refl",    "sharpness", "Pr", "Pm",   "Ps",   "Pc",    "Pcr",       "aniso", "anisor", "map_Pr",
-    "map_Pm", "map_Ps",  "Tw"};
+    "newmtl",   "Ka",    "Kd",     "Ks",     "Ke",     "Ns",     "Ni",        "d",      "Tr",
+    "Tf",       "illum", "map_Ka", "map_Kd", "map_Ks", "map_Ke", "map_Ns",    "map_d",  "map_bump",
+    "map_Bump", "bump",  "norm",   "disp",   "decal",  "refl",   "sharpness", "Pr",     "Pm",
+    "Ps",       "Pc",    "Pcr",    "aniso",  "anisor", "map_Pr", "map_Pm",    "map_Ps", "Tw"};
 
 // What a keyword's numbers are, how many it needs, and whether one value stands for three (an
 // MTL colour: "Ks 0.5" is grey, as the format allows).
@@ -171,10 +175,10 @@ const std::map<std::string, NumberKeyword, std::less<>> kObjNumberKeywords{
     {"v", {"vertex position", 3, false}}, {"vn", {"normal", 3, false}}, {"vt", {"texture coordinate", 1, false}}};
 
 const std::map<std::string, NumberKeyword, std::less<>> kMtlNumberKeywords{{"Kd", {"Kd", 3, true}},
-                                                             {"Ks", {"Ks", 3, true}},
-                                                             {"Ke", {"Ke", 3, true}},
-                                                             {"Ka", {"Ka", 3, true}},
-                                                             {"Ns", {"Ns", 1, false}}};
+                                                                           {"Ks", {"Ks", 3, true}},
+                                                                           {"Ke", {"Ke", 3, true}},
+                                                                           {"Ka", {"Ka", 3, true}},
+                                                                           {"Ns", {"Ns", 1, false}}};
 
 // The text tinyobjloader is given: the numbers of the lines that carry them read here first,
 // with the line number, since tinyobjloader reads "nan", "inf" and malformed numbers as 0
@@ -200,7 +204,8 @@ std::string checkedNumbers(const std::string& text, const std::string& displayNa
         const std::string_view keyword =
             keywordBegin == std::string_view::npos || line[keywordBegin] == '#'
                 ? std::string_view()
-                : line.substr(keywordBegin, std::min(line.find_first_of(" \t\r", keywordBegin), line.size()) - keywordBegin);
+                : line.substr(keywordBegin,
+                              std::min(line.find_first_of(" \t\r", keywordBegin), line.size()) - keywordBegin);
         const auto found = keyword.empty() ? keywords.end() : keywords.find(keyword);
         if (found == keywords.end()) {
             if (!keyword.empty() && !known.contains(keyword))
@@ -239,7 +244,8 @@ std::string checkedNumbers(const std::string& text, const std::string& displayNa
         if (spec.oneForThree && numbers.size() == 1) {
             numbers.resize(3, numbers.front());
             rewritten = true;
-            warnings.note(lineNumber, "one value", std::string(spec.what) + " with one value taken for all three channels");
+            warnings.note(lineNumber, "one value",
+                          std::string(spec.what) + " with one value taken for all three channels");
         }
         if (static_cast<int>(numbers.size()) < spec.needed)
             failHere("needs " + std::to_string(spec.needed) + " numbers, has " + std::to_string(numbers.size()));
@@ -400,7 +406,8 @@ std::string mapPath(MtlLibrary& library, const std::string& materialName, const 
     const fs::path found = findMapFile(library.directory, name);
     if (found.empty()) {
         library.warnings.noteFile(std::string("map ") + name, "material '" + materialName + "': " + keyword + " '" +
-                                                                  name + "' not found (" + (library.directory / name).string() +
+                                                                  name + "' not found (" +
+                                                                  (library.directory / name).string() +
                                                                   "); the material's colour stands in for it");
         return {};
     }
@@ -410,10 +417,7 @@ std::string mapPath(MtlLibrary& library, const std::string& materialName, const 
     return found.string();
 }
 
-glm::vec3 colour(const tinyobj::real_t (&value)[3])
-{
-    return {value[0], value[1], value[2]};
-}
+glm::vec3 colour(const tinyobj::real_t (&value)[3]) { return {value[0], value[1], value[2]}; }
 
 // A map's MTL texture options that manylights reads: `-o u v` and `-s u v` move and scale its
 // uvs, uv' = s · uv + o (OBJ's uvs are ours, origin at the bottom left; Blender's importer reads
@@ -497,9 +501,9 @@ Model loadObjModelText(const std::string& fileText, const std::string& displayNa
     CheckedMaterialReader reader(text, baseDirectory, useMaterials ? mtlSource : noSource, warnings);
     // No triangulation by tinyobjloader: it reads vertex arrays through unchecked indices
     // while doing so. Polygons are fanned below, after the indices are checked.
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &textStream,
-                                     useMaterials ? &reader : nullptr,
-                                     /*triangulate=*/false, /*default_vcols_fallback=*/false);
+    const bool ok =
+        tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &textStream, useMaterials ? &reader : nullptr,
+                         /*triangulate=*/false, /*default_vcols_fallback=*/false);
     if (!ok || !error.empty())
         fail(displayName, firstLine(error.empty() ? std::string("cannot parse the file") : error));
 
@@ -512,9 +516,10 @@ Model loadObjModelText(const std::string& fileText, const std::string& displayNa
         forEachLine(text, [&](std::size_t lineNumber, std::string_view keyword, std::string_view rest) {
             const std::string name(trim(rest));
             if (keyword == "usemtl" && !known.contains(name))
-                warnings.note(lineNumber, "usemtl " + name,
-                              "usemtl '" + name +
-                                  "': no material library of the file defines it; its faces take the object's material");
+                warnings.note(
+                    lineNumber, "usemtl " + name,
+                    "usemtl '" + name +
+                        "': no material library of the file defines it; its faces take the object's material");
         });
     }
 
@@ -669,8 +674,9 @@ Model loadObjModelFile(const fs::path& path, Warnings& warnings)
     const std::string displayName = path.string();
     const std::string text = readInputFile(path, "the file");
     const fs::path directory = path.parent_path();
-    return loadObjModelText(text, displayName, directory,
-                            [&](const std::string& name) { return readTextFile(directory / name); }, warnings);
+    return loadObjModelText(
+        text, displayName, directory, [&](const std::string& name) { return readTextFile(directory / name); },
+        warnings);
 }
 
 Mesh loadObjStream(std::istream& stream, const std::string& displayName)

@@ -14,11 +14,11 @@ namespace manylights {
 struct Mesh;
 
 struct RevolutionProfile {
-    float radius = 0.5f;     // mean radius; > amplitude so that the surface never pinches
+    float radius = 0.5f;  // mean radius; > amplitude so that the surface never pinches
     float height = 1.5f;
     float amplitude = 0.12f;
-    float waves = 1.5f;      // wave crests along the height
-    float speed = 0.5f;      // crests passing a point per second (0: a static surface)
+    float waves = 1.5f;  // wave crests along the height
+    float speed = 0.5f;  // crests passing a point per second (0: a static surface)
 };
 
 glm::vec3 revolutionPosition(const RevolutionProfile& profile, float u, float v, double t);

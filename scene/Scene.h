@@ -271,9 +271,9 @@ struct Scene {
     AmbientOcclusion ssao;
     DisplaySettings display;  // `display` in the scene file: how 8-bit outputs and the window show it
     float attenuationThreshold = kDefaultAttenuationThreshold;
-    std::vector<Light> lights;       // explicit lights
+    std::vector<Light> lights;         // explicit lights
     std::vector<NamedCamera> cameras;  // from model files, in the order they were loaded
-    std::vector<LightSet> lightSets;  // generated lights (see expandLights)
+    std::vector<LightSet> lightSets;   // generated lights (see expandLights)
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;

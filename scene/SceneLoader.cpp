@@ -24,10 +24,10 @@
 #include "core/InputFile.h"
 #include "scene/GltfLoader.h"
 #include "scene/Meshes.h"
-#include "scene/Revolution.h"
 #include "scene/ObjLoader.h"
-#include "scene/Transform.h"
+#include "scene/Revolution.h"
 #include "scene/Tangents.h"
+#include "scene/Transform.h"
 
 namespace manylights {
 
@@ -385,8 +385,8 @@ Json parseJson(const std::string& text, const std::string& displayName)
         const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
         const TextPosition at = positionOf(text, offset);
         // Comments are the most common non-JSON in hand-written scenes; say so plainly.
-        const bool comment = offset + 1 < text.size() && text[offset] == '/' &&
-                             (text[offset + 1] == '/' || text[offset + 1] == '*');
+        const bool comment =
+            offset + 1 < text.size() && text[offset] == '/' && (text[offset + 1] == '/' || text[offset + 1] == '*');
         throw Error(displayName + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
                     (comment ? std::string("comments are not allowed in JSON") : explainParseError(e.what())));
     } catch (const Json::out_of_range& e) {
@@ -961,7 +961,7 @@ private:
     Material readMaterial(const Node& node) const
     {
         expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map",
-                           "normal_scale", "opacity"});
+                          "normal_scale", "opacity"});
         Material material;
         if (const auto diffuse = member(node, "diffuse"))
             material.diffuse = colour(*diffuse);
@@ -1294,8 +1294,8 @@ private:
         if (kind == "box") {
             expectKeys(node, {"primitive", "size"});
             const glm::vec3 size = vec3(required(node, "size"), &Loader::positive);
-            return cached("box(size=[" + formatFloat(size.x) + ", " + formatFloat(size.y) + ", " +
-                              formatFloat(size.z) + "])",
+            return cached("box(size=[" + formatFloat(size.x) + ", " + formatFloat(size.y) + ", " + formatFloat(size.z) +
+                              "])",
                           [&] { return makeBox(size); });
         }
         if (kind == "sphere") {

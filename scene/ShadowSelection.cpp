@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numeric>
 
-
 namespace manylights {
 
 Bounds transformedBounds(const Bounds& local, const glm::mat4& transform)

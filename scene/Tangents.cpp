@@ -13,10 +13,7 @@ struct TangentSums {
     double weight[2]{0.0, 0.0};
 };
 
-glm::dvec3 projectIntoPlane(const glm::dvec3& v, const glm::dvec3& normal)
-{
-    return v - normal * glm::dot(normal, v);
-}
+glm::dvec3 projectIntoPlane(const glm::dvec3& v, const glm::dvec3& normal) { return v - normal * glm::dot(normal, v); }
 
 // Any unit vector perpendicular to `normal` (for vertices no triangle gives a tangent to).
 glm::dvec3 anyPerpendicular(const glm::dvec3& normal)
@@ -49,8 +46,7 @@ void generateTangents(Mesh& mesh)
     std::vector<TangentSums> sums(mesh.vertices.size());
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         const std::uint32_t corner[3] = {mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]};
-        if (corner[0] >= mesh.vertices.size() || corner[1] >= mesh.vertices.size() ||
-            corner[2] >= mesh.vertices.size())
+        if (corner[0] >= mesh.vertices.size() || corner[1] >= mesh.vertices.size() || corner[2] >= mesh.vertices.size())
             continue;
         const Vertex* v[3] = {&mesh.vertices[corner[0]], &mesh.vertices[corner[1]], &mesh.vertices[corner[2]]};
         const glm::dvec3 e1 = glm::dvec3(v[1]->position) - glm::dvec3(v[0]->position);

@@ -10,7 +10,7 @@ packages=(
   libglfw3-dev libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev
   libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libimgui-dev xvfb xauth imagemagick ffmpeg
-  libtinygltf-dev assimp-testmodels clang libclang-rt-dev
+  libtinygltf-dev assimp-testmodels clang libclang-rt-dev clang-format
   libopenexr-dev openexr
 )
 

@@ -34,7 +34,7 @@ struct BenchResult {
     std::size_t lights = 0;  // every light rendered: the scene's explicit lights and its sets'
     ImageSize size;
     int frames = 0;
-    FrameSummary measured;  // the measured frames
+    FrameSummary measured;           // the measured frames
     std::optional<WorkCounts> work;  // with --count-work
 };
 
@@ -136,7 +136,9 @@ public:
     void skip(const std::string& label)
     {
         ++index_;
-        std::fprintf(stderr, terminal_ ? "\r[%zu/%zu] %s: skipped, over the budget\033[K" : "[%zu/%zu] %s: skipped, over the budget\n",
+        std::fprintf(stderr,
+                     terminal_ ? "\r[%zu/%zu] %s: skipped, over the budget\033[K"
+                               : "[%zu/%zu] %s: skipped, over the budget\n",
                      index_, total_, label.c_str());
         std::fflush(stderr);
     }
@@ -267,8 +269,7 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
         std::string passes;
         for (const PassSummary& pass : r.measured.passes) {
             char entry[96];
-            std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(),
-                          pass.wallMs);
+            std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(), pass.wallMs);
             passes += entry;
         }
         row.push_back(passes);
@@ -286,9 +287,9 @@ std::string plotText(const std::vector<BenchResult>& results, const BenchOptions
     for (const ImageSize& size : options.sizes) {
         PlotPanel panel;
         panel.title = sceneName + ", " + formatSize(size) + ": ";
-        panel.title += options.frames == 1 ? "one frame"
-                                           : "median of " + std::to_string(options.frames) +
-                                                 " frames, bars from min to max";
+        panel.title += options.frames == 1
+                           ? "one frame"
+                           : "median of " + std::to_string(options.frames) + " frames, bars from min to max";
         for (const std::string& technique : techniques) {
             PlotSeries series;
             series.name = technique;
@@ -376,8 +377,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(CLI::Range(0, kMaxFrames))
         ->capture_default_str();
     bench->add_option("--csv", options.csvPath, "Write one row per combination as CSV");
-    bench->add_option("--budget-ms", options.budgetMs,
-                      "Skip a technique's larger light counts once its median frame exceeds this")
+    bench
+        ->add_option("--budget-ms", options.budgetMs,
+                     "Skip a technique's larger light counts once its median frame exceeds this")
         ->check(numberIn(0.0, 1.0e9));
     bench->add_option("--plot", options.plotPath, "Write frame time against lights as an SVG plot")
         ->check([](const std::string& path) {
@@ -443,9 +445,9 @@ void runBench(const BenchOptions& options)
         }
     }
 
-    std::printf("%s on %s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s",
-                scene.source.c_str(), context.description().c_str(), options.warmup, options.warmup == 1 ? "" : "s",
-                options.frames, options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
+    std::printf("%s on %s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s", scene.source.c_str(),
+                context.description().c_str(), options.warmup, options.warmup == 1 ? "" : "s", options.frames,
+                options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
     std::fflush(stdout);
     // Both outputs or neither.
     AtomicFileSet outputs;

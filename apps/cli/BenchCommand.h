@@ -25,8 +25,8 @@ struct BenchOptions {
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
     bool countWork = false;
-    bool strict = false;  // --strict: model files' forgiven problems are errors
-    CameraOptions camera;  // --camera, --eye, --look-at, --up, --fov-y
+    bool strict = false;     // --strict: model files' forgiven problems are errors
+    CameraOptions camera;    // --camera, --eye, --look-at, --up, --fov-y
     DisplayOptions display;  // --exposure, --tonemap, --srgb, --aa: time the display pass too
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     int anisotropy = kAutoAnisotropy;  // --anisotropy (TextureCache::setAnisotropy)

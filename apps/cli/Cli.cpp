@@ -10,10 +10,10 @@
 #include "apps/cli/BenchCommand.h"
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/RenderCommand.h"
+#include "core/Error.h"
 #include "core/Numbers.h"
 #include "render/Image.h"
 #include "render/Technique.h"
-#include "core/Error.h"
 
 namespace manylights {
 
@@ -40,8 +40,8 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_option("--view", view, "What to show")
         ->check(CLI::IsMember(viewModeNames()))
         ->capture_default_str();
-    CLI::Option* timeOption =
-        renderCommand->add_option("--time", render.time, "Scene time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
+    CLI::Option* timeOption = renderCommand->add_option("--time", render.time, "Scene time in seconds")
+                                  ->check(numberIn(0.0, kMaxSceneSeconds));
     std::string timeRange;
     CLI::Option* timeRangeOption =
         renderCommand
@@ -70,8 +70,7 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_flag("--rebuild-shadows", render.rebuildShadows,
                             "Render every shadow map every frame instead of reusing unchanged ones (to time them)");
     addCameraOptions(*renderCommand, render.camera);
-    renderCommand->add_flag("--strict", render.strict,
-                            "Treat what model files get forgiven (warnings) as errors");
+    renderCommand->add_flag("--strict", render.strict, "Treat what model files get forgiven (warnings) as errors");
     addDisplayOptions(*renderCommand, render.display);
     renderCommand
         ->add_option("--supersample", render.supersample,

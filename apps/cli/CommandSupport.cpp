@@ -46,10 +46,7 @@ void addAnisotropyOption(CLI::App& command, int& level)
         ->default_str("auto");
 }
 
-std::string formatSize(const ImageSize& size)
-{
-    return std::to_string(size.width) + "x" + std::to_string(size.height);
-}
+std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
 
 FrameSummary summarizeFrames(const std::vector<FrameSample>& frames)
 {

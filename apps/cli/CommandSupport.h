@@ -23,7 +23,7 @@
 namespace CLI {
 class App;
 class Validator;
-}
+}  // namespace CLI
 
 namespace manylights {
 
@@ -101,7 +101,7 @@ FrameSummary summarizeFrames(const std::vector<FrameSample>& frames);
 // The camera options of render, bench and view (docs/cli.md): a model file's camera by name
 // or index, then any of its parts replaced.
 struct CameraOptions {
-    std::string camera;  // --camera NAME|INDEX: one of Scene::cameras
+    std::string camera;               // --camera NAME|INDEX: one of Scene::cameras
     std::optional<glm::vec3> eye;     // --eye X,Y,Z
     std::optional<glm::vec3> lookAt;  // --look-at X,Y,Z
     std::optional<glm::vec3> up;      // --up X,Y,Z

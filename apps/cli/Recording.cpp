@@ -46,8 +46,8 @@ std::string scanPattern(const std::string& pattern, Conversion& conversion)
             if (j < pattern.size() && pattern[j] >= '1' && pattern[j] <= '9')
                 width = pattern[j++] - '0';
             else
-                return "the output pattern's %0 must be followed by a width 1-9 and 'd' (as in %04d), in '" +
-                       pattern + "'";
+                return "the output pattern's %0 must be followed by a width 1-9 and 'd' (as in %04d), in '" + pattern +
+                       "'";
         }
         if (j >= pattern.size() || pattern[j] != 'd')
             return "the output pattern may only hold %d, %0Nd or %%, in '" + pattern + "'";
@@ -98,10 +98,7 @@ std::string checkRecordingFrameCount(const TimeRange& range, double fps)
     return {};
 }
 
-int recordingFrameCount(const TimeRange& range, double fps)
-{
-    return static_cast<int>(frameCountOf(range, fps));
-}
+int recordingFrameCount(const TimeRange& range, double fps) { return static_cast<int>(frameCountOf(range, fps)); }
 
 double recordingFrameTime(const TimeRange& range, double fps, int frame) { return range.start + frame / fps; }
 

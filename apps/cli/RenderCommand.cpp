@@ -25,8 +25,8 @@ namespace {
 constexpr int kWarmupFrames = 1;
 
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
-                              const std::vector<FrameSample>& frames, const std::string& device,
-                              float anisotropy, const Technique& technique, const WorkCounts* work)
+                              const std::vector<FrameSample>& frames, const std::string& device, float anisotropy,
+                              const Technique& technique, const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -78,10 +78,14 @@ struct AovLayer {
 const std::vector<AovLayer>& aovLayers()
 {
     static const std::vector<AovLayer> layers{
-        {ViewMode::Position, {"X", "Y", "Z"}}, {ViewMode::Normal, {"X", "Y", "Z"}},
-        {ViewMode::Diffuse, {"R", "G", "B"}},  {ViewMode::Specular, {"R", "G", "B"}},
-        {ViewMode::Emissive, {"R", "G", "B"}}, {ViewMode::Depth, {"Z"}},
-        {ViewMode::LightCount, {"Y"}},         {ViewMode::Shadow, {"Y"}},
+        {ViewMode::Position, {"X", "Y", "Z"}},
+        {ViewMode::Normal, {"X", "Y", "Z"}},
+        {ViewMode::Diffuse, {"R", "G", "B"}},
+        {ViewMode::Specular, {"R", "G", "B"}},
+        {ViewMode::Emissive, {"R", "G", "B"}},
+        {ViewMode::Depth, {"Z"}},
+        {ViewMode::LightCount, {"Y"}},
+        {ViewMode::Shadow, {"Y"}},
         {ViewMode::Ssao, {"Y"}},
     };
     return layers;
@@ -107,8 +111,8 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
     if (options.aovs) {
         for (const AovLayer& aov : aovLayers()) {
             renderer.renderFrame(technique, aov.view);
-            layers.push_back(
-                {std::string(viewModeName(aov.view)), aov.channels, boxDownsample(renderer.readColour(), options.supersample)});
+            layers.push_back({std::string(viewModeName(aov.view)), aov.channels,
+                              boxDownsample(renderer.readColour(), options.supersample)});
         }
     }
     return encodeExr(layers, options.exrFloat ? ExrPixels::Float : ExrPixels::Half);
@@ -165,9 +169,9 @@ void runRender(const RenderOptions& options)
     renderer.setCountWork(countWork);
     renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
     renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
-    std::unique_ptr<Technique> technique = makeTechnique(options.technique, {.countWork = countWork,
-                                                                         .gbufferLayout = options.gbufferLayout,
-                                                                         .localShadows = options.shadowLights > 0});
+    std::unique_ptr<Technique> technique = makeTechnique(
+        options.technique,
+        {.countWork = countWork, .gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
     ML_ASSERT(technique != nullptr);  // the command line only accepts known names
 
     if (options.timeRange) {

@@ -1,12 +1,14 @@
+// `manylights render` (docs/cli.md): renders a scene to PNG, PFM or EXR, one frame or an
+// animation's frames, with statistics; the options as the command line gives them.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "render/GBuffer.h"
-#include "render/TextureCache.h"
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/Recording.h"
+#include "render/GBuffer.h"
+#include "render/TextureCache.h"
 #include "render/Views.h"
 
 namespace manylights {
@@ -29,7 +31,7 @@ struct RenderOptions {
     // frame of the range at `fps` is written.
     std::optional<TimeRange> timeRange;
     double fps = 30.0;
-    int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
+    int shadowLights = 0;         // local lights with shadow maps (--shadow-lights)
     bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
     bool strict = false;          // model files' forgiven problems are errors (--strict)
     CameraOptions camera;         // --camera, --eye, --look-at, --up, --fov-y

@@ -20,8 +20,8 @@ struct PlotPoint {
 };
 
 struct PlotSeries {
-    std::string name;    // in the legend
-    std::string colour;  // any SVG colour; paletteColour gives distinguishable ones
+    std::string name;               // in the legend
+    std::string colour;             // any SVG colour; paletteColour gives distinguishable ones
     std::vector<PlotPoint> points;  // any order: drawn sorted by x
 };
 

@@ -50,7 +50,8 @@ void flyCamera(Camera& camera, const glm::vec3& offset)
     const glm::vec3 view = camera.lookAt - camera.eye;
     glm::vec3 forward = view - glm::dot(view, up) * up;
     // Looking straight down: forward is the screen's up direction instead.
-    forward = glm::length(forward) > 1e-6f ? glm::normalize(forward) : glm::normalize(glm::cross(up, glm::vec3{1, 0, 0}));
+    forward =
+        glm::length(forward) > 1e-6f ? glm::normalize(forward) : glm::normalize(glm::cross(up, glm::vec3{1, 0, 0}));
     const glm::vec3 right = glm::normalize(glm::cross(forward, up));
     const glm::vec3 move = offset.x * right + offset.y * up + offset.z * forward;
     camera.eye += move;

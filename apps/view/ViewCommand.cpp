@@ -27,7 +27,9 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_option("--technique", options.technique, "Lighting technique")
         ->check(CLI::IsMember(techniqueNames()))
         ->capture_default_str();
-    app.add_option("--view", options.view, "What to show")->check(CLI::IsMember(viewModeNames()))->capture_default_str();
+    app.add_option("--view", options.view, "What to show")
+        ->check(CLI::IsMember(viewModeNames()))
+        ->capture_default_str();
     app.add_option("--time", options.time, "Animation start time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
     app.add_option("--lights", options.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));

@@ -34,7 +34,7 @@ struct ScriptCommand {
     double number = 0.0;             // Frames, Time, Speed
     int width = 0;                   // Resize
     int height = 0;
-    int line = 0;                    // in the script file, for messages
+    int line = 0;  // in the script file, for messages
 };
 
 // Parses the script's text; blank lines and lines starting with '#' are skipped. Throws

@@ -11,10 +11,11 @@
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
+#include "apps/cli/CommandSupport.h"
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewScript.h"
 #include "core/Error.h"
@@ -23,7 +24,6 @@
 #include "platform/HeadlessContext.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
-#include "apps/cli/CommandSupport.h"
 #include "scene/LightSets.h"
 
 namespace manylights {
@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 
 // Camera speeds, per second of wall time with a key held.
 constexpr float kOrbitDegreesPerSecond = 60.0f;
-constexpr float kDollyPerSecond = 1.5f;      // distance factor per second
+constexpr float kDollyPerSecond = 1.5f;        // distance factor per second
 constexpr float kFlyFractionPerSecond = 0.4f;  // of the distance to the look-at point
 constexpr float kMouseDegreesPerPixel = 0.2f;
 // A scripted `key` press acts as the key held for this long.
@@ -71,11 +71,11 @@ struct KeyBinding {
     int key;
 };
 constexpr KeyBinding kKeys[] = {
-    {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},   {"down", GLFW_KEY_DOWN},
-    {"plus", GLFW_KEY_EQUAL}, {"minus", GLFW_KEY_MINUS}, {"w", GLFW_KEY_W},     {"a", GLFW_KEY_A},
-    {"s", GLFW_KEY_S},       {"d", GLFW_KEY_D},         {"x", GLFW_KEY_X},     {"l", GLFW_KEY_L},
-    {"m", GLFW_KEY_M},       {"t", GLFW_KEY_T},         {"v", GLFW_KEY_V},     {"p", GLFW_KEY_P},
-    {"f12", GLFW_KEY_F12},   {"c", GLFW_KEY_C},   {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
+    {"left", GLFW_KEY_LEFT},  {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},
+    {"plus", GLFW_KEY_EQUAL}, {"minus", GLFW_KEY_MINUS}, {"w", GLFW_KEY_W},           {"a", GLFW_KEY_A},
+    {"s", GLFW_KEY_S},        {"d", GLFW_KEY_D},         {"x", GLFW_KEY_X},           {"l", GLFW_KEY_L},
+    {"m", GLFW_KEY_M},        {"t", GLFW_KEY_T},         {"v", GLFW_KEY_V},           {"p", GLFW_KEY_P},
+    {"f12", GLFW_KEY_F12},    {"c", GLFW_KEY_C},         {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
 };
 
 int keyByName(const std::string& name)
@@ -180,9 +180,12 @@ Scene loadScene(const ViewOptions& options)
 }
 
 Viewer::Viewer(const ViewOptions& options)
-    : options_(options), scene_(loadScene(options)),
+    : options_(options),
+      scene_(loadScene(options)),
       window_({options.width, options.height, "manylights — " + scene_.source, defaultDebugContext()}),
-      techniqueName_(options.technique), view_(*parseViewMode(options.view)), time_(options.time)
+      techniqueName_(options.technique),
+      view_(*parseViewMode(options.view)),
+      time_(options.time)
 {
     if (options.lights && scene_.lightSets.empty())
         throw Error(scene_.source + ": --lights needs a scene with light_sets to scale");
@@ -394,9 +397,7 @@ void Viewer::runScript()
             // This frame is the first of them.
             scriptFramesLeft_ = static_cast<long>(command.number) - 1;
             return;
-        case ScriptCommand::Kind::Resize:
-            glfwSetWindowSize(window_.window(), command.width, command.height);
-            break;
+        case ScriptCommand::Kind::Resize: glfwSetWindowSize(window_.window(), command.width, command.height); break;
         case ScriptCommand::Kind::Technique: techniqueName_ = command.words[0]; break;
         case ScriptCommand::Kind::View: view_ = *parseViewMode(command.words[0]); break;
         case ScriptCommand::Kind::Time:
@@ -408,15 +409,15 @@ void Viewer::runScript()
         case ScriptCommand::Kind::Speed: speed_ = static_cast<float>(command.number); break;
         case ScriptCommand::Kind::Toggle: {
             const std::string& what = command.words[0];
-            bool& flag = what == "ambient"    ? ambient_
-                         : what == "diffuse"  ? diffuse_
-                         : what == "specular" ? specular_
-                         : what == "axes"     ? axes_
-                         : what == "wireframe" ? wireframe_
-                         : what == "shadows"   ? directionalShadows_
-                         : what == "ssao"      ? renderer_->ambientOcclusion().enabled
+            bool& flag = what == "ambient"         ? ambient_
+                         : what == "diffuse"       ? diffuse_
+                         : what == "specular"      ? specular_
+                         : what == "axes"          ? axes_
+                         : what == "wireframe"     ? wireframe_
+                         : what == "shadows"       ? directionalShadows_
+                         : what == "ssao"          ? renderer_->ambientOcclusion().enabled
                          : what == "auto-exposure" ? autoExposure_
-                                               : panel_;
+                                                   : panel_;
             flag = !flag;
             break;
         }
@@ -426,9 +427,7 @@ void Viewer::runScript()
             onKeyPressed(key);
             return;  // one key per frame, as a person would press them
         }
-        case ScriptCommand::Kind::Screenshot:
-            pendingScreenshot_ = command.words[0];
-            return;
+        case ScriptCommand::Kind::Screenshot: pendingScreenshot_ = command.words[0]; return;
         case ScriptCommand::Kind::Quit: quit_ = true; return;
         }
     }
@@ -545,8 +544,8 @@ void Viewer::showImage()
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(displayTexture_.id(), 0, 0, 0, width, height, GL_RGB, GL_FLOAT, shown.rgb.data());
     // Image rows run top to bottom, GL's bottom to top: the blit flips them.
-    glBlitNamedFramebuffer(displayFramebuffer_.id(), 0, 0, 0, width, height, 0, height, width, 0,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(displayFramebuffer_.id(), 0, 0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
 }
 
 void Viewer::drawAxes()
@@ -661,8 +660,7 @@ void Viewer::drawPanel()
     const float latest = history.empty() ? 0.0f : history.back();
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "%.2f ms (%.0f fps)", latest, latest > 0.0f ? 1000.0f / latest : 0.0f);
-    ImGui::PlotLines("frame ms", history.data(), static_cast<int>(history.size()), 0, overlay, 0.0f, FLT_MAX,
-                     {0, 60});
+    ImGui::PlotLines("frame ms", history.data(), static_cast<int>(history.size()), 0, overlay, 0.0f, FLT_MAX, {0, 60});
     if (ImGui::BeginTable("passes", 3)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("GPU ms");

@@ -47,12 +47,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (checkFramePattern(text).empty())
             formatFramePath(text, 1234567);
         break;
-    default:
+    default: {
         try {
             parseViewScript(text, "fuzz.txt");
         } catch (const Error&) {
         }
         break;
+    }
     }
     return 0;
 }

@@ -19,8 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         split == std::string::npos ? std::nullopt : std::optional<std::string>(input.substr(split + separator.size()));
     try {
         manylights::Warnings warnings;
-        manylights::loadObjModelText(obj, "fuzz.obj", "/nonexistent-manylights-fuzz",
-                                     [&](const std::string&) { return mtl; }, warnings);
+        manylights::loadObjModelText(
+            obj, "fuzz.obj", "/nonexistent-manylights-fuzz", [&](const std::string&) { return mtl; }, warnings);
     } catch (const manylights::Error&) {
     }
     return 0;

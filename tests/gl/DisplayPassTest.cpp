@@ -26,7 +26,8 @@ gl::Texture2D uploadLinear(const Image& image)
     std::vector<float> rgba(static_cast<std::size_t>(image.width) * image.height * 4, 1.0f);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
-            std::copy_n(image.pixel(x, y), 3, &rgba[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4]);
+            std::copy_n(image.pixel(x, y), 3,
+                        &rgba[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4]);
     glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
     return texture;
 }
@@ -60,8 +61,8 @@ Image greyRow(const std::vector<float>& values)
     return image;
 }
 
-const std::vector<float> kInputs{0.0f, 0.001f, 0.0031308f, 0.01f, 0.05f, 0.18f, 0.25f, 0.5f,
-                                 0.75f, 1.0f, 1.5f, 2.0f, 4.0f, 16.0f, 100.0f};
+const std::vector<float> kInputs{0.0f,  0.001f, 0.0031308f, 0.01f, 0.05f, 0.18f, 0.25f, 0.5f,
+                                 0.75f, 1.0f,   1.5f,       2.0f,  4.0f,  16.0f, 100.0f};
 
 double srgbEncode(double c)
 {
@@ -101,8 +102,7 @@ TEST_F(DisplayPassTest, SrgbEncodingAtTheStandardsBreakpoints)
 TEST_F(DisplayPassTest, ReinhardIsXOverOnePlusX)
 {
     expectCurve({.toneCurve = ToneCurve::Reinhard}, [](double x) { return x / (1.0 + x); });
-    expectCurve({.toneCurve = ToneCurve::Reinhard, .srgb = true},
-                [](double x) { return srgbEncode(x / (1.0 + x)); });
+    expectCurve({.toneCurve = ToneCurve::Reinhard, .srgb = true}, [](double x) { return srgbEncode(x / (1.0 + x)); });
 }
 
 TEST_F(DisplayPassTest, AcesIsNarkowiczsFit)
@@ -198,8 +198,8 @@ TEST_F(DisplayPassTest, FxaaLeavesFlatAndSmoothRegionsUnchanged)
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 48; ++x) {
             flat.rgb.insert(flat.rgb.end(), {0.6f, 0.2f, 0.4f});
-            gradient.rgb.insert(gradient.rgb.end(),
-                                {0.3f + 0.004f * static_cast<float>(x + y), 0.5f - 0.003f * static_cast<float>(x), 0.4f});
+            gradient.rgb.insert(gradient.rgb.end(), {0.3f + 0.004f * static_cast<float>(x + y),
+                                                     0.5f - 0.003f * static_cast<float>(x), 0.4f});
         }
     for (const Image& input : {flat, gradient})
         EXPECT_EQ(runDisplay(input, {}), runDisplay(input, {.antialiasing = Antialiasing::Fxaa}));

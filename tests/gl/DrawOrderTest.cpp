@@ -30,7 +30,8 @@ std::string threeBoxes(const int zs[3], int eyeZ)
                    R"("transform": {"translate": [0, 0, )" + std::to_string(zs[i]) + "]}}";
     }
     return R"({"camera": {"eye": [0, 0, )" + std::to_string(eyeZ) + R"(], "look_at": [0, 0, 0], "fov_y": 40},
-               "lights": [], "objects": [)" + objects + "]}";
+               "lights": [], "objects": [)" +
+           objects + "]}";
 }
 
 // The samples that pass the geometry pass's depth test.

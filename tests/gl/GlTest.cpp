@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "GlContextTest.h"
+#include "core/Error.h"
 #include "gl/Buffer.h"
 #include "gl/Debug.h"
 #include "gl/Framebuffer.h"
@@ -14,10 +15,9 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
-#include "render/GBuffer.h"
 #include "render/ClusterGrid.h"
+#include "render/GBuffer.h"
 #include "render/LightBatches.h"
-#include "core/Error.h"
 
 namespace manylights {
 namespace {
@@ -149,7 +149,8 @@ TEST_F(GlTest, CompileErrorNamesTheIncludedFileAndLine)
 
 TEST_F(GlTest, CompileErrorInMainFileKeepsLineNumbersAfterDefines)
 {
-    auto reader = memoryReader({{"main.frag", "#version 450 core\nout vec4 color;\n\nvoid main() { color = nope; }\n"}});
+    auto reader =
+        memoryReader({{"main.frag", "#version 450 core\nout vec4 color;\n\nvoid main() { color = nope; }\n"}});
     try {
         gl::Program program("broken", {{GL_FRAGMENT_SHADER, "main.frag"}}, {{"A", "1"}, {"B", "2"}}, reader);
         FAIL() << "the program compiled";

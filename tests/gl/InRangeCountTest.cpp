@@ -41,17 +41,17 @@ TEST_P(InRangeCount, CulledCountEqualsBruteForce)
     EXPECT_EQ(culled, bruteForce);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, InRangeCount,
-                         ::testing::Values(InRangeCase{"courtyard_4096_lights", "bench/courtyard.json", 4096, 320, 180},
-                                           InRangeCase{"spots_and_points", "tests/scenes/spots_and_points.json", 300, 160, 120},
-                                           InRangeCase{"big_light", "tests/scenes/big_light.json", std::nullopt, 320, 240},
-                                           InRangeCase{"camera_inside_spot_cone", "tests/scenes/camera_inside_spot_cone.json", std::nullopt,
-                                                       160, 120},
-                                           // Past the driver's loop limit, at a size people render:
-                                           // 16 batches of lights on a few pixels.
-                                           InRangeCase{"lights_on_one_spot_1280_720", "tests/scenes/lights_on_one_spot.json", std::nullopt,
-                                                       1280, 720}),
-                         [](const ::testing::TestParamInfo<InRangeCase>& param) { return param.param.name; });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, InRangeCount,
+    ::testing::Values(
+        InRangeCase{"courtyard_4096_lights", "bench/courtyard.json", 4096, 320, 180},
+        InRangeCase{"spots_and_points", "tests/scenes/spots_and_points.json", 300, 160, 120},
+        InRangeCase{"big_light", "tests/scenes/big_light.json", std::nullopt, 320, 240},
+        InRangeCase{"camera_inside_spot_cone", "tests/scenes/camera_inside_spot_cone.json", std::nullopt, 160, 120},
+        // Past the driver's loop limit, at a size people render:
+        // 16 batches of lights on a few pixels.
+        InRangeCase{"lights_on_one_spot_1280_720", "tests/scenes/lights_on_one_spot.json", std::nullopt, 1280, 720}),
+    [](const ::testing::TestParamInfo<InRangeCase>& param) { return param.param.name; });
 
 }  // namespace
 }  // namespace manylights

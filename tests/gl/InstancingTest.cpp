@@ -102,22 +102,24 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     EXPECT_EQ(gpuScene.batches().back().itemCount, markers);
 
     // The GL draws every instance: every object's triangles and every marker's.
-    const LightingProgram programs("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
-                                   {});
+    const LightingProgram programs("geometry pass",
+                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
     const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {
         return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
     };
     gpuScene.setViewport(64, 64);
     gpuScene.bind();
     const std::size_t markerTriangles = GpuScene::lightMarkerMesh().indices.size() / 3;
-    EXPECT_EQ(primitivesGenerated([&] { gpuScene.drawObjects(programFor); }), objectTriangles + markers * markerTriangles);
+    EXPECT_EQ(primitivesGenerated([&] { gpuScene.drawObjects(programFor); }),
+              objectTriangles + markers * markerTriangles);
 
     // Shadow casters: every object and no marker, with or without culling splitting batches.
     gl::Program depthProgram("shadow depth",
                              {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}});
     const auto depthProgramFor = [&](MaterialVariant) -> const gl::Program& { return depthProgram; };
     std::size_t drawn = 0;
-    EXPECT_EQ(primitivesGenerated([&] { drawn = gpuScene.drawObjectsDepthOnly(depthProgramFor, [](const Bounds&) { return true; }); }),
+    EXPECT_EQ(primitivesGenerated(
+                  [&] { drawn = gpuScene.drawObjectsDepthOnly(depthProgramFor, [](const Bounds&) { return true; }); }),
               objectTriangles);
     EXPECT_EQ(drawn, objectItems);
     // Every other kept item: the culled items' triangles are not drawn.

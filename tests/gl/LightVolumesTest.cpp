@@ -67,7 +67,7 @@ TEST(LightVolumes, LightsAreGroupedByShape)
     lights[2].positionRadius.w = 3.0f;  // spot, 120°: sphere
     lights[2].spotAxisCosCutoff.w = std::cos(glm::radians(120.0f));
     lights[3].positionRadius.w = falloff::kUnboundedRadius;  // a = b = 0
-    lights[4].positionRadius.w = 0.0f;  // too dim to reach the threshold anywhere
+    lights[4].positionRadius.w = 0.0f;                       // too dim to reach the threshold anywhere
     const LightVolumeGroups groups = groupLightVolumes(lights);
     EXPECT_EQ(groups.spheres, (std::vector<std::uint32_t>{0, 2}));
     EXPECT_EQ(groups.cones, (std::vector<std::uint32_t>{1}));

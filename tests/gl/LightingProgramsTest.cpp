@@ -73,8 +73,8 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
     const LightingProgram program("deferred lighting",
                                   {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
                                   shaderDefines({}));
-    const LightingFeatures points{.spotLights = false, .classicFalloff = true, .rangeFalloff = false,
-                                  .directionalLight = false};
+    const LightingFeatures points{
+        .spotLights = false, .classicFalloff = true, .rangeFalloff = false, .directionalLight = false};
     const gl::Program& general = program.variant(LightingFeatures{});
     const gl::Program& specialised = program.variant(points);
     EXPECT_NE(general.id(), 0u);
@@ -91,11 +91,11 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
 
 TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
 {
-    const LightingProgram program("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
-                                  {});
+    const LightingProgram program("geometry pass",
+                                  {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
     const gl::Program& plain = program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0});
-    const gl::Program& textured =
-        program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{kDiffuseMapBit | kSpecularMapBit});
+    const gl::Program& textured = program.variant(LightingFeatures{}, LightSource::StorageBuffer,
+                                                  MaterialVariant{kDiffuseMapBit | kSpecularMapBit});
     EXPECT_NE(plain.id(), textured.id());
     EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0}), &plain);
     // The normal map's scale is a uniform only of the programs that sample a normal map

@@ -61,11 +61,11 @@ protected:
 // its value) with texture(), i.e. with the sRGB decode a material lookup gets.
 glm::vec4 sampleCentre(const gl::MipmappedTexture2D& texture)
 {
-    const std::map<std::string, std::string> files = {
-        {"sample.comp", "#version 450 core\nlayout(local_size_x = 1) in;\n"
-                        "layout(binding = 6) uniform sampler2D map;\n"
-                        "layout(std430, binding = 0) buffer Out { vec4 value; };\n"
-                        "void main() { value = textureLod(map, vec2(0.5), 0.0); }\n"}};
+    const std::map<std::string, std::string> files = {{"sample.comp",
+                                                       "#version 450 core\nlayout(local_size_x = 1) in;\n"
+                                                       "layout(binding = 6) uniform sampler2D map;\n"
+                                                       "layout(std430, binding = 0) buffer Out { vec4 value; };\n"
+                                                       "void main() { value = textureLod(map, vec2(0.5), 0.0); }\n"}};
     const gl::ShaderFileReader reader = [&files](const std::string& name) -> std::optional<std::string> {
         const auto found = files.find(name);
         return found == files.end() ? std::nullopt : std::optional<std::string>(found->second);
@@ -91,7 +91,7 @@ TEST_F(TextureCacheTest, SharedTextureIsLoadedOncePerColourSpace)
     a.diffuseMap = path;
     Material b;
     b.diffuseMap = (dir_ / "." / "shared.png").string();  // another spelling of the same file
-    b.normalMap = path;  // the same file as data: a second, linear texture
+    b.normalMap = path;                                   // the same file as data: a second, linear texture
     Material c;
     c.specularMap = path;  // data again: shares b's linear texture
     scene.materials = {a, b, c, Material{}};
@@ -160,14 +160,14 @@ TEST_F(TextureCacheTest, AnisotropyIsSetOnLoadedAndLaterTextures)
         return value;
     };
     TextureCache cache;
-    const gl::MipmappedTexture2D& first = cache.get(writePng("a.png", 2, 2, std::vector<unsigned char>(12, 9)),
-                                                    TextureColourSpace::Linear);
+    const gl::MipmappedTexture2D& first =
+        cache.get(writePng("a.png", 2, 2, std::vector<unsigned char>(12, 9)), TextureColourSpace::Linear);
     EXPECT_EQ(anisotropyOf(first), gl::isSoftwareRenderer() ? 1.0f : std::min(maximum, float(kHardwareAnisotropy)));
     cache.setAnisotropy(4);
     EXPECT_EQ(cache.anisotropy(), 4.0f);
     EXPECT_EQ(anisotropyOf(first), 4.0f);
-    const gl::MipmappedTexture2D& second = cache.get(writePng("b.png", 2, 2, std::vector<unsigned char>(12, 9)),
-                                                     TextureColourSpace::Linear);
+    const gl::MipmappedTexture2D& second =
+        cache.get(writePng("b.png", 2, 2, std::vector<unsigned char>(12, 9)), TextureColourSpace::Linear);
     EXPECT_EQ(anisotropyOf(second), 4.0f);
     // Beyond the driver's maximum: its maximum.
     cache.setAnisotropy(kMaxRequestedAnisotropy);

@@ -226,18 +226,18 @@ float reachAt(const GpuLight& light, const glm::vec3& point)
     if (d >= radius || d == 0.0f)
         return 0.0f;
     const glm::vec4& k = light.attenuation;
-    const float a = k.w == 0.0f ? falloff::classicAttenuation(d, radius, k.x, k.y, k.z) : falloff::rangeAttenuation(d, k.x);
-    const float s =
-        falloff::spotFactor(glm::dot(v / d, glm::vec3(light.spotAxisCosCutoff)), light.spotAxisCosCutoff.w,
-                            light.intensityExponent.w);
+    const float a =
+        k.w == 0.0f ? falloff::classicAttenuation(d, radius, k.x, k.y, k.z) : falloff::rangeAttenuation(d, k.x);
+    const float s = falloff::spotFactor(glm::dot(v / d, glm::vec3(light.spotAxisCosCutoff)), light.spotAxisCosCutoff.w,
+                                        light.intensityExponent.w);
     return a * s;
 }
 
 struct BruteForceResult {
-    int dropped = 0;             // (tile, light) pairs seen lit but not listed
-    int listedAndSeenLit = 0;    // listed pairs the sampling saw lit
+    int dropped = 0;           // (tile, light) pairs seen lit but not listed
+    int listedAndSeenLit = 0;  // listed pairs the sampling saw lit
     std::size_t listedPairs = 0;
-    std::size_t allPairs = 0;    // lights × tiles
+    std::size_t allPairs = 0;  // lights × tiles
 };
 
 // Random lights of every kind around the eye of `view`; for every tile that does not list a
@@ -387,8 +387,8 @@ TEST(TileCulling, ManyLightsAtFullResolution)
     const auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(random); };
     std::vector<GpuLight> lights;
     for (int i = 0; i < 65536; ++i)
-        lights.push_back(pointLight({uniform(-20.0f, 20.0f), uniform(0.2f, 2.0f), uniform(-20.0f, 20.0f)},
-                                    uniform(0.2f, 0.5f)));
+        lights.push_back(
+            pointLight({uniform(-20.0f, 20.0f), uniform(0.2f, 2.0f), uniform(-20.0f, 20.0f)}, uniform(0.2f, 0.5f)));
     TileCuller culler;
     const auto start = std::chrono::steady_clock::now();
     const TileLightLists& lists = culler.cull(view, lights);

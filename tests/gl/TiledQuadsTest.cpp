@@ -99,9 +99,9 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
             const std::uint32_t count = lists.tiles[lists.tileIndex(tx, ty)].count;
             EXPECT_EQ(count, static_cast<std::uint32_t>(counts[ty][tx])) << "tile " << tx << ", " << ty;
             if (count > 0)
-                variants.insert(static_cast<std::size_t>(
-                    std::lower_bound(kTileLightBounds.begin(), kTileLightBounds.end(), count) -
-                    kTileLightBounds.begin()));
+                variants.insert(
+                    static_cast<std::size_t>(std::lower_bound(kTileLightBounds.begin(), kTileLightBounds.end(), count) -
+                                             kTileLightBounds.begin()));
         }
     EXPECT_EQ(variants.size(), kTileLightBounds.size());
 

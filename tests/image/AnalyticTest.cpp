@@ -62,12 +62,12 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
     const auto dir = directory.empty() ? scratchDirectory() : directory;
     writeFile(dir / "scene.json", sceneJson);
     const std::string technique = ::testing::TestWithParam<std::string>::GetParam();
-    const Image colour =
-        renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", size, "--technique", technique, "--gbuffer", "seed"});
-    const Image position =
-        renderPfm((dir / "scene.json").string(), dir / "position.pfm", {"--size", size, "--view", "position", "--gbuffer", "seed"});
-    const Image normal =
-        renderPfm((dir / "scene.json").string(), dir / "normal.pfm", {"--size", size, "--view", "normal", "--gbuffer", "seed"});
+    const Image colour = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
+                                   {"--size", size, "--technique", technique, "--gbuffer", "seed"});
+    const Image position = renderPfm((dir / "scene.json").string(), dir / "position.pfm",
+                                     {"--size", size, "--view", "position", "--gbuffer", "seed"});
+    const Image normal = renderPfm((dir / "scene.json").string(), dir / "normal.pfm",
+                                   {"--size", size, "--view", "normal", "--gbuffer", "seed"});
     int checked = 0;
     int failures = 0;
     for (int y = 0; y < colour.height; ++y)
@@ -85,8 +85,8 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
             for (int c = 0; c < 3; ++c) {
                 const double allowed = kAbsoluteTolerance + kRelativeTolerance * std::abs(want[c]);
                 if (std::abs(got[c] - want[c]) > allowed && ++failures <= 5)
-                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << " at (" << p[0] << ", "
-                                  << p[1] << ", " << p[2] << "): got " << got[c] << ", expected " << want[c];
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << " at (" << p[0] << ", " << p[1]
+                                  << ", " << p[2] << "): got " << got[c] << ", expected " << want[c];
             }
         }
     EXPECT_EQ(failures, 0);
@@ -277,7 +277,8 @@ TEST_P(Analytic, ConstantNormalMapTiltsTheShadingNormal)
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "ambient": [0.1, 0.1, 0.1],
         "directional": {"direction": [-1, -1, 1], "intensity": [1, 1, 1]},
-        "materials": {"bumped": {"diffuse": [0.8, 0.6, 0.4], "normal_map": ")" + texture + R"("}},
+        "materials": {"bumped": {"diffuse": [0.8, 0.6, 0.4], "normal_map": ")" +
+                              texture + R"("}},
         "objects": [{"mesh": {"primitive": "plane", "size": [40, 40]}, "material": "bumped"}]})";
     const glm::dvec3 expected = glm::dvec3(0.8, 0.6, 0.4) * (0.1 + NdotL);
     const auto dir = scratchDirectory();
@@ -326,9 +327,12 @@ void writeQuadGltf(const std::filesystem::path& path, const std::array<glm::vec3
     using Json = nlohmann::json;
     Json gltf = {{"asset", {{"version", "2.0"}}}};
     gltf["buffers"] = Json::array({{{"uri", path.filename().string() + ".bin"}, {"byteLength", bytes.size()}}});
-    const auto addView = [&](std::size_t offset, std::size_t length, std::size_t count, const char* type, int component) {
+    const auto addView = [&](std::size_t offset, std::size_t length, std::size_t count, const char* type,
+                             int component) {
         gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}});
-        Json accessor = {{"bufferView", gltf["bufferViews"].size() - 1}, {"componentType", component}, {"count", count},
+        Json accessor = {{"bufferView", gltf["bufferViews"].size() - 1},
+                         {"componentType", component},
+                         {"count", count},
                          {"type", type}};
         if (std::string(type) == "VEC3" && gltf["accessors"].empty()) {  // POSITION needs its bounds
             const glm::vec3 low = glm::min(glm::min(corners[0], corners[1]), glm::min(corners[2], corners[3]));
@@ -348,7 +352,8 @@ void writeQuadGltf(const std::filesystem::path& path, const std::array<glm::vec3
         offset += 64;
     }
     const std::size_t indexAccessor = addView(offset, sizeof indices, 6, "SCALAR", 5123);
-    gltf["meshes"] = Json::array({{{"primitives", {{{"attributes", attributes}, {"indices", indexAccessor}, {"material", 0}}}}}});
+    gltf["meshes"] =
+        Json::array({{{"primitives", {{{"attributes", attributes}, {"indices", indexAccessor}, {"material", 0}}}}}});
     gltf["materials"] = Json::array({material});
     for (std::size_t i = 0; i < images.size(); ++i) {
         gltf["images"].push_back({{"uri", images[i]}});
@@ -393,8 +398,9 @@ TEST_P(Analytic, AlphaMaskCutsTheSurfaceAndItsShadow)
     const auto dir = scratchDirectory();
     const std::array<glm::vec4, 4> colours = {glm::vec4(1, 1, 1, 1), glm::vec4(1, 1, 1, 0), glm::vec4(1, 1, 1, 0),
                                               glm::vec4(1, 1, 1, 1)};
-    writeQuadGltf(dir / "quad.gltf", {glm::vec3(-1, 1, 1), glm::vec3(1, 1, 1), glm::vec3(1, 1, -1), glm::vec3(-1, 1, -1)},
-                  {0, 1, 0}, colours,
+    writeQuadGltf(dir / "quad.gltf",
+                  {glm::vec3(-1, 1, 1), glm::vec3(1, 1, 1), glm::vec3(1, 1, -1), glm::vec3(-1, 1, -1)}, {0, 1, 0},
+                  colours,
                   {{"alphaMode", "MASK"},
                    {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 0.5, 0.25, 1.0}}, {"metallicFactor", 0.0}}}});
     const std::string scene = std::string("{") + kTopCamera + R"(,
@@ -402,7 +408,8 @@ TEST_P(Analytic, AlphaMaskCutsTheSurfaceAndItsShadow)
         "directional": {"direction": [1, -1, 0], "intensity": [1, 1, 1], "shadows": true},
         "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
         "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
-                    {"mesh": ")" + (dir / "quad.gltf").string() + R"("}]})";
+                    {"mesh": ")" +
+                              (dir / "quad.gltf").string() + R"("}]})";
     const glm::dvec3 eye(0, 10, 0);
     const glm::dvec3 toLight = glm::normalize(glm::dvec3(-1, 1, 0));
     const auto coverage = [](double x) { return (1.0 - x) / 2.0; };
@@ -459,11 +466,13 @@ TEST_P(Analytic, SingleSidedBackFacesAreCulledDoubleSidedOnesLitFromTheirSide)
     // - Right (x in [1, 3]), doubleSided: drawn and lit as a face with normal +Y:
     //   dielectricRoughColour with N·L = 1 (lit with its own −Y normal it would be ambient only).
     const auto dir = scratchDirectory();
-    const nlohmann::json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.8, 1.0}}, {"metallicFactor", 0.0}}}};
+    const nlohmann::json material = {
+        {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.8, 1.0}}, {"metallicFactor", 0.0}}}};
     nlohmann::json doubleSided = material;
     doubleSided["doubleSided"] = true;
     const auto corners = [](float x0, float x1) {
-        return std::array<glm::vec3, 4>{glm::vec3(x0, 1, -1), glm::vec3(x1, 1, -1), glm::vec3(x1, 1, 1), glm::vec3(x0, 1, 1)};
+        return std::array<glm::vec3, 4>{glm::vec3(x0, 1, -1), glm::vec3(x1, 1, -1), glm::vec3(x1, 1, 1),
+                                        glm::vec3(x0, 1, 1)};
     };
     writeQuadGltf(dir / "single.gltf", corners(-3, -1), {0, -1, 0}, std::nullopt, material);
     writeQuadGltf(dir / "double.gltf", corners(1, 3), {0, -1, 0}, std::nullopt, doubleSided);
@@ -472,8 +481,10 @@ TEST_P(Analytic, SingleSidedBackFacesAreCulledDoubleSidedOnesLitFromTheirSide)
         "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
         "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
         "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
-                    {"mesh": ")" + (dir / "single.gltf").string() + R"("},
-                    {"mesh": ")" + (dir / "double.gltf").string() + R"("}]})";
+                    {"mesh": ")" +
+                              (dir / "single.gltf").string() + R"("},
+                    {"mesh": ")" +
+                              (dir / "double.gltf").string() + R"("}]})";
     const glm::dvec3 eye(0, 10, 0);
     int planeUnderSingle = 0, doubleSidedQuad = 0;
     const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
@@ -514,7 +525,8 @@ TEST_P(Analytic, VertexColoursAndMetallicRoughnessMapShadePerTexel)
     }
     ASSERT_NE(stbi_write_png((dir / "mr.png").string().c_str(), 16, 16, 4, map.data(), 16 * 4), 0);
     const glm::vec4 c(0.5f, 1.0f, 0.25f, 1.0f);
-    writeQuadGltf(dir / "quad.gltf", {glm::vec3(-20, 0, 20), glm::vec3(20, 0, 20), glm::vec3(20, 0, -20), glm::vec3(-20, 0, -20)},
+    writeQuadGltf(dir / "quad.gltf",
+                  {glm::vec3(-20, 0, 20), glm::vec3(20, 0, 20), glm::vec3(20, 0, -20), glm::vec3(-20, 0, -20)},
                   {0, 1, 0}, std::array<glm::vec4, 4>{c, c, c, c},
                   {{"pbrMetallicRoughness",
                     {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
@@ -524,7 +536,8 @@ TEST_P(Analytic, VertexColoursAndMetallicRoughnessMapShadePerTexel)
                   {"mr.png"});
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "lights": [{"type": "point", "pos": [0.5, 2, -0.5], "intensity": [1, 1, 1], "range": 10}],
-        "objects": [{"mesh": ")" + (dir / "quad.gltf").string() + R"("}]})";
+        "objects": [{"mesh": ")" +
+                              (dir / "quad.gltf").string() + R"("}]})";
     const double metallic = 102.0 / 255.0;
     const double roughness = 128.0 / 255.0;
     const glm::dvec3 base = 0.8 * glm::dvec3(0.5, 1.0, 0.25);
@@ -556,7 +569,8 @@ TEST_P(Analytic, TextureTransformMovesTurnsAndScalesTheUvs)
     const int size = 64;
     std::vector<unsigned char> texels(size * size * 4, 255);
     const auto quadrantColour = [](bool left, bool top) {
-        return top ? (left ? glm::dvec3(1, 1, 1) : glm::dvec3(0, 0, 1)) : (left ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+        return top ? (left ? glm::dvec3(1, 1, 1) : glm::dvec3(0, 0, 1))
+                   : (left ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
     };
     for (int row = 0; row < size; ++row)
         for (int column = 0; column < size; ++column) {
@@ -568,19 +582,21 @@ TEST_P(Analytic, TextureTransformMovesTurnsAndScalesTheUvs)
     const double rotation = 0.5;
     const glm::dvec2 offset(0.25, 0.5);
     const glm::dvec2 scale(1.5, 0.75);
-    writeQuadGltf(dir / "quad.gltf", {glm::vec3(-2, 0, 2), glm::vec3(2, 0, 2), glm::vec3(2, 0, -2), glm::vec3(-2, 0, -2)},
-                  {0, 1, 0}, std::nullopt,
-                  {{"pbrMetallicRoughness",
-                    {{"metallicFactor", 0.0},
-                     {"baseColorTexture",
-                      {{"index", 0},
-                       {"extensions",
-                        {{"KHR_texture_transform",
-                          {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}}}}}}}}}},
-                  {"quadrants.png"});
+    writeQuadGltf(
+        dir / "quad.gltf", {glm::vec3(-2, 0, 2), glm::vec3(2, 0, 2), glm::vec3(2, 0, -2), glm::vec3(-2, 0, -2)},
+        {0, 1, 0}, std::nullopt,
+        {{"pbrMetallicRoughness",
+          {{"metallicFactor", 0.0},
+           {"baseColorTexture",
+            {{"index", 0},
+             {"extensions",
+              {{"KHR_texture_transform",
+                {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}}}}}}}}}},
+        {"quadrants.png"});
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "ambient": [1, 1, 1],
-        "objects": [{"mesh": ")" + (dir / "quad.gltf").string() + R"("}]})";
+        "objects": [{"mesh": ")" +
+                              (dir / "quad.gltf").string() + R"("}]})";
     int checked = 0;
     const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
         // The quad's glTF uv: u from x = −2 to 2, v from z = −2 (v = 0, the image's top) to 2.
@@ -590,9 +606,7 @@ TEST_P(Analytic, TextureTransformMovesTurnsAndScalesTheUvs)
                                 -std::sin(rotation) * scaled.x + std::cos(rotation) * scaled.y);
         const glm::dvec2 read = turned + offset;
         const glm::dvec2 wrapped = read - glm::floor(read);
-        const auto nearEdge = [](double t) {
-            return std::abs(t - 0.5) < 0.1 || t < 0.1 || t > 0.9;
-        };
+        const auto nearEdge = [](double t) { return std::abs(t - 0.5) < 0.1 || t < 0.1 || t > 0.9; };
         if (nearEdge(wrapped.x) || nearEdge(wrapped.y) || std::abs(std::abs(p.x) - 2.0) < 0.05 ||
             std::abs(std::abs(p.z) - 2.0) < 0.05)
             return std::nullopt;
@@ -613,8 +627,8 @@ glm::dvec3 over(const glm::dvec3& front, double opacity, const glm::dvec3& behin
 
 // Whether the eye ray to plane point p (y = 0) crosses y = height inside |x - cx| < hx,
 // |z| < hz; nullopt within 1e-3 of the rectangle's edge.
-std::optional<bool> rayCrossesRectangle(const glm::dvec3& eye, const glm::dvec3& p, double height, double cx,
-                                        double hx, double hz)
+std::optional<bool> rayCrossesRectangle(const glm::dvec3& eye, const glm::dvec3& p, double height, double cx, double hx,
+                                        double hz)
 {
     const glm::dvec3 q = eye + (p - eye) * ((eye.y - height) / (eye.y - p.y));
     if (std::abs(std::abs(q.x - cx) - hx) < 1e-3 || std::abs(std::abs(q.z) - hz) < 1e-3)
@@ -669,7 +683,8 @@ TEST_P(Analytic, OverlappingPanesInEitherOrderGiveTheBackToFrontResult)
             "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
                           "red glass": {"diffuse": [1, 0.2, 0.2], "opacity": 0.5},
                           "blue glass": {"diffuse": [0.2, 0.2, 1], "opacity": 0.25}},
-            "objects": [)" + first + ", " + second + R"(,
+            "objects": [)" +
+               first + ", " + second + R"(,
                         {"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"}]})";
     };
     const glm::dvec3 eye(0, 10, 0);
@@ -733,8 +748,8 @@ TEST_P(Analytic, TransparentSurfacesNearerAndFartherThanEveryOpaqueOneGetTheirLi
     const auto column = [&](double x, double depth) {
         return static_cast<int>(std::floor((0.5 + 0.5 * x / (depth * tanHalf * aspect)) * width));
     };
-    for (const auto& [x, depth, kd] : {std::tuple{-2.0, 4.0, glm::dvec3(1, 0.5, 0.25)},
-                                       std::tuple{2.0, 30.0, glm::dvec3(0.25, 0.5, 1)}}) {
+    for (const auto& [x, depth, kd] :
+         {std::tuple{-2.0, 4.0, glm::dvec3(1, 0.5, 0.25)}, std::tuple{2.0, 30.0, glm::dvec3(0.25, 0.5, 1)}}) {
         // The point the pixel's centre sees on the quad (the centre row looks straight ahead),
         // lit by the light 0.5 in front of the quad's centre.
         const int px = column(x, depth);

@@ -69,9 +69,8 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
     const auto csv = dir / "bench.csv";
     const auto svg = dir / "bench.svg";
     const test::ProcessResult result =
-        runExecutable({"bench", "--techniques", "forward,deferred", "--lights", "16,64", "--size", "64x36",
-                       "--frames", "1", "--warmup", "0", "--count-work", "--csv", csv.string(), "--plot",
-                       svg.string()});
+        runExecutable({"bench", "--techniques", "forward,deferred", "--lights", "16,64", "--size", "64x36", "--frames",
+                       "1", "--warmup", "0", "--count-work", "--csv", csv.string(), "--plot", svg.string()});
     ASSERT_EQ(result.exitCode, 0) << result.stderrText;
     // Not a terminal: one progress line per combination.
     EXPECT_NE(result.stderrText.find("[4/4] deferred 64 lights 64x36: "), std::string::npos) << result.stderrText;
@@ -82,9 +81,19 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
     const std::vector<std::string> rows = lines(csvText);
     ASSERT_EQ(rows.size(), 5u) << csvText;  // the header and one row per combination
     const std::vector<std::string> header = split(rows[0], ',');
-    const std::vector<std::string> expectedHeader = {
-        "technique", "lights", "width", "height", "frames", "frame_ms_median", "frame_ms_min", "frame_ms_max",
-        "frame_gpu_ms_median", "fragment_invocations", "passes", "light_evaluations", "in_range_pairs"};
+    const std::vector<std::string> expectedHeader = {"technique",
+                                                     "lights",
+                                                     "width",
+                                                     "height",
+                                                     "frames",
+                                                     "frame_ms_median",
+                                                     "frame_ms_min",
+                                                     "frame_ms_max",
+                                                     "frame_gpu_ms_median",
+                                                     "fragment_invocations",
+                                                     "passes",
+                                                     "light_evaluations",
+                                                     "in_range_pairs"};
     ASSERT_EQ(header, expectedHeader);
     const auto column = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
@@ -147,8 +156,17 @@ TEST_P(BenchUsage, ExitsTwoAndWritesNothing)
 {
     const UsageCase& c = GetParam();
     const auto dir = scratchDirectory();
-    std::vector<std::string> args = {"bench", "--size", "16x16", "--frames", "1", "--warmup", "0",
-                                     "--csv", (dir / "out.csv").string(), "--plot", (dir / "out.svg").string()};
+    std::vector<std::string> args = {"bench",
+                                     "--size",
+                                     "16x16",
+                                     "--frames",
+                                     "1",
+                                     "--warmup",
+                                     "0",
+                                     "--csv",
+                                     (dir / "out.csv").string(),
+                                     "--plot",
+                                     (dir / "out.svg").string()};
     args.insert(args.end(), c.args.begin(), c.args.end());
     const test::ProcessResult result = runExecutable(args);
     EXPECT_EQ(result.exitCode, 2) << result.stderrText;
@@ -180,9 +198,8 @@ TEST(Bench, BadSceneIsOneLineExitOne)
     test::writeFile(scene, "{\"ambient\": [0, 0\n");
     const auto out = dir / "out";
     std::filesystem::create_directory(out);
-    const test::ProcessResult result = runExecutable(
-        {"bench", scene.string(), "--size", "16x16", "--csv", (out / "b.csv").string(), "--plot",
-         (out / "b.svg").string()});
+    const test::ProcessResult result = runExecutable({"bench", scene.string(), "--size", "16x16", "--csv",
+                                                      (out / "b.csv").string(), "--plot", (out / "b.svg").string()});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("scene.json:"), std::string::npos) << result.stderrText;
@@ -248,7 +265,8 @@ TEST(SvgPlot, OnePanelPerSizeOneLinePerSeries)
         PlotPanel panel;
         panel.title = title;
         for (std::size_t s = 0; s < 3; ++s)
-            panel.series.push_back({"series" + std::to_string(s), paletteColour(s),
+            panel.series.push_back({"series" + std::to_string(s),
+                                    paletteColour(s),
                                     {{256, 10.0 + static_cast<double>(s), 9.0, 12.0, "note"},
                                      {4096, 100.0, 100.0, 100.0, ""},
                                      {0, 5.0, 5.0, 5.0, ""}}});  // x = 0 is left out

@@ -16,10 +16,7 @@ using test::runExecutable;
 using test::scratchDirectory;
 using test::writeFile;
 
-int lineCount(const std::string& text)
-{
-    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 struct FailureCase {
     std::string name;
@@ -50,7 +47,8 @@ TEST_P(CliFailure, OneLineAndNothingWritten)
         EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
     }
     for (const std::string& part : c.messageParts)
-        EXPECT_NE(result.stderrText.find(part), std::string::npos) << "missing '" << part << "' in: " << result.stderrText;
+        EXPECT_NE(result.stderrText.find(part), std::string::npos)
+            << "missing '" << part << "' in: " << result.stderrText;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
     // No temporary left behind either.
     for (const auto& entry : std::filesystem::directory_iterator(dir))
@@ -62,26 +60,44 @@ const char* kPlane = R"("objects": [{"mesh": {"primitive": "plane", "size": [2, 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliFailure,
     ::testing::Values(
-        FailureCase{"syntax_error", "{\n  \"ambient\": [0, 0, 0],\n  \"background\": [0, 0 0]\n}", {}, 1,
+        FailureCase{"syntax_error",
+                    "{\n  \"ambient\": [0, 0, 0],\n  \"background\": [0, 0 0]\n}",
+                    {},
+                    1,
                     {"scene.json:3:", "syntax error"}},
         FailureCase{"truncated_file", "{\"ambient\": [0, 0", {}, 1, {"scene.json:1:"}},
-        FailureCase{"unknown_key", std::string("{\"ambiant\": [0, 0, 0], ") + kPlane + "}", {}, 1,
+        FailureCase{"unknown_key",
+                    std::string("{\"ambiant\": [0, 0, 0], ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "ambiant", "did you mean 'ambient'"}},
-        FailureCase{"wrong_type", std::string("{\"ambient\": \"dark\", ") + kPlane + "}", {}, 1,
-                    {"scene.json", "/ambient"}},
+        FailureCase{
+            "wrong_type", std::string("{\"ambient\": \"dark\", ") + kPlane + "}", {}, 1, {"scene.json", "/ambient"}},
         FailureCase{"negative_range",
                     std::string("{\"lights\": [{\"type\": \"point\", \"pos\": [0, 1, 0], \"intensity\": [1, 1, 1], "
-                                "\"range\": -2}], ") + kPlane + "}",
-                    {}, 1, {"scene.json", "/lights/0/range"}},
+                                "\"range\": -2}], ") +
+                        kPlane + "}",
+                    {},
+                    1,
+                    {"scene.json", "/lights/0/range"}},
         FailureCase{"cutoff_out_of_range",
                     std::string("{\"lights\": [{\"type\": \"spot\", \"pos\": [0, 1, 0], \"direction\": [0, -1, 0], "
-                                "\"cutoff\": 190, \"intensity\": [1, 1, 1], \"range\": 2}], ") + kPlane + "}",
-                    {}, 1, {"scene.json", "/lights/0/cutoff"}},
-        FailureCase{"missing_mesh", "{\"objects\": [{\"mesh\": \"models/none.obj\"}]}", {}, 1,
-                    {"none.obj", "/objects/0/mesh"}},
-        FailureCase{"lights_without_sets", std::string("{") + kPlane + "}", {"--lights", "100"}, 1,
+                                "\"cutoff\": 190, \"intensity\": [1, 1, 1], \"range\": 2}], ") +
+                        kPlane + "}",
+                    {},
+                    1,
+                    {"scene.json", "/lights/0/cutoff"}},
+        FailureCase{
+            "missing_mesh", "{\"objects\": [{\"mesh\": \"models/none.obj\"}]}", {}, 1, {"none.obj", "/objects/0/mesh"}},
+        FailureCase{"lights_without_sets",
+                    std::string("{") + kPlane + "}",
+                    {"--lights", "100"},
+                    1,
                     {"scene.json", "light_sets"}},
-        FailureCase{"size_beyond_gl_limit", std::string("{") + kPlane + "}", {"--size", "30000x16"}, 1,
+        FailureCase{"size_beyond_gl_limit",
+                    std::string("{") + kPlane + "}",
+                    {"--size", "30000x16"},
+                    1,
                     {"30000x16", "supports"}},
         FailureCase{"unknown_technique", "", {"--technique", "raytraced"}, 2, {"raytraced"}},
         FailureCase{"unknown_view", "", {"--view", "albedo"}, 2, {"albedo"}},
@@ -94,7 +110,10 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"shadow_lights_not_a_number", "", {"--shadow-lights", "all"}, 2, {"--shadow-lights"}},
         FailureCase{"anisotropy_not_a_level", "", {"--anisotropy", "3"}, 2, {"--anisotropy", "auto"}},
         FailureCase{"anisotropy_not_a_number", "", {"--anisotropy", "nan"}, 2, {"--anisotropy"}},
-        FailureCase{"ssao_radius_zero", std::string("{\"ssao\": {\"radius\": 0}, ") + kPlane + "}", {}, 1,
+        FailureCase{"ssao_radius_zero",
+                    std::string("{\"ssao\": {\"radius\": 0}, ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "/ssao/radius"}},
         FailureCase{"exposure_nan", "", {"--exposure", "nan"}, 2, {"--exposure"}},
         FailureCase{"exposure_beyond_range", "", {"--exposure", "40"}, 2, {"--exposure"}},
@@ -102,20 +121,31 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"unknown_antialiasing", "", {"--aa", "msaa"}, 2, {"--aa", "msaa"}},
         FailureCase{"srgb_and_no_srgb", "", {"--srgb", "--no-srgb"}, 2, {"--srgb", "--no-srgb"}},
         FailureCase{"supersample_beyond_range", "", {"--supersample", "9"}, 2, {"--supersample"}},
-        FailureCase{"supersample_of_a_gbuffer_view", "", {"--supersample", "2", "--view", "normal"}, 2,
+        FailureCase{"supersample_of_a_gbuffer_view",
+                    "",
+                    {"--supersample", "2", "--view", "normal"},
+                    2,
                     {"--supersample", "normal"}},
         FailureCase{"aovs_into_png", "", {"--aovs"}, 2, {"--aovs", ".exr"}},
         FailureCase{"scene_tone_curve_misspelt",
-                    std::string("{\"display\": {\"tonemap\": \"acs\"}, ") + kPlane + "}", {}, 1,
+                    std::string("{\"display\": {\"tonemap\": \"acs\"}, ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "/display/tonemap", "did you mean 'aces'"}},
         FailureCase{"scene_exposure_beyond_range",
-                    std::string("{\"display\": {\"exposure\": 64}, ") + kPlane + "}", {}, 1,
+                    std::string("{\"display\": {\"exposure\": 64}, ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "/display/exposure"}},
         FailureCase{"scene_srgb_not_a_boolean",
-                    std::string("{\"display\": {\"srgb\": \"yes\"}, ") + kPlane + "}", {}, 1,
+                    std::string("{\"display\": {\"srgb\": \"yes\"}, ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "/display/srgb"}},
         FailureCase{"scene_display_unknown_key",
-                    std::string("{\"display\": {\"gamma\": 2.2}, ") + kPlane + "}", {}, 1,
+                    std::string("{\"display\": {\"gamma\": 2.2}, ") + kPlane + "}",
+                    {},
+                    1,
                     {"scene.json", "gamma"}}),
     [](const ::testing::TestParamInfo<FailureCase>& param) { return param.param.name; });
 
@@ -153,8 +183,9 @@ TEST(Cli, NoOpenGLContextIsExitOneWithTheReason)
     // Mesa cannot load a driver named "nonexistent", so every EGL platform fails to
     // initialise. (Mesa itself warns on stderr too, so only our line is looked for.)
     const auto dir = scratchDirectory();
-    const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "32x18"},
-                                                     "GALLIUM_DRIVER=nonexistent MESA_LOADER_DRIVER_OVERRIDE=nonexistent");
+    const test::ProcessResult result =
+        runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "32x18"},
+                      "GALLIUM_DRIVER=nonexistent MESA_LOADER_DRIVER_OVERRIDE=nonexistent");
     if (result.exitCode == 0)
         GTEST_SKIP() << "this GL driver ignores Mesa's driver override";
     EXPECT_EQ(result.exitCode, 1);
@@ -205,9 +236,8 @@ TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
 TEST(Cli, AnisotropyLevelReachesTheTexturesAndTheStats)
 {
     const auto dir = scratchDirectory();
-    const test::ProcessResult result =
-        runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "64x36", "--anisotropy", "4",
-                       "--stats", (dir / "stats.json").string()});
+    const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "64x36",
+                                                      "--anisotropy", "4", "--stats", (dir / "stats.json").string()});
     ASSERT_EQ(result.exitCode, 0) << result.stderrText;
     std::ifstream in(dir / "stats.json");
     const nlohmann::json stats = nlohmann::json::parse(in);

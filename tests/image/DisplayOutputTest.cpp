@@ -71,9 +71,9 @@ TEST(DisplayOutput, AcesPngIsTheFormulaOfThePfm)
 {
     const auto dir = scratchDirectory();
     runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
-    runCliOrFail(with({"render", kScene, "-o", (dir / "aces.png").string(), "--tonemap", "aces", "--srgb",
-                       "--exposure", "-1"},
-                      kSmall));
+    runCliOrFail(
+        with({"render", kScene, "-o", (dir / "aces.png").string(), "--tonemap", "aces", "--srgb", "--exposure", "-1"},
+             kSmall));
     const std::vector<unsigned char> plain = readPng(dir / "plain.png");
     const std::vector<unsigned char> aces = readPng(dir / "aces.png");
     const Image linear = renderPfm(kScene, dir / "linear.pfm", kSmall);
@@ -103,9 +103,9 @@ TEST(DisplayOutput, SceneDisplayBlockAndCommandLineOverride)
                       kSmall));
     EXPECT_EQ(readPng(dir / "from-scene.png"), readPng(dir / "from-flags.png"));
     // The command line wins over the scene: back to the plain look.
-    runCliOrFail(with({"render", path, "-o", (dir / "overridden.png").string(), "--tonemap", "none", "--no-srgb",
-                       "--exposure", "0"},
-                      kSmall));
+    runCliOrFail(with(
+        {"render", path, "-o", (dir / "overridden.png").string(), "--tonemap", "none", "--no-srgb", "--exposure", "0"},
+        kSmall));
     runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
     EXPECT_EQ(readPng(dir / "overridden.png"), readPng(dir / "plain.png"));
 }
@@ -122,8 +122,8 @@ TEST_P(DisplayedTechnique, MatchesForwardThroughTheDisplayPath)
     const std::vector<std::string> display{"--tonemap", "agx", "--srgb", "--gbuffer", "seed"};
     runCliOrFail(with(with({"render", kScene, "-o", (dir / "forward.png").string(), "--technique", "forward"}, kSmall),
                       display));
-    runCliOrFail(with(with({"render", kScene, "-o", (dir / "technique.png").string(), "--technique", GetParam()}, kSmall),
-                      display));
+    runCliOrFail(with(
+        with({"render", kScene, "-o", (dir / "technique.png").string(), "--technique", GetParam()}, kSmall), display));
     const std::vector<unsigned char> forward = readPng(dir / "forward.png");
     const std::vector<unsigned char> technique = readPng(dir / "technique.png");
     ASSERT_EQ(forward.size(), technique.size());
@@ -144,7 +144,8 @@ TEST(DisplayOutput, SupersampledPfmIsTheBoxFilteredLargerFrame)
     ASSERT_EQ(supersampled.width, 96);
     ASSERT_EQ(supersampled.rgb, expected.rgb);
     // And the PNG of it goes through the GPU's box filter: the same values within rounding.
-    runCliOrFail({"render", kScene, "-o", (dir / "supersampled.png").string(), "--size", "96x64", "--supersample", "2"});
+    runCliOrFail(
+        {"render", kScene, "-o", (dir / "supersampled.png").string(), "--size", "96x64", "--supersample", "2"});
     const std::vector<unsigned char> png = readPng(dir / "supersampled.png");
     ASSERT_EQ(png.size(), expected.rgb.size());
     for (std::size_t i = 0; i < png.size(); ++i)
@@ -158,10 +159,15 @@ TEST(DisplayOutput, ExrFloatHoldsThePfmAndEveryAovEqualsItsView)
     runCliOrFail(with({"render", scene, "-o", (dir / "frame.exr").string(), "--exr-float", "--aovs"}, kSmall));
     const Image colour = readExrLayer(dir / "frame.exr", "", {"R", "G", "B"});
     EXPECT_EQ(colour.rgb, renderPfm(scene, dir / "final.pfm", kSmall).rgb);
-    const std::vector<std::pair<std::string, std::vector<std::string>>> aovs{
-        {"position", {"X", "Y", "Z"}}, {"normal", {"X", "Y", "Z"}},   {"diffuse", {"R", "G", "B"}},
-        {"specular", {"R", "G", "B"}}, {"emissive", {"R", "G", "B"}}, {"depth", {"Z"}},
-        {"light-count", {"Y"}},        {"shadow", {"Y"}},             {"ssao", {"Y"}}};
+    const std::vector<std::pair<std::string, std::vector<std::string>>> aovs{{"position", {"X", "Y", "Z"}},
+                                                                             {"normal", {"X", "Y", "Z"}},
+                                                                             {"diffuse", {"R", "G", "B"}},
+                                                                             {"specular", {"R", "G", "B"}},
+                                                                             {"emissive", {"R", "G", "B"}},
+                                                                             {"depth", {"Z"}},
+                                                                             {"light-count", {"Y"}},
+                                                                             {"shadow", {"Y"}},
+                                                                             {"ssao", {"Y"}}};
     const std::vector<std::string> names = exrChannelNames(dir / "frame.exr");
     EXPECT_EQ(names.size(), 3u + 3 * 5 + 4);
     for (const auto& [view, channels] : aovs) {
@@ -195,7 +201,8 @@ TEST(DisplayOutput, ExrOpensInExrheader)
         GTEST_SKIP() << "exrheader (Debian package openexr) is not installed";
     const auto dir = scratchDirectory();
     runCliOrFail(with({"render", kScene, "-o", (dir / "frame.exr").string(), "--aovs"}, kSmall));
-    const std::string command = "exrheader '" + (dir / "frame.exr").string() + "' > '" + (dir / "header.txt").string() + "'";
+    const std::string command =
+        "exrheader '" + (dir / "frame.exr").string() + "' > '" + (dir / "header.txt").string() + "'";
     ASSERT_EQ(std::system(command.c_str()), 0);
     std::ifstream in(dir / "header.txt");
     const std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -56,7 +56,8 @@ TEST_P(Golden, MatchesStoredImage)
     std::vector<std::string> args = {"render", "-o", actualPath.string()};
     args.insert(args.end(), c.args.begin(), c.args.end());
     runCliOrFail(args);
-    const std::filesystem::path goldenPath = std::filesystem::path(MANYLIGHTS_SOURCE_DIR) / "tests/golden" / (c.name + ".png");
+    const std::filesystem::path goldenPath =
+        std::filesystem::path(MANYLIGHTS_SOURCE_DIR) / "tests/golden" / (c.name + ".png");
     if (std::getenv("MANYLIGHTS_UPDATE_GOLDENS")) {
         std::filesystem::copy_file(actualPath, goldenPath, std::filesystem::copy_options::overwrite_existing);
         GTEST_SKIP() << "updated " << goldenPath;

@@ -29,16 +29,10 @@ std::string readBytes(const std::filesystem::path& path)
     return bytes.str();
 }
 
-int lineCount(const std::string& text)
-{
-    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 // The first line of stderr (CLI11 adds "Run with --help" after a usage error).
-std::string firstLine(const std::string& text)
-{
-    return text.substr(0, text.find('\n'));
-}
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 // A PNG already there, to check that a failure leaves it alone.
 std::string renderOld(const std::filesystem::path& path)
@@ -72,9 +66,8 @@ TEST(Hardening, OutputsAreAllOrNothing)
     std::filesystem::create_directory(dir / "a-directory");
     for (const std::filesystem::path& stats :
          {std::filesystem::path("/proc/manylights-stats.json"), dir / "missing" / "s.json", dir / "a-directory"}) {
-        const test::ProcessResult result =
-            runExecutable({"render", "-o", (dir / "out.png").string(), "--stats", stats.string(), "--size", "32x18"},
-                          kBounded);
+        const test::ProcessResult result = runExecutable(
+            {"render", "-o", (dir / "out.png").string(), "--stats", stats.string(), "--size", "32x18"}, kBounded);
         EXPECT_EQ(result.exitCode, 1) << stats << ": " << result.stderrText;
         EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
         EXPECT_NE(result.stderrText.find("cannot write statistics"), std::string::npos) << result.stderrText;
@@ -91,8 +84,8 @@ TEST(Hardening, StatsAndImageMayNotBeOneFile)
     EXPECT_EQ(result.exitCode, 2) << result.stderrText;
     EXPECT_NE(result.stderrText.find("name the same file"), std::string::npos) << result.stderrText;
     EXPECT_FALSE(std::filesystem::exists(out));
-    const test::ProcessResult bench = runExecutable(
-        {"bench", "--csv", (dir / "x.svg").string(), "--plot", (dir / "x.svg").string()}, kBounded);
+    const test::ProcessResult bench =
+        runExecutable({"bench", "--csv", (dir / "x.svg").string(), "--plot", (dir / "x.svg").string()}, kBounded);
     EXPECT_EQ(bench.exitCode, 2) << bench.stderrText;
 }
 
@@ -243,9 +236,9 @@ TEST(Hardening, CommandLineConventions)
 {
     const auto dir = scratchDirectory();
     // A recording's folder is made, as other tools make theirs.
-    const test::ProcessResult recorded = runExecutable(
-        {"render", "-o", (dir / "frames" / "f%02d.png").string(), "--size", "16x9", "--time-range", "0:0.1", "--fps", "20"},
-        kBounded);
+    const test::ProcessResult recorded = runExecutable({"render", "-o", (dir / "frames" / "f%02d.png").string(),
+                                                        "--size", "16x9", "--time-range", "0:0.1", "--fps", "20"},
+                                                       kBounded);
     EXPECT_EQ(recorded.exitCode, 0) << recorded.stderrText;
     EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "f01.png"));
     // Not a terminal: the progress is plain lines, without carriage returns.

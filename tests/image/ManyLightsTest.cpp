@@ -12,11 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "tests/support/ImageComparison.h"
 #include "render/LightBatches.h"
 #include "render/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -76,8 +76,8 @@ nlohmann::json countWork(const std::filesystem::path& dir, const std::string& sc
                          const std::vector<std::string>& options)
 {
     const std::filesystem::path stats = dir / "stats.json";
-    std::vector<std::string> args = {"render", scene, "-o", (dir / "out.png").string(), "--count-work", "--stats",
-                                     stats.string()};
+    std::vector<std::string> args = {"render",       scene,     "-o",          (dir / "out.png").string(),
+                                     "--count-work", "--stats", stats.string()};
     args.insert(args.end(), options.begin(), options.end());
     test::runCliOrFail(args);
     std::ifstream in(stats);
@@ -93,8 +93,7 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
     const auto dir = scratchDirectory();
     const std::string& technique = GetParam();
     for (const std::string scene : {"big_light.json", "spots_and_points.json"}) {
-        const nlohmann::json stats = countWork(dir, kScenes + scene,
-                                               {"--size", "1280x720", "--technique", technique});
+        const nlohmann::json stats = countWork(dir, kScenes + scene, {"--size", "1280x720", "--technique", technique});
         const auto inRange = stats["in_range_pairs"].get<std::uint64_t>();
         EXPECT_GT(inRange, 300000u) << scene;
         EXPECT_GE(stats["light_evaluations"].get<std::uint64_t>(), inRange) << technique << " on " << scene;

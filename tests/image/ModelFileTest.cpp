@@ -35,7 +35,8 @@ TEST(ModelFile, ObjMaterialsReachTheImage)
     writeFile(dir / "scene.json", R"({
         "camera": { "eye": [2, 0.5, 6], "look_at": [2, 0.5, 0], "fov_y": 30 },
         "ambient": [1, 1, 1],
-        "objects": [ { "mesh": ")" + (kModels / "two-materials.obj").string() + R"(" } ] })");
+        "objects": [ { "mesh": ")" + (kModels / "two-materials.obj").string() +
+                                      R"(" } ] })");
     const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--size", "64x32"});
     // The half-width at the quads is 6 · tan 15° · 2 = 3.215, so x maps to column
     // 32 + 32 · (x − 2) / 3.215. Quad centres at x = 0.5 (no material: the scene's default
@@ -100,23 +101,27 @@ TEST_P(BrokenModelCli, ExitOneOneLineNothingWritten)
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
     EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
     for (const std::string& part : c.parts)
-        EXPECT_NE(result.stderrText.find(part), std::string::npos) << "missing '" << part << "' in: " << result.stderrText;
+        EXPECT_NE(result.stderrText.find(part), std::string::npos)
+            << "missing '" << part << "' in: " << result.stderrText;
     EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BrokenModelCli,
-    ::testing::Values(
-        BrokenModel{"obj_nan_position", "nan.obj", {"nan.obj: line 2:", "non-finite"}},
-        BrokenModel{"glb_truncated", "truncated.glb", {"truncated.glb: "}},
-        BrokenModel{"gltf_index_out_of_range", (kAssimpGltf / "IndexOutOfRange/IndexOutOfRange.gltf").string(),
-                    {"IndexOutOfRange.gltf: meshes[0].primitives[0].indices: index"}},
-        BrokenModel{"gltf_missing_bin", (kAssimpGltf / "MissingBin/BoxTextured.gltf").string(),
-                    {"MissingBin/BoxTextured.gltf: ", "BoxTextured0.bin"}},
-        BrokenModel{"glb_infinite_positions", (kAssimpGltf / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb").string(),
-                    {"BoxWithInfinites.glb: ", "non-finite"}},
-        BrokenModel{"gltf_recursive_nodes", (kAssimpGltf / "RecursiveNodes/RecursiveNodes.gltf").string(),
-                    {"RecursiveNodes.gltf: ", "cycle"}}),
+    ::testing::Values(BrokenModel{"obj_nan_position", "nan.obj", {"nan.obj: line 2:", "non-finite"}},
+                      BrokenModel{"glb_truncated", "truncated.glb", {"truncated.glb: "}},
+                      BrokenModel{"gltf_index_out_of_range",
+                                  (kAssimpGltf / "IndexOutOfRange/IndexOutOfRange.gltf").string(),
+                                  {"IndexOutOfRange.gltf: meshes[0].primitives[0].indices: index"}},
+                      BrokenModel{"gltf_missing_bin",
+                                  (kAssimpGltf / "MissingBin/BoxTextured.gltf").string(),
+                                  {"MissingBin/BoxTextured.gltf: ", "BoxTextured0.bin"}},
+                      BrokenModel{"glb_infinite_positions",
+                                  (kAssimpGltf / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb").string(),
+                                  {"BoxWithInfinites.glb: ", "non-finite"}},
+                      BrokenModel{"gltf_recursive_nodes",
+                                  (kAssimpGltf / "RecursiveNodes/RecursiveNodes.gltf").string(),
+                                  {"RecursiveNodes.gltf: ", "cycle"}}),
     [](const ::testing::TestParamInfo<BrokenModel>& param) { return param.param.name; });
 
 // A texture the material library names but that is not there: the model draws with the
@@ -131,7 +136,8 @@ TEST(ModelFiles, MissingTextureIsAWarningAndStrictMakesItAnError)
         runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string(), "--size", "16x16"});
     EXPECT_EQ(forgiven.exitCode, 0) << forgiven.stderrText;
     EXPECT_EQ(std::count(forgiven.stderrText.begin(), forgiven.stderrText.end(), '\n'), 1) << forgiven.stderrText;
-    for (const char* part : {"manylights: warning: ", "scene.json: /objects/0/mesh: ", "bad.mtl: material 'm': map_Kd 'missing.png' not found"})
+    for (const char* part : {"manylights: warning: ", "scene.json: /objects/0/mesh: ",
+                             "bad.mtl: material 'm': map_Kd 'missing.png' not found"})
         EXPECT_NE(forgiven.stderrText.find(part), std::string::npos) << part << " in: " << forgiven.stderrText;
     EXPECT_TRUE(fs::exists(dir / "out.png"));
     const test::ProcessResult strict = runExecutable(
@@ -164,17 +170,17 @@ TEST(ModelFiles, AssimpObjFolderRendersAsOtherToolsOpenIt)
             continue;
         const std::string name = entry.path().filename().string();
         writeFile(dir / "scene.json", R"({"objects": [{"mesh": ")" + entry.path().string() + R"("}]})");
-        const test::ProcessResult result = runExecutable({"render", (dir / "scene.json").string(), "-o",
-                                                          (dir / "out.png").string(), "--size", "64x48", "--stats",
-                                                          (dir / "stats.json").string()});
+        const test::ProcessResult result =
+            runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string(), "--size", "64x48",
+                           "--stats", (dir / "stats.json").string()});
         if (nothingToDraw.contains(name)) {
             EXPECT_EQ(result.exitCode, 1) << name << ": " << result.stderrText;
             continue;
         }
         EXPECT_EQ(result.exitCode, 0) << name << ": " << result.stderrText;
         ++rendered;
-        const std::size_t warningLines = static_cast<std::size_t>(
-            std::count(result.stderrText.begin(), result.stderrText.end(), '\n'));
+        const std::size_t warningLines =
+            static_cast<std::size_t>(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'));
         std::ifstream statsFile(dir / "stats.json");
         const nlohmann::json stats = nlohmann::json::parse(statsFile);
         EXPECT_EQ(stats.at("warnings").get<std::size_t>(), warningLines) << name << ": " << result.stderrText;
@@ -198,8 +204,8 @@ TEST(ModelFiles, CamerasFromFilesAndFromTheCommandLineAgree)
     if (!fs::is_directory(kAssimpGltf))
         GTEST_SKIP() << "assimp-testmodels is not installed";
     const auto dir = scratchDirectory();
-    writeFile(dir / "scene.json", R"({"objects": [{"name": "cams", "mesh": ")" +
-                                      (kAssimpGltf / "cameras/Cameras.gltf").string() + R"("}],
+    writeFile(dir / "scene.json",
+              R"({"objects": [{"name": "cams", "mesh": ")" + (kAssimpGltf / "cameras/Cameras.gltf").string() + R"("}],
                                      "lights": [{"type": "point", "pos": [0.5, 0.5, 2], "intensity": [1, 1, 1], "range": 5}]})");
     const std::string scene = (dir / "scene.json").string();
     const Image byIndex = renderPfm(scene, dir / "index.pfm", {"--size", "48x48", "--camera", "0"});

@@ -24,10 +24,9 @@ TEST_P(EveryLightEverywhere, EveryPixelEvaluatesEveryLightAndMatchesForward)
     const auto dir = test::scratchDirectory();
     const std::string scene = MANYLIGHTS_SOURCE_DIR "/tests/scenes/every_light_everywhere.json";
     const Image forward = test::renderPfm(scene, dir / "forward.pfm", {"--size", "64x48", "--technique", "forward"});
-    const Image image =
-        test::renderPfm(scene, dir / "technique.pfm",
-                        {"--size", "64x48", "--gbuffer", "seed", "--technique", GetParam(), "--count-work", "--stats",
-                         (dir / "stats.json").string()});
+    const Image image = test::renderPfm(scene, dir / "technique.pfm",
+                                        {"--size", "64x48", "--gbuffer", "seed", "--technique", GetParam(),
+                                         "--count-work", "--stats", (dir / "stats.json").string()});
     std::ifstream in(dir / "stats.json");
     const nlohmann::json stats = nlohmann::json::parse(in);
     const auto inRange = stats["in_range_pairs"].get<std::uint64_t>();

@@ -57,7 +57,7 @@ TEST(Recording, EveryFrameIsTheRenderAtItsTime)
     const auto dir = scratchDirectory();
     const std::vector<std::string> common{"--size", "64x36", "--technique", "deferred"};
     std::vector<std::string> args{"render", "-o", (dir / "frame_%02d.pfm").string(), "--time-range", "0.5:1.25",
-                                  "--fps", "4"};
+                                  "--fps",  "4"};
     args.insert(args.end(), common.begin(), common.end());
     runCliOrFail(args);
     // 0.5, 0.75, 1.0 (1.25 excluded).

@@ -69,7 +69,8 @@ std::optional<bool> shadowedOnPlane(const glm::dvec3& p, const glm::dvec3& toLig
                                     double margin = kPenumbraMargin)
 {
     const bool centre = rayHitsBox(p, toLight, box);
-    for (const glm::dvec3 offset : {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1)})
+    for (const glm::dvec3 offset :
+         {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1)})
         if (rayHitsBox(p + margin * offset, toLight, box) != centre)
             return std::nullopt;
     return centre;
@@ -229,7 +230,8 @@ void checkLocalLightShadow(const std::string& technique, const std::string& ligh
     const std::string scene = R"({
         "camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov_y": 60, "near": 0.1, "far": 100},
         "ambient": [0.1, 0.1, 0.1],
-        "lights": [)" + lightJson + R"(],
+        "lights": [)" + lightJson +
+                              R"(],
         "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
         "objects": [
             {"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
@@ -301,8 +303,10 @@ TEST(ShadowView, ShowsTheDirectionalShadowFactor)
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", boxAbovePlane(true));
     const std::string scene = (dir / "scene.json").string();
-    const Image shadow = renderPfm(scene, dir / "shadow.pfm", {"--gbuffer", "seed", "--size", "65x65", "--view", "shadow"});
-    const Image position = renderPfm(scene, dir / "position.pfm", {"--gbuffer", "seed", "--size", "65x65", "--view", "position"});
+    const Image shadow =
+        renderPfm(scene, dir / "shadow.pfm", {"--gbuffer", "seed", "--size", "65x65", "--view", "shadow"});
+    const Image position =
+        renderPfm(scene, dir / "position.pfm", {"--gbuffer", "seed", "--size", "65x65", "--view", "position"});
     int umbra = 0;
     int lit = 0;
     for (int y = 0; y < shadow.height; ++y)

@@ -54,8 +54,10 @@ Views renderViews(const std::filesystem::path& scene, const std::filesystem::pat
 {
     Views v;
     v.occlusion = renderPfm(scene.string(), dir / "ssao.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "ssao"});
-    v.position = renderPfm(scene.string(), dir / "position.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "position"});
-    v.normal = renderPfm(scene.string(), dir / "normal.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "normal"});
+    v.position =
+        renderPfm(scene.string(), dir / "position.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "position"});
+    v.normal =
+        renderPfm(scene.string(), dir / "normal.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "normal"});
     return v;
 }
 
@@ -94,8 +96,8 @@ TEST(Ssao, DarkensTheInnerCornerAndLeavesOpenFloorUnoccluded)
                 for (int dx = -kNeighbourhood; dx <= kNeighbourhood && onlyFloorAround; ++dx) {
                     const int nx = x + dx;
                     const int ny = y + dy;
-                    onlyFloorAround = nx >= 0 && ny >= 0 && nx < v.occlusion.width && ny < v.occlusion.height &&
-                                      v.floor(nx, ny);
+                    onlyFloorAround =
+                        nx >= 0 && ny >= 0 && nx < v.occlusion.width && ny < v.occlusion.height && v.floor(nx, ny);
                 }
             if (onlyFloorAround) {
                 ++open;
@@ -113,8 +115,8 @@ TEST(Ssao, MultipliesTheAmbientTermInEveryTechnique)
     const Views v = renderViews(dir / "scene.json", dir);
     int darkened = 0;
     for (const std::string& technique : techniqueNames()) {
-        const Image colour =
-            renderPfm((dir / "scene.json").string(), dir / (technique + ".pfm"), {"--gbuffer", "seed", "--size", kSize, "--technique", technique});
+        const Image colour = renderPfm((dir / "scene.json").string(), dir / (technique + ".pfm"),
+                                       {"--gbuffer", "seed", "--size", kSize, "--technique", technique});
         int failures = 0;
         for (int y = 0; y < colour.height; ++y)
             for (int x = 0; x < colour.width; ++x) {
@@ -139,8 +141,10 @@ TEST(Ssao, OffUnlessTheSceneEnablesIt)
     // docs/lighting.md has no occlusion term: with "enabled": false the image is kd · ambient exactly.
     const auto dir = scratchDirectory();
     writeFile(dir / "scene.json", boxOnFloor(false));
-    const Image colour = renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--gbuffer", "seed", "--size", kSize});
-    const Image normal = renderPfm((dir / "scene.json").string(), dir / "normal.pfm", {"--gbuffer", "seed", "--size", kSize, "--view", "normal"});
+    const Image colour =
+        renderPfm((dir / "scene.json").string(), dir / "final.pfm", {"--gbuffer", "seed", "--size", kSize});
+    const Image normal = renderPfm((dir / "scene.json").string(), dir / "normal.pfm",
+                                   {"--gbuffer", "seed", "--size", kSize, "--view", "normal"});
     int checked = 0;
     for (int y = 0; y < colour.height; ++y)
         for (int x = 0; x < colour.width; ++x) {

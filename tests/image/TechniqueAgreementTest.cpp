@@ -109,53 +109,47 @@ const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, TechniqueAgreement,
-    ::testing::Values(AgreementCase{"default_scene", "", {"--size", "320x180"}},
-                      AgreementCase{"default_scene_1024_lights", "", {"--size", "192x108", "--lights", "1024"}},
-                      // Mid-animation: lights, markers and objects moved, the dynamic surface of
-                      // revolution computed in the vertex shader at this time.
-                      AgreementCase{"default_scene_at_time_2_7", "", {"--size", "192x108", "--time", "2.7"}},
-                      AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json",
-                                    {"--size", "240x160"}},
-                      AgreementCase{"spots_points_300_set_lights", kScenes + "spots_and_points.json",
-                                    {"--size", "160x120", "--lights", "300"}},
-                      // The camera cases of the light-volume techniques (tests/scenes/*.json say
-                      // how each is set up).
-                      AgreementCase{"camera_inside_point_light", kScenes + "camera_inside_point_light.json",
-                                    {"--size", "160x120"}},
-                      AgreementCase{"camera_inside_spot_cone", kScenes + "camera_inside_spot_cone.json",
-                                    {"--size", "160x120"}},
-                      AgreementCase{"light_cut_by_near_plane", kScenes + "light_cut_by_near_plane.json",
-                                    {"--size", "160x120"}},
-                      AgreementCase{"light_beyond_far_plane", kScenes + "light_beyond_far_plane.json",
-                                    {"--size", "160x120"}},
-                      AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
-                      AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
-                      AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json",
-                                    {"--size", "160x90"}},
-                      // Diffuse, specular and normal maps (issue 5): the G-buffer must carry the
-                      // textured, normal-mapped surface exactly as forward shades it.
-                      AgreementCase{"textured_normal_mapped", kScenes + "textured_normal_mapped.json",
-                                    {"--size", "200x120"}},
-                      // The compact layout (the default) against forward within its derived bound.
-                      AgreementCase{"compact_default_scene", "", {"--size", "256x144"}, true},
-                      AgreementCase{"compact_spots_and_points", kScenes + "spots_and_points.json",
-                                    {"--size", "160x120"}, true},
-                      AgreementCase{"compact_textured_normal_mapped", kScenes + "textured_normal_mapped.json",
-                                    {"--size", "200x120"}, true},
-                      // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
-                      AgreementCase{"bunny_teapot_models", MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
-                                    {"--size", "160x90", "--lights", "512"}},
-                      // Shadows (directional, spot maps, cube maps for points and wide spots)
-                      // and SSAO: every technique samples the same maps at the same positions.
-                      AgreementCase{"shadows_and_ssao", kScenes + "shadows_and_ssao.json",
-                                    {"--size", "160x120", "--shadow-lights", "24"}},
-                      // Transparent panes and drops (the transparency pass, issue 16): over the
-                      // grid of the transparent objects' depths, against forward's every light;
-                      // past one light batch, the grid rebuilt per layer and batch.
-                      AgreementCase{"glass_transparency", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
-                                    {"--size", "320x180"}},
-                      AgreementCase{"glass_transparency_two_batches", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
-                                    {"--size", "128x72", "--lights", "9000"}}),
+    ::testing::Values(
+        AgreementCase{"default_scene", "", {"--size", "320x180"}},
+        AgreementCase{"default_scene_1024_lights", "", {"--size", "192x108", "--lights", "1024"}},
+        // Mid-animation: lights, markers and objects moved, the dynamic surface of
+        // revolution computed in the vertex shader at this time.
+        AgreementCase{"default_scene_at_time_2_7", "", {"--size", "192x108", "--time", "2.7"}},
+        AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json", {"--size", "240x160"}},
+        AgreementCase{
+            "spots_points_300_set_lights", kScenes + "spots_and_points.json", {"--size", "160x120", "--lights", "300"}},
+        // The camera cases of the light-volume techniques (tests/scenes/*.json say
+        // how each is set up).
+        AgreementCase{"camera_inside_point_light", kScenes + "camera_inside_point_light.json", {"--size", "160x120"}},
+        AgreementCase{"camera_inside_spot_cone", kScenes + "camera_inside_spot_cone.json", {"--size", "160x120"}},
+        AgreementCase{"light_cut_by_near_plane", kScenes + "light_cut_by_near_plane.json", {"--size", "160x120"}},
+        AgreementCase{"light_beyond_far_plane", kScenes + "light_beyond_far_plane.json", {"--size", "160x120"}},
+        AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
+        AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
+        AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json", {"--size", "160x90"}},
+        // Diffuse, specular and normal maps (issue 5): the G-buffer must carry the
+        // textured, normal-mapped surface exactly as forward shades it.
+        AgreementCase{"textured_normal_mapped", kScenes + "textured_normal_mapped.json", {"--size", "200x120"}},
+        // The compact layout (the default) against forward within its derived bound.
+        AgreementCase{"compact_default_scene", "", {"--size", "256x144"}, true},
+        AgreementCase{"compact_spots_and_points", kScenes + "spots_and_points.json", {"--size", "160x120"}, true},
+        AgreementCase{
+            "compact_textured_normal_mapped", kScenes + "textured_normal_mapped.json", {"--size", "200x120"}, true},
+        // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
+        AgreementCase{"bunny_teapot_models",
+                      MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
+                      {"--size", "160x90", "--lights", "512"}},
+        // Shadows (directional, spot maps, cube maps for points and wide spots)
+        // and SSAO: every technique samples the same maps at the same positions.
+        AgreementCase{
+            "shadows_and_ssao", kScenes + "shadows_and_ssao.json", {"--size", "160x120", "--shadow-lights", "24"}},
+        // Transparent panes and drops (the transparency pass, issue 16): over the
+        // grid of the transparent objects' depths, against forward's every light;
+        // past one light batch, the grid rebuilt per layer and batch.
+        AgreementCase{"glass_transparency", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json", {"--size", "320x180"}},
+        AgreementCase{"glass_transparency_two_batches",
+                      MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
+                      {"--size", "128x72", "--lights", "9000"}}),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 // The sizes people render at. A light whose sphere covers much of the view reaches tens of
@@ -166,22 +160,21 @@ AgreementCase atSize(const std::string& scene, const std::string& size)
 {
     std::string sizeName = size;
     std::replace(sizeName.begin(), sizeName.end(), 'x', '_');
-    return AgreementCase{std::filesystem::path(scene).stem().string() + "_" + sizeName, kScenes + scene, {"--size", size}};
+    return AgreementCase{
+        std::filesystem::path(scene).stem().string() + "_" + sizeName, kScenes + scene, {"--size", size}};
 }
 
 INSTANTIATE_TEST_SUITE_P(
     UserSizes, TechniqueAgreement,
-    ::testing::Values(atSize("big_light.json", "1280x720"), atSize("big_light.json", "800x600"),
-                      atSize("camera_inside_point_light.json", "1280x720"),
-                      atSize("camera_inside_point_light.json", "800x600"),
-                      atSize("camera_inside_spot_cone.json", "1280x720"),
-                      atSize("camera_inside_spot_cone.json", "800x600"),
-                      atSize("light_cut_by_near_plane.json", "1280x720"),
-                      atSize("light_cut_by_near_plane.json", "800x600"),
-                      atSize("light_beyond_far_plane.json", "1280x720"),
-                      atSize("light_beyond_far_plane.json", "800x600"), atSize("spot_cutoff_120.json", "1280x720"),
-                      atSize("spot_cutoff_120.json", "800x600"), atSize("unbounded_light.json", "1280x720"),
-                      atSize("unbounded_light.json", "800x600"), atSize("spots_and_points.json", "1280x720")),
+    ::testing::Values(
+        atSize("big_light.json", "1280x720"), atSize("big_light.json", "800x600"),
+        atSize("camera_inside_point_light.json", "1280x720"), atSize("camera_inside_point_light.json", "800x600"),
+        atSize("camera_inside_spot_cone.json", "1280x720"), atSize("camera_inside_spot_cone.json", "800x600"),
+        atSize("light_cut_by_near_plane.json", "1280x720"), atSize("light_cut_by_near_plane.json", "800x600"),
+        atSize("light_beyond_far_plane.json", "1280x720"), atSize("light_beyond_far_plane.json", "800x600"),
+        atSize("spot_cutoff_120.json", "1280x720"), atSize("spot_cutoff_120.json", "800x600"),
+        atSize("unbounded_light.json", "1280x720"), atSize("unbounded_light.json", "800x600"),
+        atSize("spots_and_points.json", "1280x720")),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });
 
 }  // namespace

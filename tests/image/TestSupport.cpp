@@ -39,7 +39,8 @@ void runCliOrFail(const std::vector<std::string>& args)
     ASSERT_EQ(status, 0) << "manylights failed";
 }
 
-Image renderPfm(const std::string& scene, const std::filesystem::path& output, const std::vector<std::string>& extraArgs)
+Image renderPfm(const std::string& scene, const std::filesystem::path& output,
+                const std::vector<std::string>& extraArgs)
 {
     std::vector<std::string> args = {"render"};
     if (!scene.empty())
@@ -54,8 +55,8 @@ Image renderPfm(const std::string& scene, const std::filesystem::path& output, c
 
 ProcessResult runExecutable(const std::vector<std::string>& args, const std::string& environment)
 {
-    const std::filesystem::path errors = std::filesystem::temp_directory_path() /
-                                         ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
+    const std::filesystem::path errors =
+        std::filesystem::temp_directory_path() / ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
     std::string command = environment + " '" MANYLIGHTS_EXE "'";
     for (const std::string& arg : args)
         command += " '" + arg + "'";

@@ -49,8 +49,7 @@ TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
             EXPECT_EQ(result.exitCode, 1) << name << ": " << result.stderrText;
             EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
             EXPECT_NE(result.stderrText.find((dir / name).string()), std::string::npos) << result.stderrText;
-            EXPECT_NE(result.stderrText.find("(diffuse_map of material 'm')"), std::string::npos)
-                << result.stderrText;
+            EXPECT_NE(result.stderrText.find("(diffuse_map of material 'm')"), std::string::npos) << result.stderrText;
             EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << name;
         }
     }
@@ -59,8 +58,7 @@ TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
 TEST(TextureCli, UnknownGBufferLayoutIsUsageError)
 {
     const auto dir = scratchDirectory();
-    const test::ProcessResult render =
-        runExecutable({"render", "-o", (dir / "out.png").string(), "--gbuffer", "tiny"});
+    const test::ProcessResult render = runExecutable({"render", "-o", (dir / "out.png").string(), "--gbuffer", "tiny"});
     EXPECT_EQ(render.exitCode, 2);
     EXPECT_NE(render.stderrText.find("--gbuffer"), std::string::npos) << render.stderrText;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));

@@ -19,8 +19,8 @@ using test::scratchDirectory;
 nlohmann::json statsFor(const std::filesystem::path& dir, const std::string& technique)
 {
     const std::filesystem::path stats = dir / (technique + ".json");
-    runCliOrFail({"render", "-o", (dir / (technique + ".png")).string(), "--size", "320x180", "--technique",
-                  technique, "--stats", stats.string()});
+    runCliOrFail({"render", "-o", (dir / (technique + ".png")).string(), "--size", "320x180", "--technique", technique,
+                  "--stats", stats.string()});
     std::ifstream in(stats);
     return nlohmann::json::parse(in);
 }

@@ -60,8 +60,8 @@ inline ::testing::AssertionResult imagesNear(const Image& reference, const Image
     if (failures == 0)
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << failures << " of " << reference.rgb.size()
-                                         << " values differ (largest difference / allowed " << worstRatio << "):"
-                                         << firstFailures.str();
+                                         << " values differ (largest difference / allowed " << worstRatio
+                                         << "):" << firstFailures.str();
 }
 
 inline ::testing::AssertionResult imagesNear(const Image& reference, const Image& image, Tolerance tolerance)

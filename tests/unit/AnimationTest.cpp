@@ -114,8 +114,8 @@ TEST_F(DefaultSceneOverTime, SpinningAndSwayingKeepTheirFootprint)
         const float restHalfDiagonal = 0.5f * glm::length(glm::vec2{rest.max.x - rest.min.x, rest.max.z - rest.min.z});
         for (double t : sampleTimes()) {
             const Bounds now = boundsAt(scene(), object, t);
-            const glm::vec2 corners[4] = {{now.min.x, now.min.z}, {now.max.x, now.min.z},
-                                          {now.min.x, now.max.z}, {now.max.x, now.max.z}};
+            const glm::vec2 corners[4] = {
+                {now.min.x, now.min.z}, {now.max.x, now.min.z}, {now.min.x, now.max.z}, {now.max.x, now.max.z}};
             float farthest = 0.0f;
             for (const glm::vec2& corner : corners)
                 farthest = std::max(farthest, glm::distance(corner, restCentre));
@@ -144,9 +144,9 @@ TEST(Animation, BounceTouchesAtLandingPeaksAtHalfPeriodAndThinsWhenFast)
     };
     EXPECT_NEAR(bottomAt(0.0).y, 0.0f, 1e-6f);
     EXPECT_NEAR(bottomAt(3.0).y, 0.0f, 1e-5f);
-    EXPECT_NEAR(bottomAt(0.5).y, 2.0f, 1e-6f);     // 4·h·s·(1 − s) at s = ½
-    EXPECT_NEAR(bottomAt(0.25).y, 1.5f, 1e-6f);    // 4·2·¼·¾
-    EXPECT_NEAR(bottomAt(0.25).x, 3.0f, 1e-6f);    // the foot stays under the centre
+    EXPECT_NEAR(bottomAt(0.5).y, 2.0f, 1e-6f);   // 4·h·s·(1 − s) at s = ½
+    EXPECT_NEAR(bottomAt(0.25).y, 1.5f, 1e-6f);  // 4·2·¼·¾
+    EXPECT_NEAR(bottomAt(0.25).x, 3.0f, 1e-6f);  // the foot stays under the centre
     // Fastest at landing: X and Z scaled by 1 − squash, Y by its inverse.
     const glm::mat4 landing = animatedTransform(rest, bounce, 0.0);
     EXPECT_NEAR(glm::length(glm::vec3(landing[0])), 0.6f, 1e-6f);
@@ -233,8 +233,10 @@ TEST(Revolution, AnalyticNormalIsTheCrossProductOfTheDerivatives)
     for (double t : {0.0, 0.3, 1.7}) {
         for (float u : {0.05f, 0.3f, 0.77f}) {
             for (float v : {0.1f, 0.5f, 0.9f}) {
-                const glm::vec3 du = revolutionPosition(profile, u + h, v, t) - revolutionPosition(profile, u - h, v, t);
-                const glm::vec3 dv = revolutionPosition(profile, u, v + h, t) - revolutionPosition(profile, u, v - h, t);
+                const glm::vec3 du =
+                    revolutionPosition(profile, u + h, v, t) - revolutionPosition(profile, u - h, v, t);
+                const glm::vec3 dv =
+                    revolutionPosition(profile, u, v + h, t) - revolutionPosition(profile, u, v - h, t);
                 const glm::vec3 numeric = glm::normalize(glm::cross(dv, du));
                 // Central differences with h = 1e-3 in float: about 1e-3 error in direction.
                 EXPECT_NEAR(glm::distance(numeric, revolutionNormal(profile, u, v, t)), 0.0f, 3e-3f)

@@ -118,7 +118,8 @@ TEST(InputFile, OnlyRegularFilesWithinTheLimit)
         readInputFile(dir / "absent.json", "scene file");
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), (dir / "absent.json").string() + ": cannot open scene file: No such file or directory");
+        EXPECT_EQ(std::string(e.what()),
+                  (dir / "absent.json").string() + ": cannot open scene file: No such file or directory");
     }
     fs::remove_all(dir);
 }
@@ -140,7 +141,9 @@ TEST(Numbers, OneCheckForEveryTypedNumber)
 
 TEST(Error, PrintableLineEscapesControlCharacters)
 {
-    EXPECT_EQ(printableLine("a\nb\tc\rd\x01" "e\x7f"), "a\\nb\\tc\\rd\\x01e\\x7f");
+    EXPECT_EQ(printableLine("a\nb\tc\rd\x01"
+                            "e\x7f"),
+              "a\\nb\\tc\\rd\\x01e\\x7f");
     EXPECT_EQ(printableLine("plain: ünïcode"), "plain: ünïcode");
 }
 

@@ -84,8 +84,8 @@ TEST_F(DefaultScene, ObjectsRestOnTheFloorWithoutOverlapping)
         EXPECT_GE(bounds.min.z, -16.0f - 1e-4f) << object.name;
         EXPECT_LE(bounds.max.z, 16.0f + 1e-4f) << object.name;
         for (const Bounds& other : footprints) {
-            const bool apart = bounds.max.x < other.min.x || other.max.x < bounds.min.x ||
-                               bounds.max.z < other.min.z || other.max.z < bounds.min.z;
+            const bool apart = bounds.max.x < other.min.x || other.max.x < bounds.min.x || bounds.max.z < other.min.z ||
+                               other.max.z < bounds.min.z;
             EXPECT_TRUE(apart) << object.name << " overlaps another object";
         }
         footprints.push_back(bounds);

@@ -27,8 +27,8 @@ using Json = nlohmann::json;
 // Debian's assimp-testmodels (scripts/setup.sh installs it).
 const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
 
-#define SKIP_WITHOUT_ASSIMP_MODELS()                                                     \
-    if (!fs::is_directory(kAssimpGltf))                                                  \
+#define SKIP_WITHOUT_ASSIMP_MODELS()                                                                                   \
+    if (!fs::is_directory(kAssimpGltf))                                                                                \
     GTEST_SKIP() << kAssimpGltf << " is missing: install assimp-testmodels (scripts/setup.sh)"
 
 using test::errorOf;
@@ -122,11 +122,10 @@ GltfBuilder exampleGltf()
                                        {{"attributes", attributes}, {"indices", b.indices16}},
                                        {{"attributes", attributes}, {"indices", b.indices32}},
                                        {{"attributes", {{"POSITION", b.flatPositions}}}}}}}});
-    b.gltf["materials"] = Json::array({{{"pbrMetallicRoughness",
-                                         {{"baseColorFactor", {0.5, 0.5, 0.5, 1.0}},
-                                          {"metallicFactor", 0.5},
-                                          {"roughnessFactor", 0.5}}},
-                                        {"emissiveFactor", {0.1, 0.2, 0.3}}}});
+    b.gltf["materials"] =
+        Json::array({{{"pbrMetallicRoughness",
+                       {{"baseColorFactor", {0.5, 0.5, 0.5, 1.0}}, {"metallicFactor", 0.5}, {"roughnessFactor", 0.5}}},
+                      {"emissiveFactor", {0.1, 0.2, 0.3}}}});
     const double halfSqrt2 = std::sqrt(0.5);
     b.gltf["nodes"] = Json::array(
         {{{"name", "parent"}, {"translation", {1, 2, 3}}, {"children", {1}}},
@@ -139,11 +138,12 @@ GltfBuilder exampleGltf()
     b.gltf["scenes"] = Json::array({{{"nodes", {0, 2, 3}}}});
     b.gltf["scene"] = 0;
     b.gltf["extensionsUsed"] = {"KHR_lights_punctual"};
-    b.gltf["extensions"] = {
-        {"KHR_lights_punctual",
-         {{"lights",
-           {{{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 4.0}, {"range", 10.0}},
-            {{"type", "spot"}, {"intensity", 1.0}, {"spot", {{"innerConeAngle", 0.0}, {"outerConeAngle", std::numbers::pi / 4}}}}}}}}};
+    b.gltf["extensions"] = {{"KHR_lights_punctual",
+                             {{"lights",
+                               {{{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 4.0}, {"range", 10.0}},
+                                {{"type", "spot"},
+                                 {"intensity", 1.0},
+                                 {"spot", {{"innerConeAngle", 0.0}, {"outerConeAngle", std::numbers::pi / 4}}}}}}}}};
     return b;
 }
 
@@ -219,10 +219,10 @@ TEST(GltfModel, TextureTransformsAreStoredPerMapForFlippedUvs)
     b.gltf["images"] = Json::array({{{"uri", "data:image/png;base64,iVBORw0KGgo="}}});
     b.gltf["textures"] = Json::array({{{"source", 0}}});
     Json& pbr = b.gltf["materials"][0]["pbrMetallicRoughness"];
-    pbr["baseColorTexture"] = {
-        {"index", 0},
-        {"extensions",
-         {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", std::numbers::pi / 2}, {"scale", {2, 3}}}}}}};
+    pbr["baseColorTexture"] = {{"index", 0},
+                               {"extensions",
+                                {{"KHR_texture_transform",
+                                  {{"offset", {0.5, 0.25}}, {"rotation", std::numbers::pi / 2}, {"scale", {2, 3}}}}}}};
     pbr["metallicRoughnessTexture"] = {{"index", 0}, {"texCoord", 1}};
     b.gltf["materials"][0]["emissiveTexture"] = {{"index", 0}};
     Warnings warnings;
@@ -257,13 +257,14 @@ TEST(GltfModel, VertexColoursAreRead)
     primitives[1]["attributes"]["COLOR_0"] = bytes;
     const Mesh mesh = b.load().meshes[0];
     EXPECT_TRUE(mesh.hasVertexColours);
-    EXPECT_EQ(mesh.vertices[mesh.indices[2]].colour, glm::vec4(0, 0, 1, 1));      // primitive 0, corner 2
+    EXPECT_EQ(mesh.vertices[mesh.indices[2]].colour, glm::vec4(0, 0, 1, 1));                    // primitive 0, corner 2
     EXPECT_EQ(mesh.vertices[mesh.indices[6 + 1]].colour, glm::vec4(0, 1, 0, 128.0f / 255.0f));  // primitive 1, corner 1
-    EXPECT_EQ(mesh.vertices[mesh.indices[12]].colour, glm::vec4(1.0f));           // primitive 2 has none
+    EXPECT_EQ(mesh.vertices[mesh.indices[12]].colour, glm::vec4(1.0f));                         // primitive 2 has none
 
     b.gltf["accessors"][static_cast<std::size_t>(bytes)]["normalized"] = false;
-    EXPECT_EQ(errorOf([&] { b.load(); }).rfind("test.gltf: meshes[0].primitives[1].COLOR_0: expected 4 float components", 0),
-              0u);
+    EXPECT_EQ(
+        errorOf([&] { b.load(); }).rfind("test.gltf: meshes[0].primitives[1].COLOR_0: expected 4 float components", 0),
+        0u);
 }
 
 TEST(GltfModel, HierarchyPrimitivesAndIndexWidths)
@@ -339,8 +340,8 @@ TEST(GltfModel, SceneObjectBecomesOneObjectPerNodeAndAddsTheLights)
     const fs::path dir = fs::path(::testing::TempDir()) / "ml_gltf_scene";
     fs::create_directories(dir);
     const std::vector<unsigned char> bytes = exampleGltf().bytes();
-    std::ofstream(dir / "lamp.gltf", std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                            static_cast<std::streamsize>(bytes.size()));
+    std::ofstream(dir / "lamp.gltf", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     const Scene scene = parseScene(R"({ "objects": [ { "name": "model", "mesh": "lamp.gltf",
                                          "transform": { "translate": [10, 0, 0] } } ] })",
                                    "scene.json", dir);
@@ -423,7 +424,10 @@ INSTANTIATE_TEST_SUITE_P(
                        b.gltf["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 1.0;
                    },
                    "lights[1]: spot cone angles"},
-        BrokenGltf{"ShortTranslation", [](GltfBuilder& b) { b.gltf["nodes"][0]["translation"] = {1, 2}; },
+        BrokenGltf{"ShortTranslation",
+                   [](GltfBuilder& b) {
+                       b.gltf["nodes"][0]["translation"] = {1, 2};
+                   },
                    "nodes[0]: translation needs 3 numbers"},
         BrokenGltf{"MissingTexture",
                    [](GltfBuilder& b) {
@@ -433,7 +437,9 @@ INSTANTIATE_TEST_SUITE_P(
                    },
                    "images[0]: external image 'nothere.png'"},
         BrokenGltf{"UnknownTexture",
-                   [](GltfBuilder& b) { b.gltf["materials"][0]["normalTexture"] = {{"index", 4}}; },
+                   [](GltfBuilder& b) {
+                       b.gltf["materials"][0]["normalTexture"] = {{"index", 4}};
+                   },
                    "materials[0].normalTexture: texture 4 is not a texture"},
         BrokenGltf{"NoVersion", [](GltfBuilder& b) { b.gltf.erase("asset"); }, "test.gltf: "},
         BrokenGltf{"ExternalBuffer",
@@ -528,7 +534,8 @@ TEST(GltfAssimpModels, TextureTransformTestReadsEveryTransform)
 {
     SKIP_WITHOUT_ASSIMP_MODELS();
     Warnings warnings;
-    const Model model = loadGltfFile(kAssimpGltf / "textureTransform/TextureTransformTest.gltf", {.warnings = &warnings});
+    const Model model =
+        loadGltfFile(kAssimpGltf / "textureTransform/TextureTransformTest.gltf", {.warnings = &warnings});
     ASSERT_EQ(model.materials.size(), 9u);
     std::size_t transformed = 0;
     std::size_t clamped = 0;

@@ -421,10 +421,7 @@ TEST_F(ObjFiles, MissingFileIsAnError)
     expectError(std::filesystem::path(::testing::TempDir()) / "ml_no_such_file.obj", "cannot open");
 }
 
-TEST_F(ObjFiles, DirectoryIsAnError)
-{
-    expectError(std::filesystem::path(::testing::TempDir()), "cannot open");
-}
+TEST_F(ObjFiles, DirectoryIsAnError) { expectError(std::filesystem::path(::testing::TempDir()), "cannot open"); }
 
 TEST_F(ObjFiles, IndexOutOfRangeIsAnError)
 {
@@ -435,10 +432,7 @@ TEST_F(ObjFiles, IndexOutOfRangeIsAnError)
     expectError(write("quad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 9\n"), "out of range");
 }
 
-TEST_F(ObjFiles, IndexZeroIsAnError)
-{
-    expectError(write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
-}
+TEST_F(ObjFiles, IndexZeroIsAnError) { expectError(write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n")); }
 
 TEST_F(ObjFiles, NonFiniteNumbersAreErrors)
 {

@@ -203,7 +203,8 @@ INSTANTIATE_TEST_SUITE_P(
     ObjModel, BrokenObjTest,
     ::testing::Values(
         BrokenObj{"NanKd", kQuadWithLib, "newmtl m\nKd nan 1 1\n", "lib.mtl: line 2: Kd has a non-finite"},
-        BrokenObj{"NegativeKd", kQuadWithLib, "newmtl m\nKd -1 0.5 0.5\n", "lib.mtl: line 2: Kd must not be negative, got '-1'"},
+        BrokenObj{"NegativeKd", kQuadWithLib, "newmtl m\nKd -1 0.5 0.5\n",
+                  "lib.mtl: line 2: Kd must not be negative, got '-1'"},
         BrokenObj{"ShortKs", kQuadWithLib, "newmtl m\nKs 1 1\n", "line 2: Ks needs 3 numbers, has 2"},
         BrokenObj{"InfinitePosition", "v inf 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "line 1: vertex position"},
         BrokenObj{"OverflowingPosition", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "line 1"},
@@ -269,7 +270,8 @@ TEST(ObjModel, RewrittenNumbersReadAsOtherReadersReadThem)
 {
     const fs::path dir = scratch();
     write(dir / "lib.mtl", "newmtl m\nKd 0.25 # grey\nKs +0.5 0.5 0.5\n");
-    const fs::path obj = write(dir / "m.obj", "mtllib lib.mtl\nv +1 +2. 3.1+e2\nv 4 5 6 # plain\nv 0 1e1 -2\nusemtl m\nf 1 2 3\n");
+    const fs::path obj =
+        write(dir / "m.obj", "mtllib lib.mtl\nv +1 +2. 3.1+e2\nv 4 5 6 # plain\nv 0 1e1 -2\nusemtl m\nf 1 2 3\n");
     Warnings warnings;
     const Model model = loadObjModelFile(obj, warnings);
     std::vector<glm::vec3> positions;
@@ -287,8 +289,7 @@ TEST(ObjModel, ZeroAreaTrianglesAreDropped)
 {
     const fs::path dir = scratch();
     // The second triangle repeats a corner: it is left out, the first one stays.
-    const Model model =
-        loadObj(write(dir / "m.obj", std::string(kQuad) + "f 1 2 3\nf 1 1 4\n"));
+    const Model model = loadObj(write(dir / "m.obj", std::string(kQuad) + "f 1 2 3\nf 1 1 4\n"));
     EXPECT_EQ(model.meshes[0].indices.size(), 3u);
 }
 

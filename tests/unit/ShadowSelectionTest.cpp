@@ -68,8 +68,8 @@ TEST(ShadowSelection, ObjectCullingAgainstSpheresAndCones)
 TEST(ShadowSelection, TransformedBoundsHoldTheTransformedCorners)
 {
     const Bounds unit{glm::vec3(-1.0f), glm::vec3(1.0f)};
-    const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0)), glm::radians(45.0f),
-                                    glm::vec3(0, 1, 0));
+    const glm::mat4 m =
+        glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0)), glm::radians(45.0f), glm::vec3(0, 1, 0));
     const Bounds world = transformedBounds(unit, m);
     EXPECT_NEAR(world.min.x, 5.0f - std::sqrt(2.0f), 1e-5f);
     EXPECT_NEAR(world.max.x, 5.0f + std::sqrt(2.0f), 1e-5f);

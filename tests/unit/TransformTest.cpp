@@ -55,8 +55,8 @@ TEST(Transform, OtherOrdersGiveDifferentResults)
     const glm::vec3 probe{0.3f, 0.5f, 0.7f};
     const glm::vec3 expected = apply(t * rz * ry * rx * s, probe);
     expectNear(apply(m, probe), expected);
-    for (const glm::mat4& wrong : {t * rx * ry * rz * s, t * ry * rx * rz * s, t * rz * ry * rx, s * t * rz * ry * rx,
-                                   rz * ry * rx * s * t}) {
+    for (const glm::mat4& wrong :
+         {t * rx * ry * rz * s, t * ry * rx * rz * s, t * rz * ry * rx, s * t * rz * ry * rx, rz * ry * rx * s * t}) {
         EXPECT_GT(glm::length(apply(wrong, probe) - expected), 0.1f);
     }
 }

@@ -81,10 +81,10 @@ TEST(CameraControls, DollyFlyAndLook)
 
 TEST(ViewScript, ParsesEveryCommand)
 {
-    const auto commands = parseViewScript(
-        "# a comment\nframes 3\n\nresize 320 200\ntechnique tiled\nview normal\ntime 1.5\npause\nplay\n"
-        "speed 2\ntoggle specular\nkey left\nscreenshot out.png\nquit\n",
-        "s.txt");
+    const auto commands =
+        parseViewScript("# a comment\nframes 3\n\nresize 320 200\ntechnique tiled\nview normal\ntime 1.5\npause\nplay\n"
+                        "speed 2\ntoggle specular\nkey left\nscreenshot out.png\nquit\n",
+                        "s.txt");
     ASSERT_EQ(commands.size(), 12u);
     EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Frames);
     EXPECT_EQ(commands[0].number, 3.0);
@@ -118,7 +118,8 @@ TEST(ViewScript, BadLinesNameFileAndLine)
     EXPECT_EQ(errorOf("time nan").rfind("s.txt:1: the time must be", 0), 0u);
     // Numbers past what the viewer can honour: a size that wrapped in an int (and then tripped
     // GLFW's assertion), frame counts that never end.
-    EXPECT_EQ(errorOf("frames 2\nresize 1e10 1e10").rfind("s.txt:2: the width must be a number from 1 to 16384", 0), 0u);
+    EXPECT_EQ(errorOf("frames 2\nresize 1e10 1e10").rfind("s.txt:2: the width must be a number from 1 to 16384", 0),
+              0u);
     EXPECT_EQ(errorOf("resize 100 100000").rfind("s.txt:1: the height must be", 0), 0u);
     EXPECT_EQ(errorOf("frames 1e20").rfind("s.txt:1: the frame count must be a number from 1 to 1e+06", 0), 0u);
     EXPECT_EQ(errorOf("speed inf").rfind("s.txt:1: the speed must be", 0), 0u);
@@ -154,7 +155,8 @@ bool haveXvfb() { return run("command -v xvfb-run >/dev/null 2>&1 && command -v 
 fs::path scratch()
 {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::path(MANYLIGHTS_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
+    const fs::path dir =
+        fs::path(MANYLIGHTS_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
@@ -307,9 +309,8 @@ TEST(Viewer, AutoExposureAdaptsTowardsMiddleGrey)
     // Started 3 stops under, auto-exposure brightens the picture over the frames (a time
     // constant of 0.7 s: after 100 frames of at least 5 ms, more than half the way, which
     // would brighten it about 2.9 x; the bound asks for 1.4 x).
-    ASSERT_EQ(runViewer(dir, "pause\ntoggle auto-exposure\nframes 100\nscreenshot adapted.png\nquit\n",
-                        "--exposure -3"),
-              0)
+    ASSERT_EQ(
+        runViewer(dir, "pause\ntoggle auto-exposure\nframes 100\nscreenshot adapted.png\nquit\n", "--exposure -3"), 0)
         << readText(dir / "viewer.log");
     const double adapted = meanValue(readPng(dir / "adapted.png"));
     const double underexposed = meanValue(renderAtWindowSize(dir / "under.png", "--exposure -3"));
