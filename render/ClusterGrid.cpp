@@ -1,4 +1,5 @@
 #include "render/ClusterGrid.h"
+#include "render/Bindings.h"
 
 #include <algorithm>
 #include <string>
@@ -11,11 +12,11 @@ namespace manylights {
 namespace {
 
 // Binding points shared with shaders/lib/clusters.glsl and the passes.
-constexpr GLuint kTileDepthRangesBinding = 2;
-constexpr GLuint kTileSlicesBinding = 3;
-constexpr GLuint kMasksBinding = 4;
-constexpr GLuint kSummariesBinding = 5;
-constexpr GLuint kDepthUnit = 5;
+constexpr GLuint kTileDepthRangesBinding = bindings::CLUSTER_TILE_DEPTHS_BUFFER_BINDING;
+constexpr GLuint kTileSlicesBinding = bindings::CLUSTER_TILE_SLICES_BUFFER_BINDING;
+constexpr GLuint kMasksBinding = bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING;
+constexpr GLuint kSummariesBinding = bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING;
+constexpr GLuint kDepthUnit = bindings::SCENE_DEPTH_UNIT;
 constexpr GLuint kLightGroupSize = 64;     // local_size_x of cluster_assign.comp
 constexpr GLuint kTileGroupSize = 64;      // local_size_x of cluster_tiles.comp
 constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp

@@ -1,4 +1,5 @@
 #include "render/DisplayPass.h"
+#include "render/Bindings.h"
 
 #include <cmath>
 #include <string>
@@ -62,7 +63,7 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
         program.set(kExposureScaleLocation, std::exp2(settings.exposure));
         // The lit image was written by draws or image stores.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        lit.bindUnit(0);
+        lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
         transformedFramebuffer_.bind();
         glViewport(0, 0, width, height);
         emptyVertexArray_.bind();
@@ -87,7 +88,7 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
         glCopyImageSubData(transformed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, antialiasedOutput_.id(), GL_TEXTURE_2D, 0, 0,
                            0, 0, width, height, 1);
         antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
-        transformed_.bindUnit(0);
+        transformed_.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
         antialiasedFramebuffer_.bind();
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 1, 0xFF);
@@ -114,9 +115,9 @@ float DisplayPass::logAverageLuminance(const gl::Texture2D& lit, const gl::Textu
         luminance_ = gl::Buffer("log-average luminance", sizeof(float), nullptr);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    lit.bindUnit(0);
-    depth.bindUnit(1);
-    luminance_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
+    depth.bindUnit(bindings::LUMINANCE_DEPTH_UNIT);
+    luminance_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LUMINANCE_RESULT_BUFFER_BINDING);
     luminanceProgram_.use();
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

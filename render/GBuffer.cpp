@@ -1,4 +1,5 @@
 #include "render/GBuffer.h"
+#include "render/Bindings.h"
 
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
@@ -73,8 +74,10 @@ void GBuffer::fill(const GpuScene& scene) const
 
 void GBuffer::bindForReading() const
 {
+    // Units GBUFFER_POSITION_UNIT (0) to GBUFFER_EMISSIVE_UNIT (4), in target order.
+    static_assert(bindings::GBUFFER_POSITION_UNIT == 0 && bindings::GBUFFER_EMISSIVE_UNIT == 4);
     for (std::size_t i = 0; i < targets_.size(); ++i)
-        targets_[i].bindUnit(static_cast<GLuint>(i));
+        targets_[i].bindUnit(static_cast<GLuint>(bindings::GBUFFER_POSITION_UNIT + static_cast<int>(i)));
 }
 
 }  // namespace manylights

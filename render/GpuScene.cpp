@@ -1,4 +1,5 @@
 #include "render/GpuScene.h"
+#include "render/Bindings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,10 +33,10 @@ Bounds objectSpaceBounds(const Object& object, const Bounds& meshBounds)
     return bounds;
 }
 // Binding points shared with the shaders (lib/frame.glsl, lib/lights.glsl).
-constexpr GLuint kFrameBinding = 0;
-constexpr GLuint kLightsBinding = 0;
+constexpr GLuint kFrameBinding = bindings::FRAME_BLOCK_BINDING;
+constexpr GLuint kLightsBinding = bindings::LIGHTS_BUFFER_BINDING;
 // lib/instances.glsl: the instance records and the uniform naming a draw's first record.
-constexpr GLuint kInstancesBinding = 8;
+constexpr GLuint kInstancesBinding = bindings::INSTANCES_BUFFER_BINDING;
 constexpr GLint kInstanceBase = 33;
 // Point lights get cos(cutoff) = −2: every direction passes the spot test and S = 1.
 constexpr float kPointLightCosCutoff = -2.0f;
@@ -594,7 +595,10 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
         kNormalUvTransform = 56,
         kEmissiveUvTransform = 59,
     };
-    enum : GLuint { kDiffuseUnit = 6, kSpecularUnit = 7, kNormalUnit = 8, kEmissiveUnit = 15 };
+    constexpr GLuint kDiffuseUnit = bindings::DIFFUSE_MAP_UNIT;
+    constexpr GLuint kSpecularUnit = bindings::SPECULAR_MAP_UNIT;
+    constexpr GLuint kNormalUnit = bindings::NORMAL_MAP_UNIT;
+    constexpr GLuint kEmissiveUnit = bindings::EMISSIVE_MAP_UNIT;
     const auto glWrap = [](TextureWrap wrap) -> GLenum {
         switch (wrap) {
         case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "gl/Program.h"
+#include "render/Bindings.h"
 
 namespace manylights {
 
@@ -61,7 +62,7 @@ void addLightBatchDefines(gl::Defines& defines);
 inline constexpr std::size_t kLightWindowBytes = 64 * 1024;
 inline constexpr std::uint32_t kLightsPerWindow = 1024;  // GpuScene.cpp checks it fills the window
 // The window's uniform buffer binding (0 and 1 are lib/frame.glsl's and lib/shadows.glsl's).
-inline constexpr unsigned kLightWindowBinding = 2;
+inline constexpr unsigned kLightWindowBinding = bindings::LIGHT_WINDOW_BLOCK_BINDING;
 // Whether a frame lit in `batches` can read its lights from one window: a single batch of at
 // most kLightsPerWindow. (Windows start at multiples of kLightsPerWindow; batches sized for
 // another budget, such as clustered's masks at 8192x4096, need not.)

@@ -1,4 +1,5 @@
 #include "render/Renderer.h"
+#include "render/Bindings.h"
 
 #include <algorithm>
 #include <string>
@@ -53,7 +54,8 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
     if (countWork_) {
         const GLuint zero = 0;
         glClearTexImage(targets_->lightEvaluations.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glBindImageTexture(0, targets_->lightEvaluations.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindImageTexture(bindings::LIGHT_EVALUATIONS_IMAGE_UNIT, targets_->lightEvaluations.id(), 0, GL_FALSE, 0,
+                           GL_READ_WRITE, GL_R32UI);
     }
     profiler_.beginFrame();
     targets_->gbuffer.invalidate();
@@ -62,8 +64,14 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
         technique.render(gpuScene_, *targets_, profiler_);
         if (gpuScene_.hasTransparentObjects()) {
-            if (!transparency_ || !(transparency_->options() == technique.options()))
-                transparency_ = std::make_unique<TransparencyPass>(technique.options());
+            const auto made = std::find_if(transparencyPasses_.begin(), transparencyPasses_.end(),
+                                           [&](const auto& pass) { return pass->options() == technique.options(); });
+            if (made != transparencyPasses_.end()) {
+                transparency_ = made->get();
+            } else {
+                transparencyPasses_.push_back(std::make_unique<TransparencyPass>(technique.options()));
+                transparency_ = transparencyPasses_.back().get();
+            }
             transparency_->run(gpuScene_, *targets_, profiler_, technique.isReference());
         }
         if (view == ViewMode::Volumes)
@@ -165,8 +173,9 @@ void Renderer::countWork()
     targets_->gbuffer.fill(gpuScene_);
     gpuScene_.bind();
     targets_->gbuffer.bindForReading();
-    targets_->depthStencil.bindUnit(5);
-    glBindImageTexture(1, targets_->inRangeCounts.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    targets_->depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
+    glBindImageTexture(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, targets_->inRangeCounts.id(), 0, GL_FALSE, 0,
+                       GL_READ_WRITE, GL_R32UI);
     if (!inRangeProgram_) {
         gl::Defines defines = gbufferDefines(gbufferLayout_);
         addLightBatchDefines(defines);

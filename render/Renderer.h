@@ -114,8 +114,10 @@ private:
     ShadowMaps shadowMaps_;
     AmbientOcclusion ambientOcclusion_;
     std::unique_ptr<Ssao> ssao_;  // made on first use
-    // Made for the options of the technique it follows, when the scene has transparent objects.
-    std::unique_ptr<TransparencyPass> transparency_;
+    // One per set of technique options it has followed (made when the scene has transparent
+    // objects): switching techniques keeps their programs. transparency_ is the last one run.
+    std::vector<std::unique_ptr<TransparencyPass>> transparencyPasses_;
+    TransparencyPass* transparency_ = nullptr;
     gl::Program shadowingViewProgram_;  // made on first use of the shadow and ssao views
     void prepareShadowing(ViewMode view);
     bool countWork_ = false;

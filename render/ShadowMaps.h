@@ -18,6 +18,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "render/Bindings.h"
 #include "render/GpuScene.h"
 #include "scene/Scene.h"
 
@@ -45,12 +46,12 @@ struct GpuShadowSlot {
 };
 
 // Texture units and binding points shared with shaders/lib/shadows.glsl.
-inline constexpr GLuint kDirectionalShadowUnit = 9;
-inline constexpr GLuint kSpotShadowUnit = 10;
-inline constexpr GLuint kPointShadowUnit = 11;
-inline constexpr GLuint kShadowingUniformBinding = 1;
-inline constexpr GLuint kShadowSlotOfLightBinding = 10;
-inline constexpr GLuint kShadowSlotsBinding = 12;
+inline constexpr GLuint kDirectionalShadowUnit = bindings::DIRECTIONAL_SHADOW_UNIT;
+inline constexpr GLuint kSpotShadowUnit = bindings::SPOT_SHADOWS_UNIT;
+inline constexpr GLuint kPointShadowUnit = bindings::POINT_SHADOWS_UNIT;
+inline constexpr GLuint kShadowingUniformBinding = bindings::SHADOWING_BLOCK_BINDING;
+inline constexpr GLuint kShadowSlotOfLightBinding = bindings::SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING;
+inline constexpr GLuint kShadowSlotsBinding = bindings::SHADOW_SLOTS_BUFFER_BINDING;
 
 // Spot lights up to this cutoff get one perspective map; wider ones (whose map would need a
 // field of view near or beyond 180°) get a cube map like a point light.

@@ -1,4 +1,5 @@
 #include "render/Ssao.h"
+#include "render/Bindings.h"
 
 #include <cmath>
 #include <cstdint>
@@ -14,8 +15,8 @@ namespace manylights {
 namespace {
 
 // Shared with shaders/ssao.comp and shaders/ssao_blur.comp.
-constexpr GLuint kSamplesBinding = 11;
-constexpr GLuint kOcclusionImageUnit = 1;
+constexpr GLuint kSamplesBinding = bindings::SSAO_SAMPLES_BUFFER_BINDING;
+constexpr GLuint kOcclusionImageUnit = bindings::OCCLUSION_IMAGE_UNIT;
 constexpr GLint kParamsLocation = 20;
 constexpr int kGroupSize = 8;
 // Depth bias of the occlusion test, as a fraction of the radius: curved surfaces bend
@@ -86,7 +87,7 @@ void Ssao::run(const GpuScene& scene, FrameTargets& targets, const AmbientOcclus
     const auto groupsY = static_cast<GLuint>((targets.height + kGroupSize - 1) / kGroupSize);
     scene.bind();
     targets.gbuffer.bindForReading();
-    targets.depthStencil.bindUnit(5);
+    targets.depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
     samples_.bindBase(GL_SHADER_STORAGE_BUFFER, kSamplesBinding);
     occlusionProgram_.set(kParamsLocation,
                           glm::vec4(settings.radius, settings.strength, kBiasFraction * settings.radius, 0.0f));

@@ -11,6 +11,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "render/Bindings.h"
 #include "render/GBuffer.h"
 #include "scene/Scene.h"
 
@@ -20,9 +21,10 @@ class GpuScene;
 class PassProfiler;
 struct FrameTargets;
 
-inline constexpr GLuint kAmbientOcclusionUnit = 13;  // the blurred factor (lib/shadows.glsl)
-inline constexpr GLuint kRawOcclusionUnit = 14;      // the unblurred factor, read by the blur
-inline constexpr int kSsaoKernelSize = 16;           // KERNEL_SIZE of shaders/ssao.comp
+inline constexpr GLuint kAmbientOcclusionUnit =
+    bindings::AMBIENT_OCCLUSION_UNIT;                                      // the blurred factor (lib/shadows.glsl)
+inline constexpr GLuint kRawOcclusionUnit = bindings::RAW_OCCLUSION_UNIT;  // the unblurred factor, read by the blur
+inline constexpr int kSsaoKernelSize = 16;                                 // KERNEL_SIZE of shaders/ssao.comp
 
 // The std430 layout of SsaoSamples in shaders/ssao.comp.
 struct SsaoSamples {

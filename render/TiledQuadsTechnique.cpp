@@ -1,4 +1,5 @@
 #include "render/TiledQuadsTechnique.h"
+#include "render/Bindings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +20,8 @@ constexpr GLint kFirstQuad = 0;
 constexpr GLint kTilesX = 1;
 constexpr GLint kTileSize = 2;
 constexpr GLint kImageSize = 3;
-constexpr GLuint kTileQuadsBinding = 1;
-constexpr GLuint kTileLightsBinding = 3;
+constexpr GLuint kTileQuadsBinding = bindings::TILE_QUADS_BUFFER_BINDING;
+constexpr GLuint kTileLightsBinding = bindings::TILE_LIGHTS_BUFFER_BINDING;
 
 gl::Program makeVariant(const TechniqueOptions& options, std::size_t variant)
 {

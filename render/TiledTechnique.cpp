@@ -1,4 +1,5 @@
 #include "render/TiledTechnique.h"
+#include "render/Bindings.h"
 
 #include <string>
 #include <vector>
@@ -11,8 +12,8 @@ namespace manylights {
 
 namespace {
 // Bindings of shaders/tiled.comp.
-constexpr GLuint kLitImageUnit = 2;
-constexpr GLuint kDepthUnit = 5;
+constexpr GLuint kLitImageUnit = bindings::LIT_IMAGE_UNIT;
+constexpr GLuint kDepthUnit = bindings::SCENE_DEPTH_UNIT;
 
 gl::Defines tiledDefines(const TechniqueOptions& options)
 {

@@ -1,4 +1,5 @@
 #include "render/TransparencyPass.h"
+#include "render/Bindings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace manylights {
 
 namespace {
 
-constexpr GLuint kEvaluationsBinding = 9;  // shaders/transparent.frag
+constexpr GLuint kEvaluationsBinding = bindings::TRANSPARENT_EVALUATIONS_BUFFER_BINDING;
 
 gl::Defines everyLightDefines(gl::Defines defines)
 {

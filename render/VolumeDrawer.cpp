@@ -1,4 +1,5 @@
 #include "render/VolumeDrawer.h"
+#include "render/Bindings.h"
 
 #include "render/GpuScene.h"
 #include "render/ScreenPasses.h"
@@ -9,7 +10,7 @@ namespace {
 // Locations and binding of shaders/volume.vert.
 constexpr GLint kFirstVolumeLight = 0;
 constexpr GLint kVolumeShape = 1;
-constexpr GLuint kVolumeLightsBinding = 1;
+constexpr GLuint kVolumeLightsBinding = bindings::VOLUME_LIGHTS_BUFFER_BINDING;
 }  // namespace
 
 VolumeDrawer::VolumeDrawer(const gl::Defines& defines)

@@ -6,13 +6,14 @@
 // the workgroup's invocations, which cost more than the walk. The first walk keeps each
 // pixel's depth for the second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
 // Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels, 2 · (256 + 17) for 16-pixel tiles.
+#include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 #include "lib/light_batch.glsl"
 #include "lib/clusters.glsl"
 #include "lib/gbuffer_position.glsl"
 
 layout(local_size_x = 64) in;
-layout(binding = 5) uniform sampler2D sceneDepth;
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
 
 // The view depth of the surface at `pixel`, or 0 where there is none. Surfaces lie beyond
 // the near plane; the floor keeps the slice logs finite whatever the rounding.

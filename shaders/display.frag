@@ -6,9 +6,10 @@
 // slower than a lone one (7 of 11 ms at 1280x720). Loop iterations: at most
 // kMaxSupersample² = 64. A full-screen fragment pass rather than a compute one: llvmpipe runs
 // it faster (docs/performance.md).
+#include "lib/bindings.glsl"
 #include "lib/display.glsl"
 
-layout(binding = 0) uniform sampler2D litImage;
+layout(binding = DISPLAY_SOURCE_UNIT) uniform sampler2D litImage;
 layout(location = 0) uniform float exposureScale;  // 2^EV
 layout(location = 0) out vec4 displayed;
 

@@ -10,6 +10,7 @@
 // the test that checks the culling against counting every pair. One dispatch per light
 // batch, adding to the counts. Loop iterations: ≤ 2 to clear the mask, ≤ 33 to cull, and
 // ≤ 2 · 257 + one batch to count: under the bound of render/LightBatches.h.
+#include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
 #include "lib/light_batch.glsl"
@@ -19,8 +20,8 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 // After the workgroup size, which it reads.
 #include "lib/tile_depth_range.glsl"
-layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 1, r32ui) uniform uimage2D inRangeCounts;
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
+layout(binding = IN_RANGE_COUNTS_IMAGE_UNIT, r32ui) uniform uimage2D inRangeCounts;
 
 const uint THREADS = 256u;
 

@@ -7,10 +7,11 @@
 // full-screen pass; a grid of 2,304 points tracks the average as well for exposure), each
 // thread summing its share, then halving the sums in shared memory. Loop iterations: grid
 // points / 256 = 9, then 8 halvings.
+#include "lib/bindings.glsl"
 layout(local_size_x = 256) in;
-layout(binding = 0) uniform sampler2D litImage;
-layout(binding = 1) uniform sampler2D sceneDepth;
-layout(std430, binding = 0) writeonly buffer Result {
+layout(binding = DISPLAY_SOURCE_UNIT) uniform sampler2D litImage;
+layout(binding = LUMINANCE_DEPTH_UNIT) uniform sampler2D surfaceDepth;
+layout(std430, binding = LUMINANCE_RESULT_BUFFER_BINDING) writeonly buffer Result {
     float logAverageLuminance;
 };
 
@@ -29,7 +30,7 @@ void main()
     for (uint i = gl_LocalInvocationIndex; i < SAMPLES_X * SAMPLES_Y; i += 256u) {
         vec2 where = (vec2(i % SAMPLES_X, i / SAMPLES_X) + 0.5) / vec2(SAMPLES_X, SAMPLES_Y);
         ivec2 pixel = ivec2(where * vec2(size));
-        if (texelFetch(sceneDepth, pixel, 0).r == 1.0)
+        if (texelFetch(surfaceDepth, pixel, 0).r == 1.0)
             continue;
         vec3 colour = texelFetch(litImage, pixel, 0).rgb;
         float luminance = dot(max(colour, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));  // Rec. 709

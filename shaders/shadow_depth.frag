@@ -3,6 +3,7 @@
 // MATERIAL_VARIANT) is cut where shaders/lib/material.glsl's meshSurface() cuts it: its
 // coverage, opacity times the diffuse map's alpha (bit 0) times the vertex colour's (bit 6),
 // below the cutoff. Light passes through the holes a mask makes.
+#include "lib/bindings.glsl"
 #ifndef MATERIAL_VARIANT
 #define MATERIAL_VARIANT 0
 #endif
@@ -15,7 +16,7 @@ layout(location = 11) in float vertexAlpha;
 #endif
 #if (MATERIAL_VARIANT & 1) != 0
 layout(location = 50) uniform mat3x2 diffuseUvTransform;
-layout(binding = 6) uniform sampler2D diffuseMap;
+layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;
 #endif
 #endif
 

@@ -3,17 +3,18 @@
 // surface, how much of the hemisphere around its normal, within `radius`, lies behind other
 // visible surfaces. Samples are taken in view space from a fixed kernel, rotated per pixel
 // by a 4x4 tiled noise (shaders/ssao_blur.comp averages the 4x4 pattern away).
+#include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 1, r32f) uniform writeonly image2D rawOcclusion;
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
+layout(binding = OCCLUSION_IMAGE_UNIT, r32f) uniform writeonly image2D rawOcclusion;
 layout(location = 20) uniform vec4 ssaoParams;  // x: radius, y: strength, z: depth bias (world units)
 
 const int KERNEL_SIZE = 16;
-layout(std430, binding = 11) readonly buffer SsaoSamples {
+layout(std430, binding = SSAO_SAMPLES_BUFFER_BINDING) readonly buffer SsaoSamples {
     vec4 kernel[KERNEL_SIZE];  // xyz: offsets in the unit hemisphere around +z (tangent space)
     vec4 noise[16];            // xy: unit rotation vectors of the 4x4 noise tile
 };

@@ -1,10 +1,11 @@
 #version 450 core
 // Averages the raw occlusion over the 4x4 block the noise tile repeats in (render/Ssao.cpp),
 // so the per-pixel rotation's pattern disappears. Only pixels holding a surface take part.
+#include "lib/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 14) uniform sampler2D rawOcclusion;
-layout(binding = 1, r32f) uniform writeonly image2D blurredOcclusion;
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
+layout(binding = RAW_OCCLUSION_UNIT) uniform sampler2D rawOcclusion;
+layout(binding = OCCLUSION_IMAGE_UNIT, r32f) uniform writeonly image2D blurredOcclusion;
 
 void main()
 {

@@ -9,6 +9,7 @@
 // ones add to the lit image. Loop iterations per invocation: clearing the mask (1), the
 // culling loop (a batch / 256 ≤ 32, with the frustum's four planes) and the shading walk (one
 // per mask word and one per light of the batch): under the bound of render/LightBatches.h.
+#include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
@@ -19,8 +20,8 @@
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 // After the workgroup size, which it reads.
 #include "lib/tile_depth_range.glsl"
-layout(binding = 5) uniform sampler2D sceneDepth;
-layout(binding = 2, rgba32f) uniform image2D litImage;
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
+layout(binding = LIT_IMAGE_UNIT, rgba32f) uniform image2D litImage;
 
 const uint THREADS = uint(TILE_SIZE * TILE_SIZE);
 const uint MASK_WORDS = uint(LIGHTS_PER_BATCH / 32);

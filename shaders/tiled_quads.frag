@@ -2,13 +2,14 @@
 // tiled-quads: the local lights of this pixel's tile (a run of at most a light batch of
 // them per quad), added by blending onto the global terms. Compiled once per light-count
 // bucket with MAX_TILE_LIGHTS set to the bucket's bound.
+#include "lib/bindings.glsl"
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(early_fragment_tests) in;
 
 // Every tile's light indices, one list after another (render/TileCulling.h).
-layout(std430, binding = 3) readonly buffer TileLights {
+layout(std430, binding = TILE_LIGHTS_BUFFER_BINDING) readonly buffer TileLights {
     uint tileLights[];
 };
 

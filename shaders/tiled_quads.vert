@@ -2,11 +2,12 @@
 // tiled-quads: one instance per tile, a quad over exactly the tile's pixels at the far plane
 // (depth 1). Drawn with the depth test GL_GREATER against the scene's depth, like every
 // full-screen pass, so only the tile's pixels that hold a surface run the fragment shader.
+#include "lib/bindings.glsl"
 
 // The quads of every draw, grouped by light-count bucket: (tile number, offset and count of
 // its run of lights in the index list, unused). A tile has one quad per run of at most a
 // light batch of its lights.
-layout(std430, binding = 1) readonly buffer TileQuads {
+layout(std430, binding = TILE_QUADS_BUFFER_BINDING) readonly buffer TileQuads {
     uvec4 tileQuads[];
 };
 

@@ -6,6 +6,7 @@
 // premultiplied alpha (blend ONE, ONE_MINUS_SRC_ALPHA): the first light batch writes
 // (coverage · colour, coverage), each later one adds coverage · its lights' colour with alpha
 // 0. The ambient term has no occlusion: SSAO is made from the opaque surfaces' G-buffer.
+#include "lib/bindings.glsl"
 #define NO_AMBIENT_OCCLUSION 1
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
@@ -19,7 +20,7 @@
 layout(location = 0) out vec4 outColor;
 #ifdef COUNT_WORK
 // The pass's (pixel, light) pairs, apart from the opaque ones (stats: transparent_light_evaluations).
-layout(std430, binding = 9) buffer TransparentEvaluations {
+layout(std430, binding = TRANSPARENT_EVALUATIONS_BUFFER_BINDING) buffer TransparentEvaluations {
     uint transparentLightEvaluations;
 };
 #endif

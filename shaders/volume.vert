@@ -1,13 +1,14 @@
 #version 450 core
 // One instance per light: the bounding sphere or cone (render/LightVolumes.h) placed and
 // scaled from the light buffer, or, for unbounded lights, a triangle covering the screen.
+#include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
 
 layout(location = 0) in vec3 inPosition;
 
 // The lights of each shape, as indices into the light buffer.
-layout(std430, binding = 1) readonly buffer VolumeLights {
+layout(std430, binding = VOLUME_LIGHTS_BUFFER_BINDING) readonly buffer VolumeLights {
     uint volumeLights[];
 };
 

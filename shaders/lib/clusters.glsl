@@ -9,16 +9,17 @@
 // Bit masks rather than lists: building them needs no counting pass, prefix sum or sort,
 // their size is known before the frame (nothing can overflow, nothing is read back), and a
 // pixel walks its lights in index order, the order forward adds them in.
-layout(std430, binding = 2) buffer ClusterTileDepths {
+#include "lib/bindings.glsl"
+layout(std430, binding = CLUSTER_TILE_DEPTHS_BUFFER_BINDING) buffer ClusterTileDepths {
     vec2 tileDepthRange[];  // view depth of the tile's slice 0 start and last slice end; 0 when empty
 };
-layout(std430, binding = 3) buffer ClusterTileSlices {
+layout(std430, binding = CLUSTER_TILE_SLICES_BUFFER_BINDING) buffer ClusterTileSlices {
     uint tileOccupiedSlices[];  // bit k: slice k holds at least one pixel's surface
 };
-layout(std430, binding = 4) buffer ClusterLightMasks {
+layout(std430, binding = CLUSTER_LIGHT_MASKS_BUFFER_BINDING) buffer ClusterLightMasks {
     uint clusterLightMasks[];  // cluster c, word w: [c * clusterMaskWords() + w]
 };
-layout(std430, binding = 5) buffer ClusterMaskSummaries {
+layout(std430, binding = CLUSTER_MASK_SUMMARIES_BUFFER_BINDING) buffer ClusterMaskSummaries {
     uint clusterMaskSummaries[];  // cluster c: [c * clusterSummaryWords() + w / 32], bit w % 32
 };
 

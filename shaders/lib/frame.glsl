@@ -1,6 +1,7 @@
 // Per-frame constants, one uniform buffer shared by every pass (render/GpuScene.cpp fills it
 // with the same std140 layout).
-layout(std140, binding = 0) uniform Frame {
+#include "lib/bindings.glsl"
+layout(std140, binding = FRAME_BLOCK_BINDING) uniform Frame {
     mat4 viewProjection;
     mat4 view;
     vec4 eye;                   // xyz: camera position

@@ -1,7 +1,8 @@
 // The part of FXAA (shaders/fxaa.frag) that decides whether a pixel is on an edge at all,
 // shared with shaders/fxaa_edges.frag, which marks those pixels in the stencil buffer so that
 // the full filter runs on them alone.
-layout(binding = 0) uniform sampler2D source;  // bilinear, clamped to the edge; alpha: luma
+#include "lib/bindings.glsl"
+layout(binding = DISPLAY_SOURCE_UNIT) uniform sampler2D source;  // bilinear, clamped to the edge; alpha: luma
 
 // FXAA 3.11's "high quality" settings: edges must span 1/8 of the local maximum luma, and
 // at least 0.0312 (dark edges are left alone).

@@ -1,13 +1,14 @@
 // Reading the G-buffer back into a Surface, texel for texel (no filtering), in the layout
 // chosen by GBUFFER_COMPACT (render/GBuffer.h gives both; docs/gbuffer.md their precision).
 // gbufferSurface() is THE way to read a surface from the G-buffer.
+#include "lib/bindings.glsl"
 #include "lib/gbuffer_position.glsl"
 #include "lib/gbuffer_packing.glsl"
 
-layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 2) uniform sampler2D gDiffuse;
-layout(binding = 3) uniform sampler2D gSpecular;
-layout(binding = 4) uniform sampler2D gEmissive;
+layout(binding = GBUFFER_NORMAL_UNIT) uniform sampler2D gNormal;
+layout(binding = GBUFFER_DIFFUSE_UNIT) uniform sampler2D gDiffuse;
+layout(binding = GBUFFER_SPECULAR_UNIT) uniform sampler2D gSpecular;
+layout(binding = GBUFFER_EMISSIVE_UNIT) uniform sampler2D gEmissive;
 
 Surface gbufferSurface(ivec2 pixel)
 {

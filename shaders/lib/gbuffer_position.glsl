@@ -1,12 +1,13 @@
 // The world position of a G-buffer pixel, in either layout (render/GBuffer.h: GBufferLayout):
 // the only G-buffer value the culling compute shaders need. Needs lib/frame.glsl.
+#include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 
 #ifdef GBUFFER_COMPACT
 // Compact layout: the view-space depth (distance along the view axis); the position is the
 // point at that depth on the ray through the pixel's centre, where the rasteriser evaluated
 // the forward shader's interpolated position too.
-layout(binding = 0) uniform sampler2D gViewDepth;
+layout(binding = GBUFFER_POSITION_UNIT) uniform sampler2D gViewDepth;
 
 // The world-space direction through the centre of `pixel` whose component along the view
 // axis is 1, built from the camera of lib/frame.glsl (frame.view is a rigid transform, so
@@ -24,7 +25,7 @@ vec3 gbufferPosition(ivec2 pixel)
 }
 #else
 // Seed layout: the position is stored as it is.
-layout(binding = 0) uniform sampler2D gPositionShininess;
+layout(binding = GBUFFER_POSITION_UNIT) uniform sampler2D gPositionShininess;
 
 vec3 gbufferPosition(ivec2 pixel)
 {

@@ -4,6 +4,7 @@
 // The base is a uniform rather than gl_BaseInstance, which needs GL 4.6 or
 // ARB_shader_draw_parameters: this way the shaders run on any GL 4.5 core driver.
 // SSBO binding 8 and uniform location 33 are in issue 6's ranges.
+#include "lib/bindings.glsl"
 struct Instance {
     mat4 model;
     vec4 normalMatrix[3];   // columns of the inverse-transpose of the model's upper 3x3 (w unused)
@@ -13,7 +14,7 @@ struct Instance {
     vec4 specularTint;      // rgb base colour · metallic (scene/Scene.h), w unused
 };
 
-layout(std430, binding = 8) readonly buffer Instances {
+layout(std430, binding = INSTANCES_BUFFER_BINDING) readonly buffer Instances {
     Instance instances[];
 };
 

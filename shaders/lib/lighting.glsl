@@ -1,5 +1,6 @@
 // The one lighting function of docs/lighting.md. Every technique includes this file; they differ
 // only in which (pixel, light) pairs they visit.
+#include "lib/bindings.glsl"
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
@@ -108,7 +109,7 @@ vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
 // shaders define LIGHTING_IN_COMPUTE before including this file, where gl_FragCoord does
 // not exist).
 #ifdef COUNT_WORK
-layout(binding = 0, r32ui) uniform coherent uimage2D lightEvaluations;
+layout(binding = LIGHT_EVALUATIONS_IMAGE_UNIT, r32ui) uniform coherent uimage2D lightEvaluations;
 void recordLightEvaluationsAt(ivec2 pixel, uint count)
 {
     imageAtomicAdd(lightEvaluations, pixel, count);

@@ -1,4 +1,5 @@
 // The local lights, all of them in one storage buffer (render/GpuScene.cpp packs it).
+#include "lib/bindings.glsl"
 struct GpuLight {
     vec4 positionRadius;     // xyz: position; w: culling radius (UNBOUNDED_RADIUS when none)
     vec4 intensityExponent;  // rgb: intensity; w: spot exponent (0 for point lights)
@@ -7,7 +8,7 @@ struct GpuLight {
                              // every direction is inside the "cone" and S = 1.
 };
 
-layout(std430, binding = 0) readonly buffer Lights {
+layout(std430, binding = LIGHTS_BUFFER_BINDING) readonly buffer Lights {
     GpuLight lights[];
 };
 
@@ -17,7 +18,7 @@ layout(std430, binding = 0) readonly buffer Lights {
 // order; light i of the scene is element i − lightBatch.x. Such a shader includes
 // lib/light_batch.glsl before this file (an #include here would count as done even where this
 // block is compiled out, and leave other shaders without it).
-layout(std140, binding = LIGHT_WINDOW_BINDING) uniform LightWindow {
+layout(std140, binding = LIGHT_WINDOW_BLOCK_BINDING) uniform LightWindow {
     GpuLight windowLights[LIGHTS_PER_WINDOW];
 };
 

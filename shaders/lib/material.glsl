@@ -5,6 +5,7 @@
 // The material constants come per instance from the vertex shader (shaders/mesh.vert reads
 // them from lib/instances.glsl), so one instanced draw can show many materials; the maps
 // below stay per draw, and only draws without maps are instanced (render/GpuScene.cpp).
+#include "lib/bindings.glsl"
 layout(location = 4) flat in vec3 materialDiffuse;
 layout(location = 5) flat in vec3 materialSpecular;
 layout(location = 6) flat in float materialShininess;
@@ -42,13 +43,13 @@ layout(location = 53) uniform mat3x2 specularUvTransform;  // also the metallic-
 layout(location = 56) uniform mat3x2 normalUvTransform;
 layout(location = 59) uniform mat3x2 emissiveUvTransform;
 
-layout(binding = 6) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
+layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
 // Linear. A Blinn-Phong specular map, or (bit 4) glTF's metallic-roughness map: G roughness,
 // B metallic. A material has one or the other.
-layout(binding = 7) uniform sampler2D specularMap;
-layout(binding = 8) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
+layout(binding = SPECULAR_MAP_UNIT) uniform sampler2D specularMap;
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
 // Unit 15: units 9-14 hold the shadow and occlusion maps (shaders/lib/shadows.glsl).
-layout(binding = 15) uniform sampler2D emissiveMap;  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
+layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;

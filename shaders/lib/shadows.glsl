@@ -1,7 +1,8 @@
 // Shadow and ambient-occlusion factors (docs/shadows.md). lib/lighting.glsl multiplies them
 // into its terms, so every technique applies them the same way. render/ShadowMaps.cpp and
 // render/Ssao.cpp fill the maps; render/Shadowing.h has the same std140 layout for the block.
-layout(std140, binding = 1) uniform Shadowing {
+#include "lib/bindings.glsl"
+layout(std140, binding = SHADOWING_BLOCK_BINDING) uniform Shadowing {
     mat4 directionalShadowMatrix;  // world position -> shadow-map uv (xy) and depth (z), all in [0, 1]
     vec4 directionalShadowParams;  // x: 1 when the directional light casts shadows; y: 1 / map size
     vec4 occlusionParams;          // x: 1 when ambient occlusion multiplies the ambient term
@@ -10,24 +11,24 @@ layout(std140, binding = 1) uniform Shadowing {
 } shadowing;
 
 // Local lights' shadows: which slot each light has (−1: none), and each slot's map.
-layout(std430, binding = 10) readonly buffer ShadowSlotOfLight {
+layout(std430, binding = SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING) readonly buffer ShadowSlotOfLight {
     int shadowSlotOfLight[];
 };
 struct ShadowSlot {
     mat4 viewProjection;  // spot maps: world → clip space of the light's perspective
     vec4 params;          // x: 1 spot map, 2 cube map; y: layer of its array; z: near; w: far
 };
-layout(std430, binding = 12) readonly buffer ShadowSlots {
+layout(std430, binding = SHADOW_SLOTS_BUFFER_BINDING) readonly buffer ShadowSlots {
     ShadowSlot shadowSlots[];
 };
-layout(binding = 10) uniform sampler2DArrayShadow spotShadowMaps;
-layout(binding = 11) uniform samplerCubeArrayShadow pointShadowMaps;
+layout(binding = SPOT_SHADOWS_UNIT) uniform sampler2DArrayShadow spotShadowMaps;
+layout(binding = POINT_SHADOWS_UNIT) uniform samplerCubeArrayShadow pointShadowMaps;
 
 // Depth comparison in hardware (GL_COMPARE_REF_TO_TEXTURE) with bilinear filtering: each
 // tap is already a 2x2 percentage-closer filter.
-layout(binding = 9) uniform sampler2DShadow directionalShadowMap;
+layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DShadow directionalShadowMap;
 // The blurred ambient-occlusion factor of each screen pixel (render/Ssao.cpp).
-layout(binding = 13) uniform sampler2D ambientOcclusionMap;
+layout(binding = AMBIENT_OCCLUSION_UNIT) uniform sampler2D ambientOcclusionMap;
 
 // The fraction of the directional light that reaches `position` (1: lit, 0: in the umbra):
 // a 3x3 percentage-closer filter over the shadow map. The depth bias is in the map itself

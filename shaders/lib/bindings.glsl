@@ -1,0 +1,52 @@
+// Binding points of every uniform block, storage buffer, texture unit and image unit the
+// shaders use: the one table the shaders (which include this file) and the C++ code
+// (render/Bindings.h includes it as C++) both read, so a number cannot drift between them.
+// tests/gl/BindingsTest.cpp checks every linked program's interface against it. Written in
+// the common subset of GLSL and C++ (const int, no vectors). Two names may share a number
+// where no program uses both (each line says which shaders use it).
+
+// Uniform blocks.
+const int FRAME_BLOCK_BINDING = 0;         // lib/frame.glsl Frame
+const int SHADOWING_BLOCK_BINDING = 1;     // lib/shadows.glsl Shadowing
+const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/LightBatches.h)
+
+// Shader storage buffers.
+const int LIGHTS_BUFFER_BINDING = 0;                  // lib/lights.glsl Lights
+const int LUMINANCE_RESULT_BUFFER_BINDING = 0;        // log_luminance.comp Result
+const int TILE_QUADS_BUFFER_BINDING = 1;              // tiled_quads.vert TileQuads
+const int VOLUME_LIGHTS_BUFFER_BINDING = 1;           // volume.vert VolumeLights
+const int CLUSTER_TILE_DEPTHS_BUFFER_BINDING = 2;     // lib/clusters.glsl ClusterTileDepths
+const int CLUSTER_TILE_SLICES_BUFFER_BINDING = 3;     // lib/clusters.glsl ClusterTileSlices
+const int TILE_LIGHTS_BUFFER_BINDING = 3;             // tiled_quads.frag TileLights
+const int CLUSTER_LIGHT_MASKS_BUFFER_BINDING = 4;     // lib/clusters.glsl ClusterLightMasks
+const int CLUSTER_MASK_SUMMARIES_BUFFER_BINDING = 5;  // lib/clusters.glsl ClusterMaskSummaries
+const int INSTANCES_BUFFER_BINDING = 8;               // lib/instances.glsl Instances
+const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag TransparentEvaluations
+const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl ShadowSlotOfLight
+const int SSAO_SAMPLES_BUFFER_BINDING = 11;           // ssao.comp SsaoSamples
+const int SHADOW_SLOTS_BUFFER_BINDING = 12;           // lib/shadows.glsl ShadowSlots
+
+// Texture units. 0-4 are the G-buffer's targets in order (render/GBuffer.h).
+const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess / gViewDepth
+const int GBUFFER_NORMAL_UNIT = 1;    // lib/gbuffer.glsl gNormal
+const int GBUFFER_DIFFUSE_UNIT = 2;   // lib/gbuffer.glsl gDiffuse
+const int GBUFFER_SPECULAR_UNIT = 3;  // lib/gbuffer.glsl gSpecular
+const int GBUFFER_EMISSIVE_UNIT = 4;  // lib/gbuffer.glsl gEmissive
+const int DISPLAY_SOURCE_UNIT = 0;    // display.frag litImage, lib/fxaa_edge.glsl source, log_luminance.comp litImage
+const int LUMINANCE_DEPTH_UNIT = 1;   // log_luminance.comp sceneDepth
+const int SCENE_DEPTH_UNIT = 5;       // sceneDepth of the compute passes
+const int DIFFUSE_MAP_UNIT = 6;       // lib/material.glsl, shadow_depth.frag
+const int SPECULAR_MAP_UNIT = 7;      // lib/material.glsl (or the metallic-roughness map)
+const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
+const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
+const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl
+const int POINT_SHADOWS_UNIT = 11;      // lib/shadows.glsl
+const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
+const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
+const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
+
+// Image units.
+const int LIGHT_EVALUATIONS_IMAGE_UNIT = 0;  // lib/lighting.glsl (--count-work)
+const int IN_RANGE_COUNTS_IMAGE_UNIT = 1;    // in_range.comp
+const int OCCLUSION_IMAGE_UNIT = 1;          // ssao.comp, ssao_blur.comp: what they write
+const int LIT_IMAGE_UNIT = 2;                // tiled.comp
