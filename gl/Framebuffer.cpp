@@ -31,6 +31,18 @@ Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Tex
     ML_ASSERT(glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
 }
 
+Framebuffer::Framebuffer(std::string_view label) : GlObject(createFramebuffer())
+{
+    setLabel(GL_FRAMEBUFFER, id(), label);
+    glNamedFramebufferDrawBuffer(id(), GL_NONE);
+}
+
+void Framebuffer::attachDepthLayer(GLuint texture, int layer) const
+{
+    glNamedFramebufferTextureLayer(id(), GL_DEPTH_ATTACHMENT, texture, 0, layer);
+    ML_ASSERT(glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+}
+
 void Framebuffer::clearColour(int attachment, const float rgba[4]) const
 {
     glClearNamedFramebufferfv(id(), GL_COLOR, attachment, rgba);

@@ -21,6 +21,12 @@ public:
     // Colour attachments in order (GL_COLOR_ATTACHMENT0 + i, all enabled as draw buffers) and
     // an optional depth or depth-stencil texture. Asserts completeness.
     Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth);
+    // A depth-only framebuffer whose attachment changes between passes (attachDepthLayer):
+    // no colour buffers, nothing attached yet.
+    explicit Framebuffer(std::string_view label);
+    // Attaches one layer of a depth texture array (or one face of a cube-map array's cube:
+    // layer = 6 · cube + face) and checks that the framebuffer is complete.
+    void attachDepthLayer(GLuint texture, int layer) const;
 
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
     void clearColour(int attachment, const float rgba[4]) const;

@@ -1,5 +1,6 @@
 // gl::Texture2D: a single-level 2D texture for render targets and the G-buffer, owned and
-// labelled (material textures with mipmaps are gl/MipmappedTexture.h).
+// labelled (material textures with mipmaps are gl/MipmappedTexture.h); gl::DepthTextureArray:
+// the layered depth textures of the local lights' shadow maps.
 #pragma once
 
 #include <string_view>
@@ -35,6 +36,19 @@ private:
     int width_ = 0;
     int height_ = 0;
     GLenum format_ = 0;
+};
+
+// A square 24-bit depth texture array with immutable storage: GL_TEXTURE_2D_ARRAY (one map per
+// layer) or GL_TEXTURE_CUBE_MAP_ARRAY (six layers per cube), cleared to the far plane and
+// sampled with depth comparison (GL_LEQUAL) and linear filtering, clamped to the edge: shadow
+// maps read through sampler2DArrayShadow and samplerCubeArrayShadow. Throws manylights::Error
+// when the driver is out of memory for it.
+class DepthTextureArray : public GlObject<detail::deleteTexture> {
+public:
+    DepthTextureArray() = default;
+    DepthTextureArray(GLenum target, std::string_view label, int size, int layers);
+
+    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
 };
 
 }  // namespace manylights::gl

@@ -97,11 +97,7 @@ ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     const float farthest = 1.0f;
     glClearTexImage(directionalMap_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
     ensureArrays(0, 0);
-    GLuint framebuffer = 0;
-    glCreateFramebuffers(1, &framebuffer);
-    localFramebuffer_ = gl::GlObject<gl::detail::deleteFramebuffer>(framebuffer);
-    gl::setLabel(GL_FRAMEBUFFER, framebuffer, "local shadow maps");
-    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    localFramebuffer_ = gl::Framebuffer("local shadow maps");
 }
 
 void ShadowMaps::invalidate()
@@ -177,25 +173,6 @@ constexpr float kNearFraction = 1e-3f;
 // The spot map's field of view beyond the cone: room for the filter's taps at the cone's edge.
 constexpr float kSpotFovMarginDegrees = 2.0f;
 
-gl::GlObject<gl::detail::deleteTexture> makeDepthArray(GLenum target, std::string_view label, int size, int layers)
-{
-    const GLuint name = gl::detail::createTexture(target);
-    gl::GlObject<gl::detail::deleteTexture> texture(name);
-    gl::setLabel(GL_TEXTURE, name, label);
-    glTextureStorage3D(name, 1, GL_DEPTH_COMPONENT24, size, size, layers);
-    gl::throwIfOutOfMemory(std::to_string(layers) + " shadow maps of " + std::to_string(size) + "x" +
-                           std::to_string(size) + " ('" + std::string(label) + "')");
-    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(name, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(name, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    const float farthest = 1.0f;
-    glClearTexImage(name, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
-    return texture;
-}
-
 }  // namespace
 
 void ShadowMaps::ensureArrays(int spotLayers, int cubes)
@@ -205,7 +182,7 @@ void ShadowMaps::ensureArrays(int spotLayers, int cubes)
     if (!spotArray_ || (spotLayers > 0 && (spotArraySize_ != sizes_.spot || spotLayers > spotLayers_))) {
         spotArraySize_ = spotLayers > 0 ? sizes_.spot : 1;
         spotLayers_ = std::max(spotLayers, 1);
-        spotArray_ = makeDepthArray(GL_TEXTURE_2D_ARRAY, "spot shadow maps", spotArraySize_, spotLayers_);
+        spotArray_ = gl::DepthTextureArray(GL_TEXTURE_2D_ARRAY, "spot shadow maps", spotArraySize_, spotLayers_);
         for (LocalSlot& slot : slots_)
             if (!slot.cube)
                 slot.valid = false;
@@ -213,7 +190,7 @@ void ShadowMaps::ensureArrays(int spotLayers, int cubes)
     if (!cubeArray_ || (cubes > 0 && (cubeArraySize_ != sizes_.cubeFace || cubes > cubes_))) {
         cubeArraySize_ = cubes > 0 ? sizes_.cubeFace : 1;
         cubes_ = std::max(cubes, 1);
-        cubeArray_ = makeDepthArray(GL_TEXTURE_CUBE_MAP_ARRAY, "point shadow maps", cubeArraySize_, 6 * cubes_);
+        cubeArray_ = gl::DepthTextureArray(GL_TEXTURE_CUBE_MAP_ARRAY, "point shadow maps", cubeArraySize_, 6 * cubes_);
         for (LocalSlot& slot : slots_)
             if (slot.cube)
                 slot.valid = false;
@@ -326,8 +303,7 @@ void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, i
                              const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep)
 {
     const GLuint framebuffer = localFramebuffer_.id();
-    glNamedFramebufferTextureLayer(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0, layer);
-    ML_ASSERT(glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    localFramebuffer_.attachDepthLayer(texture, layer);
     drawDepthPass(scene, framebuffer, size, viewProjection, keep);
 }
 
@@ -378,8 +354,8 @@ void ShadowMaps::bind(bool ambientOcclusion)
     uniformBuffer_.update(0, sizeof(ShadowingUniforms), &uniforms_);
     uniformBuffer_.bindBase(GL_UNIFORM_BUFFER, kShadowingUniformBinding);
     directionalMap_.bindUnit(kDirectionalShadowUnit);
-    glBindTextureUnit(kSpotShadowUnit, spotArray_.id());
-    glBindTextureUnit(kPointShadowUnit, cubeArray_.id());
+    spotArray_.bindUnit(kSpotShadowUnit);
+    cubeArray_.bindUnit(kPointShadowUnit);
 
     // Which slot each light has: rewritten only when the chosen lights change (it holds an
     // entry for every light, which may be a million). Never empty: a buffer bound to a storage

@@ -156,14 +156,14 @@ private:
     // 11), both depth textures with comparison; slots keep their light while it stays chosen.
     std::vector<LocalSlot> slots_;
     std::vector<std::size_t> shadowedLights_;
-    gl::GlObject<gl::detail::deleteTexture> spotArray_;
-    gl::GlObject<gl::detail::deleteTexture> cubeArray_;
+    gl::DepthTextureArray spotArray_;
+    gl::DepthTextureArray cubeArray_;
     int spotLayers_ = 0;
     int cubes_ = 0;
     int spotArraySize_ = 0;
     int cubeArraySize_ = 0;
     std::size_t lightCount_ = 0;
-    gl::GlObject<gl::detail::deleteFramebuffer> localFramebuffer_;  // one layer attached at a time
+    gl::Framebuffer localFramebuffer_;  // one layer attached at a time
     gl::Buffer slotOfLightBuffer_;
     gl::Buffer slotsBuffer_;
     std::size_t slotOfLightCapacity_ = 0;          // entries in slotOfLightBuffer_
