@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "scene/Mesh.h"
 
 namespace manylights {
 

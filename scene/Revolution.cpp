@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scene/Scene.h"
+#include "scene/Mesh.h"
 
 namespace manylights {
 

@@ -11,7 +11,7 @@
 
 namespace manylights {
 
-struct Mesh;
+struct Mesh;  // scene/Mesh.h
 
 struct RevolutionProfile {
     float radius = 0.5f;  // mean radius; > amplitude so that the surface never pinches

@@ -35,14 +35,6 @@ const char* describe(CameraProblem problem)
     return "";
 }
 
-Bounds Mesh::bounds() const
-{
-    Bounds b;
-    for (const Vertex& v : vertices)
-        b.extend(v.position);
-    return b;
-}
-
 Bounds Scene::worldBounds() const
 {
     // Shared meshes are common (every primitive with the same parameters is one mesh), so

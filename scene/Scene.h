@@ -13,6 +13,7 @@
 
 #include "scene/Animation.h"
 #include "scene/DisplaySettings.h"
+#include "scene/Mesh.h"
 #include "scene/Revolution.h"
 
 namespace manylights {
@@ -176,52 +177,6 @@ struct Material {
     float alphaCutoff = 0.5f;
     float opacity = 1.0f;
     Sides sides = Sides::BothWithMeshNormal;
-};
-
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv;
-    // Tangent-space basis for normal maps: xyz the unit tangent (direction of increasing u),
-    // w the handedness (±1; bitangent = w · cross(normal, tangent)). All zero when the mesh has
-    // no texture coordinates to derive it from.
-    glm::vec4 tangent{0.0f};
-    // Multiplies the material's base colour (glTF COLOR_0; alpha joins the coverage). White
-    // unless the file gives colours (Mesh::hasVertexColours).
-    glm::vec4 colour{1.0f};
-};
-
-// A range of a mesh's index list drawn with one material: a model file may give different
-// groups different materials, all in the one vertex buffer of the model.
-struct SubMesh {
-    std::uint32_t firstIndex = 0;
-    std::uint32_t indexCount = 0;
-    // The mesh file's own material for this range (index into Scene::materials); none means the
-    // object's material.
-    std::optional<std::size_t> material;
-};
-
-struct Bounds {
-    glm::vec3 min{std::numeric_limits<float>::max()};
-    glm::vec3 max{-std::numeric_limits<float>::max()};
-    bool empty() const { return min.x > max.x; }
-    void extend(const glm::vec3& p)
-    {
-        min = glm::min(min, p);
-        max = glm::max(max, p);
-    }
-};
-
-// Indexed triangle list in object space.
-struct Mesh {
-    std::string name;  // the primitive's description or the file it came from
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;
-    // Empty: the whole index list is one range drawn with the object's material.
-    std::vector<SubMesh> subMeshes;
-    // Whether any vertex has a colour other than white: only then do the shaders read it.
-    bool hasVertexColours = false;
-    Bounds bounds() const;
 };
 
 struct Object {

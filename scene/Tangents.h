@@ -2,7 +2,7 @@
 // MikkTSpace does (the convention glTF and most baking tools assume). No GL here.
 #pragma once
 
-#include "scene/Scene.h"
+#include "scene/Mesh.h"
 
 namespace manylights {
 
