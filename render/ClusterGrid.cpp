@@ -30,25 +30,27 @@ int tilesAlong(int pixels) { return (pixels + kClusterTileSize - 1) / kClusterTi
 
 }  // namespace
 
-gl::Defines clusterGridDefines(gl::Defines defines)
+gl::Defines clusterGridDefines(gl::Defines defines, int slices)
 {
     addLightBatchDefines(defines);
     defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(kClusterTileSize));
-    defines.emplace_back("CLUSTER_SLICES", std::to_string(kClusterSlices));
+    ML_ASSERT(slices >= 1 && slices <= 32);
+    defines.emplace_back("CLUSTER_SLICES", std::to_string(slices));
     return defines;
 }
 
-ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout)
-    : tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
-             clusterGridDefines(gbufferDefines(gbufferLayout))),
-      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, clusterGridDefines({}))
+ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, int slices)
+    : slices_(slices),
+      tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
+             clusterGridDefines(gbufferDefines(gbufferLayout), slices)),
+      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, clusterGridDefines({}, slices))
 {
 }
 
-std::uint32_t ClusterGrid::lightsPerBatch(int width, int height)
+std::uint32_t ClusterGrid::lightsPerBatch(int width, int height, int slices)
 {
-    const std::size_t clusters =
-        static_cast<std::size_t>(tilesAlong(width)) * static_cast<std::size_t>(tilesAlong(height)) * kClusterSlices;
+    const std::size_t clusters = static_cast<std::size_t>(tilesAlong(width)) *
+                                 static_cast<std::size_t>(tilesAlong(height)) * static_cast<std::size_t>(slices);
     const std::size_t affordableWords = kClusterMaskBudgetBytes / (sizeof(std::uint32_t) * clusters);
     return static_cast<std::uint32_t>(std::clamp<std::size_t>(affordableWords * 32, 32, kLightsPerBatch));
 }
@@ -58,7 +60,7 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
     gridWidth_ = tilesAlong(width);
     gridHeight_ = tilesAlong(height);
     const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
-    clusterCount_ = tiles * kClusterSlices;
+    clusterCount_ = tiles * static_cast<std::uint32_t>(slices_);
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
     if (!tileSlices_ || tileSlices_.size() != tileBytes) {
         tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, 0);
@@ -99,7 +101,7 @@ void ClusterGrid::coverDepthRange(float nearest, float farthest, const std::vect
     ML_ASSERT(covered.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
     const float range[2] = {nearest, farthest};
     glClearNamedBufferData(tileDepthRanges_.id(), GL_RG32F, GL_RG, GL_FLOAT, range);
-    const std::uint32_t allSlices = (1u << kClusterSlices) - 1u;
+    const std::uint32_t allSlices = slices_ == 32 ? ~0u : (1u << slices_) - 1u;
     std::vector<std::uint32_t> slices(covered.size());
     for (std::size_t tile = 0; tile < covered.size(); ++tile)
         slices[tile] = covered[tile] ? allSlices : 0u;

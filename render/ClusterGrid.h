@@ -30,15 +30,17 @@ inline constexpr int kClusterSlices = 8;
 // kLightsPerBatch lights would need more, the batches get smaller (in whole mask words).
 inline constexpr std::size_t kClusterMaskBudgetBytes = std::size_t{64} << 20;
 
-// `defines` plus the light batch's and the grid's, for programs that include lib/clusters.glsl.
-gl::Defines clusterGridDefines(gl::Defines defines);
+// `defines` plus the light batch's and the grid's (its slices per tile, at most 32: one bit each
+// in lib/clusters.glsl's tileOccupiedSlices), for programs that include lib/clusters.glsl.
+gl::Defines clusterGridDefines(gl::Defines defines, int slices = kClusterSlices);
 
 class ClusterGrid {
 public:
-    explicit ClusterGrid(GBufferLayout gbufferLayout);
+    // `slices` per tile: the programs that read the grid are compiled for the same number.
+    explicit ClusterGrid(GBufferLayout gbufferLayout, int slices = kClusterSlices);
 
     // The most lights one batch takes for an image of this size (a multiple of 32).
-    static std::uint32_t lightsPerBatch(int width, int height);
+    static std::uint32_t lightsPerBatch(int width, int height, int slices = kClusterSlices);
 
     // Sizes the buffers for the image and the frame's largest light batch.
     void resize(int width, int height, std::uint32_t largestBatch);
@@ -60,6 +62,7 @@ public:
     int gridHeight() const { return gridHeight_; }
 
 private:
+    int slices_;
     gl::Program tiles_;
     gl::Program assign_;
     int gridWidth_ = 0;
