@@ -155,7 +155,8 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
              load(material.specularMap, TextureColourSpace::Linear, "specular_map"),
              load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
              load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map"),
-             load(material.metallicRoughnessMap, TextureColourSpace::Linear, "metallic-roughness map")});
+             load(material.metallicRoughnessMap, TextureColourSpace::Linear, "metallic-roughness map"),
+             load(material.opacityMap, TextureColourSpace::Linear, "opacity_map")});
         // The two share the specular map's unit (scene/Scene.h MaterialMapSlot).
         ML_ASSERT(!materialMaps_.back().specular || !materialMaps_.back().metallicRoughness);
     }
@@ -554,7 +555,7 @@ MaterialVariant GpuScene::materialVariant(const Material& material, const Materi
     return static_cast<MaterialVariant>(
         (maps.diffuse ? kDiffuseMapBit : 0) | (maps.specular ? kSpecularMapBit : 0) |
         (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0) |
-        (maps.metallicRoughness ? kMetallicRoughnessMapBit : 0) |
+        (maps.metallicRoughness ? kMetallicRoughnessMapBit : 0) | (maps.opacity ? kOpacityMapBit : 0) |
         (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
         // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
         (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
@@ -594,11 +595,13 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
         kSpecularUvTransform = 53,
         kNormalUvTransform = 56,
         kEmissiveUvTransform = 59,
+        kOpacityUvTransform = 62,
     };
     constexpr GLuint kDiffuseUnit = bindings::DIFFUSE_MAP_UNIT;
     constexpr GLuint kSpecularUnit = bindings::SPECULAR_MAP_UNIT;
     constexpr GLuint kNormalUnit = bindings::NORMAL_MAP_UNIT;
     constexpr GLuint kEmissiveUnit = bindings::EMISSIVE_MAP_UNIT;
+    constexpr GLuint kOpacityUnit = bindings::OPACITY_MAP_UNIT;
     const auto glWrap = [](TextureWrap wrap) -> GLenum {
         switch (wrap) {
         case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
@@ -624,6 +627,7 @@ void GpuScene::bindMaterial(const gl::Program& program, const Material& material
     if (bind(maps.normal, kNormalUnit, kNormalUvTransform, kNormalSlot))
         program.set(kNormalScale, material.normalScale);
     bind(maps.emissive, kEmissiveUnit, kEmissiveUvTransform, kEmissiveSlot);
+    bind(maps.opacity, kOpacityUnit, kOpacityUvTransform, kOpacitySlot);
 }
 
 Bounds GpuScene::objectsWorldBounds() const

@@ -165,6 +165,7 @@ private:
         const gl::MipmappedTexture2D* normal = nullptr;
         const gl::MipmappedTexture2D* emissive = nullptr;
         const gl::MipmappedTexture2D* metallicRoughness = nullptr;  // in the specular map's unit
+        const gl::MipmappedTexture2D* opacity = nullptr;
     };
     struct DrawItem {
         glm::mat4 model;

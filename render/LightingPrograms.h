@@ -67,9 +67,10 @@ inline constexpr MaterialVariant kVertexColoursBit = 64;
 inline constexpr MaterialVariant kSpecularTintBit = 128;   // Material::specularTint not zero
 inline constexpr MaterialVariant kFlipBackFacesBit = 256;  // Sides::BothFlipped
 inline constexpr MaterialVariant kBlendBit = 512;          // AlphaMode::Blend: the coverage is the opacity
+inline constexpr MaterialVariant kOpacityMapBit = 1024;    // Material::opacityMap
 // The bits that mean a texture is bound per draw (such draws are not instanced).
 inline constexpr MaterialVariant kTextureBits =
-    kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit;
+    kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit | kOpacityMapBit;
 // What a depth-only pass (shaders/shadow_depth.*) needs of a variant: a masked surface's coverage.
 inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
 {

@@ -451,6 +451,7 @@ Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library,
     material.diffuseMap = mapPath(library, source.name, "map_Kd", source.diffuse_texname);
     material.specularMap = mapPath(library, source.name, "map_Ks", source.specular_texname);
     material.emissiveMap = mapPath(library, source.name, "map_Ke", source.emissive_texname);
+    material.opacityMap = mapPath(library, source.name, "map_d", source.alpha_texname);
     // `norm` is the explicit normal map; map_Bump/bump is used as one too (what exporters
     // write there today), with -bm as its strength.
     if (!source.normal_texname.empty()) {
@@ -465,13 +466,14 @@ Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library,
     readTextureOptions(source.diffuse_texopt, library, source.name, material, kDiffuseSlot);
     readTextureOptions(source.specular_texopt, library, source.name, material, kSpecularSlot);
     readTextureOptions(source.emissive_texopt, library, source.name, material, kEmissiveSlot);
+    readTextureOptions(source.alpha_texopt, library, source.name, material, kOpacitySlot);
     readTextureOptions(source.normal_texname.empty() ? source.bump_texopt : source.normal_texopt, library, source.name,
                        material, kNormalSlot);
     // `d` (tinyobjloader also reads `Tr` into it as 1 − Tr): below 1 the material is transparent.
     if (!std::isfinite(source.dissolve))
         fail(library.displayName, "material '" + source.name + "': non-finite d or Tr");
     material.opacity = std::clamp(static_cast<float>(source.dissolve), 0.0f, 1.0f);
-    if (material.opacity < 1.0f)
+    if (material.opacity < 1.0f || !material.opacityMap.empty())
         material.alphaMode = AlphaMode::Blend;
     // An MTL without Kd leaves it 0 in tinyobjloader, which would blacken its map_Kd: a
     // texture with no Kd is taken at face value (Kd = 1).

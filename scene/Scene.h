@@ -110,7 +110,14 @@ struct LightSet {
 // The texture slots of a material, in the order of Material::uvTransforms and of the shaders'
 // uv transform array (shaders/lib/material.glsl). The metallic-roughness map takes the specular
 // map's slot: a material has one or the other (a glTF material never has a specular map).
-enum MaterialMapSlot : std::size_t { kDiffuseSlot, kSpecularSlot, kNormalSlot, kEmissiveSlot, kMaterialMapSlots };
+enum MaterialMapSlot : std::size_t {
+    kDiffuseSlot,
+    kSpecularSlot,
+    kNormalSlot,
+    kEmissiveSlot,
+    kOpacitySlot,
+    kMaterialMapSlots
+};
 
 // Opaque ignores the coverage; Mask cuts the surface where it is below alphaCutoff; Blend draws
 // the surface see-through, "over" what lies behind it with the coverage as its opacity
@@ -167,7 +174,7 @@ struct Material {
     // Texture-coordinate transforms per map slot (glTF KHR_texture_transform), in the mesh's uv
     // convention (origin at the bottom left): uv' = M · (u, v, 1). Identity unless a file says.
     std::array<glm::mat3, kMaterialMapSlots> uvTransforms{glm::mat3{1.0f}, glm::mat3{1.0f}, glm::mat3{1.0f},
-                                                          glm::mat3{1.0f}};
+                                                          glm::mat3{1.0f}, glm::mat3{1.0f}};
     std::array<MapWrap, kMaterialMapSlots> wraps{};  // repeat unless a file's sampler says
 
     // Coverage: opacity (the scene file's `opacity`, glTF baseColorFactor's alpha, MTL `d`)
@@ -176,6 +183,10 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     float opacity = 1.0f;
+    // A map whose red channel multiplies the coverage (the scene file's `opacity_map`, MTL
+    // `map_d`; a grey image reads the same in every channel). A material with one is
+    // transparent (AlphaMode::Blend).
+    std::string opacityMap;
     Sides sides = Sides::BothWithMeshNormal;
 };
 

@@ -618,7 +618,7 @@ private:
     Material readMaterial(const Node& node) const
     {
         expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map",
-                          "normal_scale", "opacity"});
+                          "normal_scale", "opacity", "opacity_map"});
         Material material;
         if (const auto diffuse = member(node, "diffuse"))
             material.diffuse = colour(*diffuse);
@@ -642,6 +642,9 @@ private:
             if (material.opacity < 1.0f)
                 material.alphaMode = AlphaMode::Blend;
         }
+        material.opacityMap = texturePath(node, "opacity_map");
+        if (!material.opacityMap.empty())
+            material.alphaMode = AlphaMode::Blend;
         return material;
     }
 

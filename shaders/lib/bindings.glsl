@@ -41,6 +41,7 @@ const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl
 const int POINT_SHADOWS_UNIT = 11;      // lib/shadows.glsl
+const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl

@@ -12,7 +12,8 @@ layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
 // 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
-// with the reversed normal, 9 blended (render/LightingPrograms.h: MaterialVariant). A missing map leaves
+// with the reversed normal, 9 blended, 10 opacity map (render/LightingPrograms.h:
+// MaterialVariant). A missing map leaves
 // the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
 // sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
 // for every fragment, a discard that can never run would still keep the depth test from running
@@ -42,6 +43,7 @@ layout(location = 50) uniform mat3x2 diffuseUvTransform;
 layout(location = 53) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's
 layout(location = 56) uniform mat3x2 normalUvTransform;
 layout(location = 59) uniform mat3x2 emissiveUvTransform;
+layout(location = 62) uniform mat3x2 opacityUvTransform;
 
 layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
 // Linear. A Blinn-Phong specular map, or (bit 4) glTF's metallic-roughness map: G roughness,
@@ -49,7 +51,8 @@ layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;   // sRGB stora
 layout(binding = SPECULAR_MAP_UNIT) uniform sampler2D specularMap;
 layout(binding = NORMAL_MAP_UNIT) uniform sampler2D normalMap;    // tangent space, OpenGL convention (+Y up)
 // Unit 15: units 9-14 hold the shadow and occlusion maps (shaders/lib/shadows.glsl).
-layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
+layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;
+layout(binding = OPACITY_MAP_UNIT) uniform sampler2D opacityMap;  // red channel: a coverage factor  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -65,6 +68,7 @@ const int kAlphaMask = 32;
 const int kHasVertexColours = 64;
 const int kHasSpecularTint = 128;
 const int kFlipBackFaces = 256;
+const int kHasOpacityMap = 1024;
 
 // The normal map's tangent-space normal, taken to world space: the interpolated tangent is
 // re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
@@ -116,6 +120,8 @@ Surface meshSurface()
         base *= texel.rgb;
         coverage *= texel.a;
     }
+    if ((materialVariant & kHasOpacityMap) != 0)
+        coverage *= texture(opacityMap, opacityUvTransform * vec3(uv, 1.0)).r;
     // glTF alphaMode MASK: fully there at or above the cutoff, absent below it. The same test
     // cuts the shadow casters (shaders/shadow_depth.frag).
 #if (MATERIAL_VARIANT & 32) != 0

@@ -80,6 +80,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::Sampler, "ambientOcclusionMap"}, AMBIENT_OCCLUSION_UNIT},
         {{Kind::Sampler, "rawOcclusion"}, RAW_OCCLUSION_UNIT},
         {{Kind::Sampler, "emissiveMap"}, EMISSIVE_MAP_UNIT},
+        {{Kind::Sampler, "opacityMap"}, OPACITY_MAP_UNIT},
         {{Kind::Image, "lightEvaluations"}, LIGHT_EVALUATIONS_IMAGE_UNIT},
         {{Kind::Image, "inRangeCounts"}, IN_RANGE_COUNTS_IMAGE_UNIT},
         {{Kind::Image, "rawOcclusion"}, OCCLUSION_IMAGE_UNIT},
@@ -161,6 +162,7 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     glass.specularMap = textures + "speckle.png";
     glass.normalMap = textures + "bumps.png";
     glass.emissiveMap = textures + "brick.png";
+    glass.opacityMap = textures + "speckle.png";
     scene.materials.push_back(glass);
     Object pane = scene.objects.front();
     pane.material = scene.materials.size() - 1;

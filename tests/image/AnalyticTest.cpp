@@ -767,6 +767,40 @@ TEST_P(Analytic, TransparentSurfacesNearerAndFartherThanEveryOpaqueOneGetTheirLi
     }
 }
 
+TEST_P(Analytic, OpacityMapScalesTheCoverage)
+{
+    // The half-transparent quad above with opacity 0.8 and a constant grey opacity map of 128:
+    // coverage = 0.8 · 128/255 (the map's red channel, linear), so the pixel is
+    // c · quad + (1 − c) · plane.
+    const auto dir = scratchDirectory();
+    std::vector<unsigned char> grey(8 * 8 * 3, 128);
+    ASSERT_NE(stbi_write_png((dir / "grey.png").string().c_str(), 8, 8, 3, grey.data(), 8 * 3), 0);
+    const std::string scene = std::string("{") + kTopCamera + R"(,
+        "ambient": [0.2, 0.2, 0.2],
+        "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
+        "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
+                      "glass": {"diffuse": [1, 0.5, 0.25], "opacity": 0.8, "opacity_map": "grey.png"}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
+                    {"mesh": {"primitive": "plane", "size": [2, 2]}, "material": "glass",
+                     "transform": {"translate": [0, 1, 0]}}]})";
+    const glm::dvec3 eye(0, 10, 0);
+    const glm::dvec3 plane(0.5 * 1.2);
+    const glm::dvec3 glass = glm::dvec3(1.0, 0.5, 0.25) * 1.2;
+    const double coverage = 0.8 * 128.0 / 255.0;
+    int covered = 0;
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        const auto under = rayCrossesRectangle(eye, p, 1.0, 0.0, 1.0, 1.0);
+        if (!under)
+            return std::nullopt;
+        if (!*under)
+            return plane;
+        ++covered;
+        return over(glass, coverage, plane);
+    };
+    EXPECT_EQ(checkEveryPixel(scene, expected, "65x65", dir), 65 * 65);
+    EXPECT_GT(covered, 100);
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
 
 }  // namespace

@@ -111,15 +111,18 @@ TEST(ObjModel, TextureOptionsOffsetScaleAndClampTheMap)
 }
 
 // `d` below 1 (or `Tr` above 0, which tinyobjloader reads as d = 1 − Tr) makes the material
-// transparent with that opacity; `d 1` keeps it opaque.
+// transparent with that opacity; `d 1` keeps it opaque; `map_d` names an opacity map.
 TEST(ObjModel, DissolveMakesTheMaterialTransparent)
 {
     const fs::path dir = scratch();
-    write(dir / "m.mtl", "newmtl glass\nKd 0.2 0.4 0.8\nd 0.25\nnewmtl tinted\nTr 0.5\nnewmtl solid\nd 1\n");
+    fs::copy_file(kModels / "brick.png", dir / "leaves.png");
+    write(dir / "m.mtl", "newmtl glass\nKd 0.2 0.4 0.8\nd 0.25\nnewmtl tinted\nTr 0.5\nnewmtl solid\nd 1\n"
+                         "newmtl cutout\nmap_d leaves.png\n");
     write(dir / "quads.obj", std::string("mtllib m.mtl\n") + kQuad +
-                                 "usemtl glass\nf 1 2 3\nusemtl tinted\nf 1 3 4\nusemtl solid\nf 2 3 4\n");
+                                 "usemtl glass\nf 1 2 3\nusemtl tinted\nf 1 3 4\nusemtl solid\nf 2 3 4\n"
+                                 "usemtl cutout\nf 1 2 4\n");
     const Model model = loadObj(dir / "quads.obj");
-    ASSERT_EQ(model.materials.size(), 3u);
+    ASSERT_EQ(model.materials.size(), 4u);
     std::map<std::string, const Material*> byName;
     for (const Material& material : model.materials)
         byName[material.name.substr(material.name.find('#') + 1)] = &material;
@@ -128,6 +131,10 @@ TEST(ObjModel, DissolveMakesTheMaterialTransparent)
     EXPECT_EQ(byName.at("tinted")->alphaMode, AlphaMode::Blend);
     EXPECT_EQ(byName.at("tinted")->opacity, 0.5f);
     EXPECT_EQ(byName.at("solid")->alphaMode, AlphaMode::Opaque);
+    // map_d: an opacity map, which makes the material transparent whatever its d.
+    EXPECT_EQ(fs::path(byName.at("cutout")->opacityMap), dir / "leaves.png");
+    EXPECT_EQ(byName.at("cutout")->alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(byName.at("cutout")->opacity, 1.0f);
 }
 
 TEST(ObjModel, WithoutUsemtlThereAreNoSubMeshes)
