@@ -85,7 +85,6 @@ TransparencyPass::TransparencyPass(const TechniqueOptions& options)
 void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler, bool everyLight)
 {
     lastEvaluations_ = 0;
-    lastLayers_ = 0;
     if (!scene.hasTransparentObjects())
         return;
     const FrameUniforms& frame = scene.frameUniforms();
@@ -144,7 +143,6 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
                 setLightBatch(program, batch);
                 return program;
             });
-            ++lastLayers_;
         }
     }
     glDisable(GL_BLEND);

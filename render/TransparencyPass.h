@@ -42,8 +42,6 @@ public:
     // The (pixel, light) pairs the last run evaluated; counted only when the options counted
     // work.
     std::uint64_t lastLightEvaluations() const { return lastEvaluations_; }
-    // Layers drawn and grid builds in the last run (one per light batch, or per layer and batch).
-    std::uint32_t lastLayerCount() const { return lastLayers_; }
 
 private:
     TechniqueOptions options_;
@@ -52,7 +50,6 @@ private:
     LightingProgram everyLightProgram_;
     gl::Buffer evaluations_;
     std::uint64_t lastEvaluations_ = 0;
-    std::uint32_t lastLayers_ = 0;
 };
 
 }  // namespace manylights
