@@ -181,7 +181,7 @@ std::string csvText(const std::vector<BenchResult>& results)
 {
     std::string text =
         "technique,lights,width,height,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_gpu_ms_median,"
-        "fragment_invocations,passes,light_evaluations,in_range_pairs\n";
+        "fragment_invocations,passes,light_evaluations,in_range_pairs,transparent_light_evaluations\n";
     for (const BenchResult& r : results) {
         std::string passes;
         for (const PassSummary& pass : r.measured.passes) {
@@ -203,6 +203,7 @@ std::string csvText(const std::vector<BenchResult>& results)
             passes,
             r.work ? std::to_string(r.work->lightEvaluations) : "",
             r.work ? std::to_string(r.work->inRangePairs) : "",
+            r.work ? std::to_string(r.work->transparentLightEvaluations) : "",
         };
         for (std::size_t i = 0; i < fields.size(); ++i) {
             if (i)

@@ -93,7 +93,8 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
                                                      "fragment_invocations",
                                                      "passes",
                                                      "light_evaluations",
-                                                     "in_range_pairs"};
+                                                     "in_range_pairs",
+                                                     "transparent_light_evaluations"};
     ASSERT_EQ(header, expectedHeader);
     const auto column = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
