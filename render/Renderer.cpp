@@ -50,6 +50,10 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
     glViewport(0, 0, targets_->width, targets_->height);
     glDisable(GL_CULL_FACE);  // scene meshes are not guaranteed closed or consistently wound
     ML_ASSERT(countWork_ || view != ViewMode::LightCount);
+    // The technique's shaders read this renderer's G-buffer and, when counting, write the
+    // counting images: they must have been made for both.
+    ML_ASSERT(technique.options().gbufferLayout == gbufferLayout_);
+    ML_ASSERT(technique.options().countWork == countWork_);
     lastView_ = view;
     if (countWork_) {
         const GLuint zero = 0;

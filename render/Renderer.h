@@ -50,7 +50,8 @@ public:
     const FrameTargets& targets() const { return *targets_; }
 
     // With counting on, each frame also counts its work (lastWorkCounts). The technique must
-    // have been made with TechniqueOptions::countWork.
+    // have been made with TechniqueOptions::countWork as this says, and with this renderer's
+    // G-buffer layout (renderFrame asserts both).
     void setCountWork(bool count) { countWork_ = count; }
     // in_range_pairs is counted per pixel over the lights that a per-tile cull keeps
     // (shaders/in_range.comp); with this on, over every light instead: the reference the
