@@ -636,17 +636,19 @@ std::optional<bool> rayCrossesRectangle(const glm::dvec3& eye, const glm::dvec3&
     return std::abs(q.x - cx) < hx && std::abs(q.z) < hz;
 }
 
-TEST_P(Analytic, HalfTransparentQuadIsTheOverOfBothShadedColours)
+// A 2x2 quad at y = 1 (kd (1, 0.5, 0.25), the material keys `glassKeys` make it transparent)
+// over a grey plane (kd 0.5), ambient 0.2, a directional light straight down (N·L = 1 on
+// both; no specular): each surface is kd · 1.2, and where the quad covers the plane the pixel
+// is coverage · quad + (1 − coverage) · plane. The position view holds the opaque surface (the
+// plane) under every pixel. Files go to `dir` (the glass keys may name a map there).
+void checkQuadOverPlane(const std::string& glassKeys, double coverage, const std::filesystem::path& dir)
 {
-    // A 2x2 quad at y = 1 (kd (1, 0.5, 0.25), opacity 0.4) over a grey plane (kd 0.5), ambient
-    // 0.2, a directional light straight down (N·L = 1 on both; no specular): each surface is
-    // kd · 1.2, and where the quad covers the plane the pixel is 0.4 · quad + 0.6 · plane.
-    // The position view holds the opaque surface (the plane) under every pixel.
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "ambient": [0.2, 0.2, 0.2],
         "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
         "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
-                      "glass": {"diffuse": [1, 0.5, 0.25], "opacity": 0.4}},
+                      "glass": {"diffuse": [1, 0.5, 0.25], )" +
+                              glassKeys + R"(}},
         "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
                     {"mesh": {"primitive": "plane", "size": [2, 2]}, "material": "glass",
                      "transform": {"translate": [0, 1, 0]}}]})";
@@ -661,10 +663,15 @@ TEST_P(Analytic, HalfTransparentQuadIsTheOverOfBothShadedColours)
         if (!*under)
             return plane;
         ++covered;
-        return over(glass, 0.4, plane);
+        return over(glass, coverage, plane);
     };
-    EXPECT_EQ(checkEveryPixel(scene, expected), 65 * 65);
+    EXPECT_EQ(checkEveryPixel(scene, expected, "65x65", dir), 65 * 65);
     EXPECT_GT(covered, 100);
+}
+
+TEST_P(Analytic, HalfTransparentQuadIsTheOverOfBothShadedColours)
+{
+    checkQuadOverPlane(R"("opacity": 0.4)", 0.4, scratchDirectory());
 }
 
 TEST_P(Analytic, OverlappingPanesInEitherOrderGiveTheBackToFrontResult)
@@ -769,36 +776,12 @@ TEST_P(Analytic, TransparentSurfacesNearerAndFartherThanEveryOpaqueOneGetTheirLi
 
 TEST_P(Analytic, OpacityMapScalesTheCoverage)
 {
-    // The half-transparent quad above with opacity 0.8 and a constant grey opacity map of 128:
-    // coverage = 0.8 · 128/255 (the map's red channel, linear), so the pixel is
-    // c · quad + (1 − c) · plane.
+    // The quad with opacity 0.8 and a constant grey opacity map of 128: coverage = 0.8 ·
+    // 128/255 (the map's red channel, linear).
     const auto dir = scratchDirectory();
     std::vector<unsigned char> grey(8 * 8 * 3, 128);
     ASSERT_NE(stbi_write_png((dir / "grey.png").string().c_str(), 8, 8, 3, grey.data(), 8 * 3), 0);
-    const std::string scene = std::string("{") + kTopCamera + R"(,
-        "ambient": [0.2, 0.2, 0.2],
-        "directional": {"direction": [0, -1, 0], "intensity": [1, 1, 1]},
-        "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]},
-                      "glass": {"diffuse": [1, 0.5, 0.25], "opacity": 0.8, "opacity_map": "grey.png"}},
-        "objects": [{"mesh": {"primitive": "plane", "size": [12, 12]}, "material": "grey"},
-                    {"mesh": {"primitive": "plane", "size": [2, 2]}, "material": "glass",
-                     "transform": {"translate": [0, 1, 0]}}]})";
-    const glm::dvec3 eye(0, 10, 0);
-    const glm::dvec3 plane(0.5 * 1.2);
-    const glm::dvec3 glass = glm::dvec3(1.0, 0.5, 0.25) * 1.2;
-    const double coverage = 0.8 * 128.0 / 255.0;
-    int covered = 0;
-    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
-        const auto under = rayCrossesRectangle(eye, p, 1.0, 0.0, 1.0, 1.0);
-        if (!under)
-            return std::nullopt;
-        if (!*under)
-            return plane;
-        ++covered;
-        return over(glass, coverage, plane);
-    };
-    EXPECT_EQ(checkEveryPixel(scene, expected, "65x65", dir), 65 * 65);
-    EXPECT_GT(covered, 100);
+    checkQuadOverPlane(R"("opacity": 0.8, "opacity_map": "grey.png")", 0.8 * 128.0 / 255.0, dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, Analytic, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
