@@ -530,26 +530,6 @@ std::vector<Bounds> GpuScene::transparentWorldBounds() const
     return bounds;
 }
 
-std::optional<std::pair<float, float>> GpuScene::transparentDepthRange() const
-{
-    const glm::vec3 eye(frame_.eye);
-    const glm::vec3 axis(frame_.viewAxis);
-    std::optional<std::pair<float, float>> range;
-    for (const DrawBatch& batch : batches_) {
-        const DrawItem& item = draws_[batch.firstItem];
-        if (!isTransparent(*item.material) || item.worldBounds.empty())
-            continue;
-        // The box's nearest and farthest points along the view axis.
-        const glm::vec3 centre = 0.5f * (item.worldBounds.min + item.worldBounds.max);
-        const glm::vec3 halfExtent = 0.5f * (item.worldBounds.max - item.worldBounds.min);
-        const float middle = glm::dot(centre - eye, axis);
-        const float reach = glm::dot(glm::abs(axis), halfExtent);
-        const std::pair<float, float> span{middle - reach, middle + reach};
-        range = range ? std::pair{std::min(range->first, span.first), std::max(range->second, span.second)} : span;
-    }
-    return range;
-}
-
 MaterialVariant GpuScene::materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range)
 {
     return static_cast<MaterialVariant>(

@@ -103,9 +103,6 @@ public:
     std::vector<TransparentLayer> transparentLayersBackToFront() const;
     // Draws a layer as drawObjects draws a batch, culling the other side's faces.
     void drawTransparentLayer(const TransparentLayer& layer, const MeshProgramFor& programFor) const;
-    // The view depths (along the view axis) the transparent items' world bounds span:
-    // nearest ≤ farthest; nullopt without transparent items.
-    std::optional<std::pair<float, float>> transparentDepthRange() const;
     // The transparent items' world bounds (empty bounds left out).
     std::vector<Bounds> transparentWorldBounds() const;
     // Depth-only passes (shadow maps, shaders/shadow_depth.*): draws the items whose world

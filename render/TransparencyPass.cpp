@@ -28,12 +28,12 @@ gl::Defines everyLightDefines(gl::Defines defines)
 // The grid's tiles that a transparent item's world bounds may cover on screen: the rectangle
 // around its box's projected corners, widened by a tile; every tile when a corner lies at or
 // behind the eye plane (the projection is not bounded there).
-std::vector<bool> coveredTiles(const GpuScene& scene, int tilesAcross, int tilesDown)
+std::vector<bool> coveredTiles(const std::vector<Bounds>& objects, const FrameUniforms& frame, int tilesAcross,
+                               int tilesDown)
 {
     std::vector<bool> covered(static_cast<std::size_t>(tilesAcross * tilesDown), false);
-    const FrameUniforms& frame = scene.frameUniforms();
     const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
-    for (const Bounds& bounds : scene.transparentWorldBounds()) {
+    for (const Bounds& bounds : objects) {
         glm::vec2 lo(std::numeric_limits<float>::max());
         glm::vec2 hi(-std::numeric_limits<float>::max());
         bool behindEye = false;
@@ -90,8 +90,20 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
     const FrameUniforms& frame = scene.frameUniforms();
     const float nearPlane = frame.projection.z;
     const float farPlane = frame.projection.w;
-    const auto depths = scene.transparentDepthRange();
-    if (!depths || depths->second <= nearPlane || depths->first >= farPlane)
+    const std::vector<Bounds> objects = scene.transparentWorldBounds();
+    // The view depths the objects' boxes span: each box's centre depth ± its extent along the
+    // view axis.
+    float nearest = std::numeric_limits<float>::max();
+    float farthest = -std::numeric_limits<float>::max();
+    const glm::vec3 eye(frame.eye);
+    const glm::vec3 axis(frame.viewAxis);
+    for (const Bounds& bounds : objects) {
+        const float middle = glm::dot(0.5f * (bounds.min + bounds.max) - eye, axis);
+        const float reach = glm::dot(glm::abs(axis), 0.5f * (bounds.max - bounds.min));
+        nearest = std::min(nearest, middle - reach);
+        farthest = std::max(farthest, middle + reach);
+    }
+    if (objects.empty() || farthest <= nearPlane || nearest >= farPlane)
         return;  // nothing transparent within the view's depth
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     const std::vector<LightBatch> batches =
@@ -106,8 +118,8 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
             grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
         grid_->resize(targets.width, targets.height, batches.front().size());
         // Widened so that rounding cannot put a surface of the objects outside the slices.
-        grid_->coverDepthRange(std::max(depths->first * 0.99f, nearPlane), std::min(depths->second * 1.01f, farPlane),
-                               coveredTiles(scene, grid_->gridWidth(), grid_->gridHeight()));
+        grid_->coverDepthRange(std::max(nearest * 0.99f, nearPlane), std::min(farthest * 1.01f, farPlane),
+                               coveredTiles(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
         if (!gridPerLayer)
             grid_->assignLights(scene, batches.front());
     }
