@@ -3,7 +3,8 @@
 # same scene with its panes only: the opaque lighting pass, the transparent grid and the
 # transparent draws (median wall ms of `render --frames`), the transparent fragments (forward's
 # transparent pairs over its lights, from --count-work) and what the draws would cost at the
-# opaque pass's cost per pixel (its share of covered pixels). Prints the machine and its load
+# opaque pass's cost per pixel (its share of covered pixels), and the lights the technique
+# evaluates per transparent fragment and per opaque pixel. Prints the machine and its load
 # first; read the figures as ratios within one run.
 #
 #   scripts/measure-transparency.sh            SIZE=640x360 TECHNIQUE=tiled scripts/measure-transparency.sh
@@ -31,6 +32,8 @@ for variant in whole panes; do
     --stats "$out/$variant-timed.json"
   "$ML" render "$scene" -o "$out/$variant-forward.png" --size "$size" --technique forward --count-work \
     --stats "$out/$variant-counted.json"
+  "$ML" render "$scene" -o "$out/$variant-culled.png" --size "$size" --technique "$technique" --count-work \
+    --stats "$out/$variant-culled.json"
 done
 python3 - "$out" "$technique" "$size" <<'PY'
 import json, sys
@@ -49,4 +52,7 @@ for variant, label in (("whole", "panes and drops"), ("panes", "panes only")):
     print(f"  {label:16s} opaque lighting {lighting:7.1f}  transparency grid {grid:6.1f}  draws {draws:7.1f}"
           f"  for {fragments} fragments ({100 * share:.0f} % of the pixels: the share is"
           f" {share * lighting:.1f} ms; draws {draws / (share * lighting):.1f}x it)")
+    culled = json.load(open(f"{out}/{variant}-culled.json"))
+    print(f"  {'':16s} lights evaluated per transparent fragment {culled['transparent_light_evaluations'] / fragments:.1f},"
+          f" per opaque pixel {culled['light_evaluations'] / (width * height):.1f}")
 PY
