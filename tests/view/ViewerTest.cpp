@@ -162,18 +162,25 @@ fs::path scratch()
     return dir;
 }
 
-// Runs the viewer under a fresh Xvfb with `script`, in `dir` (where its F12 screenshots land).
+// Runs the viewer under a fresh Xvfb with `script`, in `dir` (where its F12 screenshots land),
+// and returns the viewer's exit status. The viewer writes it to a file: xvfb-run's own status
+// replaces it when xvfb-run fails to clean up after the viewer (status 5, seen in CI).
 int runViewer(const fs::path& dir, const std::string& script, const std::string& args = "")
 {
     {
         std::ofstream out(dir / "script.txt");
         out << script;
     }
+    fs::remove(dir / "viewer.status");
     const std::string command = "cd '" + dir.string() +
-                                "' && xvfb-run -a -s '-screen 0 1024x768x24' '" MANYLIGHTS_EXE
+                                "' && xvfb-run -a -s '-screen 0 1024x768x24' sh -c "
+                                "'\"$0\" \"$@\" >viewer.log 2>&1; echo $? >viewer.status' '" MANYLIGHTS_EXE
                                 "' view --shader-dir '' --size 160x90 --script script.txt " +
-                                args + " >viewer.log 2>&1";
-    return run(command);
+                                args;
+    const int xvfbStatus = run(command);
+    std::ifstream status(dir / "viewer.status");
+    int viewerStatus = 0;
+    return status >> viewerStatus ? viewerStatus : xvfbStatus;
 }
 
 void expectEqualWithinOneLevel(const Png& shot, const Png& reference, const std::string& what)
