@@ -62,10 +62,10 @@ GpuLight packLight(const Light& light, float attenuationThreshold)
     return packed;
 }
 
-FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::uint32_t lightCount)
+FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, int width, int height,
+                                std::uint32_t lightCount)
 {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const Camera& camera = scene.camera;
     FrameUniforms frame{};
     frame.view = glm::lookAt(camera.eye, camera.lookAt, camera.up);
     const glm::mat4 projection =
@@ -90,6 +90,7 @@ FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::
 
 GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     : scene_(scene),
+      camera_(scene.camera),
       textures_(scene.encodedImages),
       lightingFeatures_(lightingFeaturesOf(lights, scene.directional)),
       restLights_(lights),
@@ -274,10 +275,25 @@ void GpuScene::groupDrawsIntoBatches()
 
 void GpuScene::setViewport(int width, int height)
 {
-    frame_ = makeFrameUniforms(scene_, width, height, static_cast<std::uint32_t>(lightCount_));
+    viewportWidth_ = width;
+    viewportHeight_ = height;
+    updateFrameUniforms();
+}
+
+void GpuScene::setCamera(const Camera& camera)
+{
+    camera_ = camera;
+    updateFrameUniforms();
+}
+
+void GpuScene::updateFrameUniforms()
+{
+    frame_ =
+        makeFrameUniforms(scene_, camera_, viewportWidth_, viewportHeight_, static_cast<std::uint32_t>(lightCount_));
     frame_.time = glm::vec4(static_cast<float>(time_), 0.0f, 0.0f, 0.0f);
     frame_.terms = terms_;
     frameBuffer_.update(0, sizeof(FrameUniforms), &frame_);
+    // The draw order and the instance records follow the camera.
     orderFrontToBack();
     writeInstances();
 }

@@ -61,7 +61,8 @@ struct FrameUniforms {
 };
 
 // The camera matrices for an image of the given size.
-FrameUniforms makeFrameUniforms(const Scene& scene, int width, int height, std::uint32_t lightCount);
+FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, int width, int height,
+                                std::uint32_t lightCount);
 
 class GpuScene {
 public:
@@ -112,6 +113,9 @@ public:
     std::size_t drawObjectsDepthOnly(const MeshProgramFor& programFor,
                                      const std::function<bool(const Bounds&)>& keep) const;
     void setViewport(int width, int height);
+    // The camera the frame uniforms are made for; the scene's own until set (the viewer moves it).
+    void setCamera(const Camera& camera);
+    const Camera& camera() const { return camera_; }
     // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
     // update) and the frame uniforms' time. A pure function of t: no state carries over.
     void setTime(double t);
@@ -203,7 +207,13 @@ private:
     // caller then rewrites the instance records.
     void orderFrontToBack();
 
+    // The frame uniforms of this camera and viewport, with terms_ and time_.
+    void updateFrameUniforms();
+
     const Scene& scene_;
+    Camera camera_;
+    int viewportWidth_ = 1;
+    int viewportHeight_ = 1;
     TextureCache textures_;
     LightingFeatures lightingFeatures_;
     std::vector<MaterialMaps> materialMaps_;  // per scene material

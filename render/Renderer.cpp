@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "core/Error.h"
 #include "render/LightBatches.h"
@@ -28,34 +29,86 @@ void checkSize(int width, int height)
                     std::to_string(maxHeight) + ")");
 }
 
-}  // namespace
-
-Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height,
-                   GBufferLayout gbufferLayout)
-    : gpuScene_(scene, lights), gbufferLayout_(gbufferLayout), ambientOcclusion_(scene.ssao)
+// The desc with its zeros replaced by what they stand for.
+RendererDesc withDefaultsFilledIn(RendererDesc desc)
 {
-    resize(width, height);
+    desc.width = desc.width == 0 ? kDefaultImageWidth : desc.width;
+    desc.height = desc.height == 0 ? kDefaultImageHeight : desc.height;
+    desc.supersample = std::max(desc.supersample, 1);
+    return desc;
 }
 
-void Renderer::resize(int width, int height)
+}  // namespace
+
+Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, const RendererDesc& desc)
+    : gpuScene_(scene, lights), sceneAmbientOcclusion_(scene.ssao)
 {
-    checkSize(width, height);
+    apply(desc);
+}
+
+void Renderer::apply(const RendererDesc& requested)
+{
+    const RendererDesc desc = withDefaultsFilledIn(requested);
+    checkSize(desc.width, desc.height);
+    ML_ASSERT(desc.width % desc.supersample == 0 && desc.height % desc.supersample == 0);
+    const bool first = targets_ == nullptr;
+    const RendererDesc old = std::exchange(desc_, desc);
+    if (first || desc.width != old.width || desc.height != old.height || desc.gbufferLayout != old.gbufferLayout)
+        makeTargets();
+    if (desc.gbufferLayout != old.gbufferLayout || desc.inRangeBruteForce != old.inRangeBruteForce)
+        inRangeProgram_ = gl::Program();
+    if (first || desc.anisotropy != old.anisotropy)
+        gpuScene_.setAnisotropy(desc.anisotropy);
+    if (first || desc.lightingTerms != old.lightingTerms)
+        gpuScene_.setLightingTerms(desc.lightingTerms);
+    shadowMaps_.setLocalLightBudget(desc.shadowLights);
+    shadowMaps_.setDirectionalShadows(desc.directionalShadows);
+    shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);
+}
+
+void Renderer::makeTargets()
+{
+    const bool newLayout = targets_ && targets_->gbuffer.layout() != desc_.gbufferLayout;
     targets_.reset();  // free the old targets before allocating the new ones
-    targets_ = std::make_unique<FrameTargets>(width, height, gbufferLayout_);
-    gpuScene_.setViewport(width, height);
+    targets_ = std::make_unique<FrameTargets>(desc_.width, desc_.height, desc_.gbufferLayout);
+    gpuScene_.setViewport(desc_.width, desc_.height);
+    if (newLayout) {
+        viewProgram_ = gl::Program();
+        shadowingViewProgram_ = gl::Program();
+        ssao_.reset();
+    }
+}
+
+TechniqueOptions Renderer::techniqueOptions() const
+{
+    return {.countWork = desc_.countWork, .gbufferLayout = desc_.gbufferLayout, .localShadows = desc_.shadowLights > 0};
+}
+
+Technique& Renderer::technique(std::string_view name)
+{
+    const TechniqueOptions options = techniqueOptions();
+    const auto made = std::find_if(techniques_.begin(), techniques_.end(), [&](const auto& technique) {
+        return technique->name() == name && technique->options() == options;
+    });
+    if (made != techniques_.end())
+        return **made;
+    std::unique_ptr<Technique> technique = makeTechnique(name, options);
+    if (!technique)
+        throw Error("unknown technique '" + std::string(name) + "'");
+    techniques_.push_back(std::move(technique));
+    return *techniques_.back();
 }
 
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 {
     glViewport(0, 0, targets_->width, targets_->height);
     glDisable(GL_CULL_FACE);  // scene meshes are not guaranteed closed or consistently wound
-    ML_ASSERT(countWork_ || view != ViewMode::LightCount);
+    ML_ASSERT(desc_.countWork || view != ViewMode::LightCount);
     // The technique's shaders read this renderer's G-buffer and, when counting, write the
-    // counting images: they must have been made for both.
-    ML_ASSERT(technique.options().gbufferLayout == gbufferLayout_);
-    ML_ASSERT(technique.options().countWork == countWork_);
+    // counting images: they must have been made for both (technique() makes them so).
+    ML_ASSERT(technique.options() == techniqueOptions());
     lastView_ = view;
-    if (countWork_) {
+    if (desc_.countWork) {
         const GLuint zero = 0;
         glClearTexImage(targets_->lightEvaluations.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
         glBindImageTexture(bindings::LIGHT_EVALUATIONS_IMAGE_UNIT, targets_->lightEvaluations.id(), 0, GL_FALSE, 0,
@@ -93,26 +146,26 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
                 shadowingViewProgram_ =
                     gl::Program("shadowing view",
                                 {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadowing_view.frag"}},
-                                gbufferDefines(gbufferLayout_));
+                                gbufferDefines(desc_.gbufferLayout));
             shadowingViewProgram_.set(0, static_cast<int>(view));
             drawCoveredPixels(shadowingViewProgram_);
         } else {
             if (!viewProgram_)
                 viewProgram_ = gl::Program(
                     "gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}},
-                    gbufferDefines(gbufferLayout_));
+                    gbufferDefines(desc_.gbufferLayout));
             viewProgram_.set(0, static_cast<int>(view));
             drawCoveredPixels(viewProgram_);
         }
     }
-    displayed_ = display_ && (view == ViewMode::Final || view == ViewMode::Volumes);
+    displayed_ = desc_.display && (view == ViewMode::Final || view == ViewMode::Volumes);
     // The identity needs no pass: the lit image is then the picture (and a PNG of it is
     // round(255 · clamp(colour, 0, 1)) exactly, as the contract's default look).
-    displayPassRan_ = displayed_ && (!display_->isIdentity() || supersample_ > 1);
+    displayPassRan_ = displayed_ && (!desc_.display->isIdentity() || desc_.supersample > 1);
     if (displayPassRan_)
-        displayPass_.run(targets_->lit, *display_, supersample_, profiler_);
+        displayPass_.run(targets_->lit, *desc_.display, desc_.supersample, profiler_);
     FrameSample sample = profiler_.endFrame();
-    if (countWork_)
+    if (desc_.countWork)
         countWork();
     return sample;
 }
@@ -122,12 +175,13 @@ void Renderer::prepareShadowing(ViewMode view)
     shadowMaps_.update(gpuScene_, profiler_);
     // The ssao view shows the occlusion the scene's settings would give, even where the scene
     // leaves it off.
-    if (ambientOcclusion_.enabled || view == ViewMode::Ssao) {
+    const AmbientOcclusion& occlusion = ambientOcclusion();
+    if (occlusion.enabled || view == ViewMode::Ssao) {
         if (!ssao_)
-            ssao_ = std::make_unique<Ssao>(gbufferLayout_);
-        ssao_->run(gpuScene_, *targets_, ambientOcclusion_, profiler_);
+            ssao_ = std::make_unique<Ssao>(desc_.gbufferLayout);
+        ssao_->run(gpuScene_, *targets_, occlusion, profiler_);
     }
-    shadowMaps_.bind(ambientOcclusion_.enabled);
+    shadowMaps_.bind(occlusion.enabled);
 }
 
 namespace {
@@ -181,10 +235,10 @@ void Renderer::countWork()
     glBindImageTexture(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, targets_->inRangeCounts.id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_R32UI);
     if (!inRangeProgram_) {
-        gl::Defines defines = gbufferDefines(gbufferLayout_);
+        gl::Defines defines = gbufferDefines(desc_.gbufferLayout);
         addLightBatchDefines(defines);
         defines.emplace_back("LIGHTS_PER_BATCH", std::to_string(kLightsPerBatch) + "u");
-        if (inRangeBruteForce_)
+        if (desc_.inRangeBruteForce)
             defines.emplace_back("BRUTE_FORCE", "1");
         inRangeProgram_ = gl::Program("in-range pairs", {{GL_COMPUTE_SHADER, "in_range.comp"}}, defines);
     }
@@ -239,13 +293,6 @@ Image Renderer::readColour() const
     for (std::size_t i = 0; i < counts.size(); ++i)
         std::fill_n(&image.rgb[i * 3], 3, static_cast<float>(counts[i]));
     return image;
-}
-
-void Renderer::setDisplay(const DisplaySettings& settings, int supersample)
-{
-    ML_ASSERT(supersample >= 1 && width() % supersample == 0 && height() % supersample == 0);
-    display_ = settings;
-    supersample_ = supersample;
 }
 
 Image Renderer::readDisplayed() const

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "gl/Program.h"
@@ -15,6 +16,7 @@
 #include "render/ShadowMaps.h"
 #include "render/Ssao.h"
 #include "render/Technique.h"
+#include "render/TextureCache.h"
 #include "render/TransparencyPass.h"
 #include "render/Views.h"
 #include "render/VolumeDrawer.h"
@@ -28,44 +30,77 @@ struct WorkCounts {
     std::uint64_t inRangePairs = 0;                 // (pixel, light) pairs with A·S > 0: the least possible
 };
 
+// Everything a Renderer is made with, and the one way its settings change (Renderer::apply).
+// Written with designated initialisers; a zero number means the default, so `{}` renders the
+// contract's default image.
+struct RendererDesc {
+    int width = 0;   // 0: kDefaultImageWidth
+    int height = 0;  // 0: kDefaultImageHeight
+    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    // Each frame also counts its work (lastWorkCounts); techniques are then made in their
+    // counting variants (TechniqueOptions::countWork), so their timings are not their own.
+    bool countWork = false;
+    // in_range_pairs counted over every light instead of the lights a per-tile cull keeps
+    // (shaders/in_range.comp): the reference the tests check the culled count against.
+    bool inRangeBruteForce = false;
+    // --shadow-lights: how many local lights get shadow maps (ShadowMaps); above 0, techniques
+    // are made in their variants that look the maps up (TechniqueOptions::localShadows).
+    int shadowLights = 0;
+    bool directionalShadows = true;         // the viewer's switch (ShadowMaps::setDirectionalShadows)
+    bool rebuildShadowsEveryFrame = false;  // --rebuild-shadows
+    // The scene's `ssao` settings when not set (the viewer edits them).
+    // ({} on the optionals: GCC asks for it of members a designated initialiser leaves out.)
+    std::optional<AmbientOcclusion> ambientOcclusion{};
+    // --anisotropy: 0 (kAutoAnisotropy) or 1 to kMaxRequestedAnisotropy.
+    int anisotropy = kAutoAnisotropy;
+    // The viewer's switches for the ambient, diffuse and specular terms (1 on, 0 off).
+    glm::vec3 lightingTerms{1.0f, 1.0f, 1.0f};
+    // The display pass (render/DisplayPass.h): when set, every frame of the Final and Volumes
+    // views ends with it, timed as its own passes. `supersample` (0: 1) must divide the size;
+    // the displayed picture is the size divided by it.
+    std::optional<DisplaySettings> display{};
+    int supersample = 0;
+
+    bool operator==(const RendererDesc&) const = default;
+};
+
+// The size of an image when none is asked for (docs/cli.md).
+inline constexpr int kDefaultImageWidth = 1280;
+inline constexpr int kDefaultImageHeight = 720;
+
 class Renderer {
 public:
     // Throws manylights::Error when the size exceeds what the GL implementation supports, or a
-    // material's texture cannot be loaded. Techniques rendered with it must have been made with
-    // the same TechniqueOptions::gbufferLayout.
-    Renderer(const Scene& scene, const std::vector<Light>& lights, int width, int height,
-             GBufferLayout gbufferLayout = kDefaultGBufferLayout);
+    // material's texture cannot be loaded.
+    Renderer(const Scene& scene, const std::vector<Light>& lights, const RendererDesc& desc = {});
 
-    // Rebuilds every size-dependent resource (the passes and programs stay).
-    void resize(int width, int height);
+    // Changes the settings to `desc`: a new size or G-buffer layout rebuilds the size-dependent
+    // targets (the passes and programs stay); the rest takes effect from the next frame.
+    void apply(const RendererDesc& desc);
+    const RendererDesc& desc() const { return desc_; }
+
+    // The technique `name` (techniqueNames()) in the variant the settings ask for, made on
+    // first use and kept: switching between techniques and back compiles nothing again.
+    // Throws manylights::Error for an unknown name or a shader that does not compile.
+    Technique& technique(std::string_view name);
+
     // Poses the animated scene at time t in seconds (GpuScene::setTime); 0 until called.
     void setTime(double t) { gpuScene_.setTime(t); }
-    // Recomputes the camera matrices after the scene's camera changed (the viewer moves it).
-    void refreshCamera() { gpuScene_.setViewport(width(), height()); }
-    void setLightingTerms(const glm::vec3& terms) { gpuScene_.setLightingTerms(terms); }
-    // --anisotropy: kAutoAnisotropy (the renderer's default) or 1 to kMaxRequestedAnisotropy.
-    void setAnisotropy(int requested) { gpuScene_.setAnisotropy(requested); }
+    // The camera frames are rendered from; the scene's own until set.
+    void setCamera(const Camera& camera) { gpuScene_.setCamera(camera); }
+    // The anisotropy the textures got from desc().anisotropy.
     float anisotropy() const { return gpuScene_.textures().anisotropy(); }
     // The lit image and the G-buffer of the last frame (the viewer shows the lit image).
     const FrameTargets& targets() const { return *targets_; }
-
-    // With counting on, each frame also counts its work (lastWorkCounts). The technique must
-    // have been made with TechniqueOptions::countWork as this says, and with this renderer's
-    // G-buffer layout (renderFrame asserts both).
-    void setCountWork(bool count) { countWork_ = count; }
-    // in_range_pairs is counted per pixel over the lights that a per-tile cull keeps
-    // (shaders/in_range.comp); with this on, over every light instead: the reference the
-    // tests check the culled count against.
-    void setInRangeBruteForce(bool bruteForce)
-    {
-        inRangeBruteForce_ = bruteForce;
-        inRangeProgram_ = gl::Program();
-    }
 
     // One frame: views Final, LightCount and Volumes run the technique (LightCount needs
     // counting on); the G-buffer views run the geometry pass and show that quantity (the
     // same for every technique). Waits for the GPU.
     FrameSample renderFrame(Technique& technique, ViewMode view);
+    FrameSample renderFrame(std::string_view techniqueName, ViewMode view)
+    {
+        return renderFrame(technique(techniqueName), view);
+    }
     const WorkCounts& lastWorkCounts() const { return workCounts_; }
 
     // The last frame's colour as linear floats, rows top to bottom; for the LightCount view,
@@ -74,13 +109,9 @@ public:
     // Which pixels of the last frame hold a surface.
     std::vector<bool> readCoverage() const;
 
-    // The display pass (render/DisplayPass.h): once set, every frame of the Final and Volumes
-    // views ends with it, timed as its own passes. `supersample` must divide the size; the
-    // displayed picture is the size divided by it.
-    void setDisplay(const DisplaySettings& settings, int supersample = 1);
     // The last frame's displayed picture (display-encoded, rows top to bottom; 8-bit values
     // as v / 255 after a display pass, the lit image itself where the settings are the
-    // identity); needs setDisplay and a Final or Volumes frame.
+    // identity); needs desc().display and a Final or Volumes frame.
     Image readDisplayed() const;
     // The log-average luminance of the last frame's surfaces (DisplayPass::logAverageLuminance),
     // for auto-exposure.
@@ -89,45 +120,55 @@ public:
     // displayed frame.
     const gl::Framebuffer* displayedFramebuffer() const;
 
-    // Shadows (the viewer's switches and the --shadow-lights budget) and ambient occlusion
-    // (on when the scene enables it; the viewer may change any setting).
-    ShadowMaps& shadowMaps() { return shadowMaps_; }
-    AmbientOcclusion& ambientOcclusion() { return ambientOcclusion_; }
+    // The shadow maps as the settings made them (what they rendered, which lights they chose).
+    const ShadowMaps& shadowMaps() const { return shadowMaps_; }
+    // Renders every shadow map again in the next frame, as after a change to the scene.
+    void invalidateShadowMaps() { shadowMaps_.invalidate(); }
+    // The ambient occlusion frames use: desc().ambientOcclusion, or the scene's.
+    const AmbientOcclusion& ambientOcclusion() const
+    {
+        return desc_.ambientOcclusion ? *desc_.ambientOcclusion : sceneAmbientOcclusion_;
+    }
 
     const GpuScene& gpuScene() const { return gpuScene_; }
     int width() const { return targets_->width; }
     int height() const { return targets_->height; }
 
 private:
-    GpuScene gpuScene_;
-    GBufferLayout gbufferLayout_;
-    std::unique_ptr<FrameTargets> targets_;
+    // What the settings ask of the techniques' shaders.
+    TechniqueOptions techniqueOptions() const;
+    // The targets for desc_'s size and layout, and what was made for the old layout dropped.
+    void makeTargets();
+    void prepareShadowing(ViewMode view);
     void countWork();
     void drawVolumeOverlay();
 
-    // The debug and counting programs are made on first use: most runs render the final image
-    // only and need not compile them.
-    gl::Program viewProgram_;
-    gl::Program inRangeProgram_;                   // made on first use of work counting
-    std::unique_ptr<VolumeDrawer> overlayDrawer_;  // made on first use of the volumes view
-    gl::Program overlayProgram_;
-    PassProfiler profiler_;
-    ShadowMaps shadowMaps_;
-    AmbientOcclusion ambientOcclusion_;
-    std::unique_ptr<Ssao> ssao_;  // made on first use
+    GpuScene gpuScene_;
+    const AmbientOcclusion sceneAmbientOcclusion_;
+    RendererDesc desc_;
+    std::unique_ptr<FrameTargets> targets_;
+    // Every technique variant made so far (technique()); the programs stay compiled.
+    std::vector<std::unique_ptr<Technique>> techniques_;
     // One per set of technique options it has followed (made when the scene has transparent
     // objects): switching techniques keeps their programs. transparency_ is the last one run.
     std::vector<std::unique_ptr<TransparencyPass>> transparencyPasses_;
     TransparencyPass* transparency_ = nullptr;
-    gl::Program shadowingViewProgram_;  // made on first use of the shadow and ssao views
-    void prepareShadowing(ViewMode view);
-    bool countWork_ = false;
-    bool inRangeBruteForce_ = false;
+    PassProfiler profiler_;
+    ShadowMaps shadowMaps_;
+    DisplayPass displayPass_;
+
+    // The debug and counting programs are made on first use: most runs render the final image
+    // only and need not compile them. Those that read the G-buffer are made again after a
+    // change of layout.
+    gl::Program viewProgram_;
+    gl::Program shadowingViewProgram_;  // the shadow and ssao views
+    gl::Program inRangeProgram_;        // work counting
+    std::unique_ptr<Ssao> ssao_;
+    std::unique_ptr<VolumeDrawer> overlayDrawer_;  // the volumes view
+    gl::Program overlayProgram_;
+
     WorkCounts workCounts_;
     ViewMode lastView_ = ViewMode::Final;
-    std::optional<DisplaySettings> display_;
-    int supersample_ = 1;
-    DisplayPass displayPass_;
     bool displayed_ = false;       // the last frame has a displayed picture
     bool displayPassRan_ = false;  // ... made by the display pass (not the identity)
 };

@@ -67,18 +67,19 @@ std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassSumm
 BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const std::string& techniqueName,
                     ImageSize size, const BenchOptions& options)
 {
-    Renderer renderer(scene, lights, size.width, size.height, options.gbufferLayout);
-    renderer.setAnisotropy(options.anisotropy);
-    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
-    renderer.setDisplay(chooseDisplay(scene, options.display));
-    std::unique_ptr<Technique> technique = makeTechnique(
-        techniqueName, {.gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
-    ML_ASSERT(technique != nullptr);  // the command line only accepts known names
+    RendererDesc desc{.width = size.width,
+                      .height = size.height,
+                      .gbufferLayout = options.gbufferLayout,
+                      .shadowLights = options.shadowLights,
+                      .anisotropy = options.anisotropy,
+                      .display = chooseDisplay(scene, options.display)};
+    Renderer renderer(scene, lights, desc);
+    Technique& technique = renderer.technique(techniqueName);
     for (int i = 0; i < options.warmup; ++i)
-        renderer.renderFrame(*technique, ViewMode::Final);
+        renderer.renderFrame(technique, ViewMode::Final);
     std::vector<FrameSample> frames;
     for (int i = 0; i < options.frames; ++i)
-        frames.push_back(renderer.renderFrame(*technique, ViewMode::Final));
+        frames.push_back(renderer.renderFrame(technique, ViewMode::Final));
 
     BenchResult result;
     result.technique = techniqueName;
@@ -89,11 +90,9 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
-        std::unique_ptr<Technique> counting = makeTechnique(
-            techniqueName,
-            {.countWork = true, .gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
-        renderer.setCountWork(true);
-        renderer.renderFrame(*counting, ViewMode::Final);
+        desc.countWork = true;
+        renderer.apply(desc);
+        renderer.renderFrame(techniqueName, ViewMode::Final);
         result.work = renderer.lastWorkCounts();
     }
     return result;

@@ -158,24 +158,23 @@ void runRender(const RenderOptions& options)
     const std::vector<Light> lights = expandLights(scene, options.lights);
 
     HeadlessContext context({.debug = defaultDebugContext()});
-    Renderer renderer(scene, lights, options.width * options.supersample, options.height * options.supersample,
-                      options.gbufferLayout);
     const DisplaySettings display = chooseDisplay(scene, options.display);
-    if (hasExtension(options.output, ".png"))
-        renderer.setDisplay(display, options.supersample);
-    renderer.setTime(options.time);
-    renderer.setAnisotropy(options.anisotropy);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount || options.aovs;
-    renderer.setCountWork(countWork);
-    renderer.shadowMaps().setLocalLightBudget(options.shadowLights);
-    renderer.shadowMaps().setRebuildEveryFrame(options.rebuildShadows);
-    std::unique_ptr<Technique> technique = makeTechnique(
-        options.technique,
-        {.countWork = countWork, .gbufferLayout = options.gbufferLayout, .localShadows = options.shadowLights > 0});
-    ML_ASSERT(technique != nullptr);  // the command line only accepts known names
+    Renderer renderer(scene, lights,
+                      {.width = options.width * options.supersample,
+                       .height = options.height * options.supersample,
+                       .gbufferLayout = options.gbufferLayout,
+                       .countWork = countWork,
+                       .shadowLights = options.shadowLights,
+                       .rebuildShadowsEveryFrame = options.rebuildShadows,
+                       .anisotropy = options.anisotropy,
+                       .display = hasExtension(options.output, ".png") ? std::optional(display) : std::nullopt,
+                       .supersample = options.supersample});
+    renderer.setTime(options.time);
+    Technique& technique = renderer.technique(options.technique);
 
     if (options.timeRange) {
-        recordFrames(renderer, *technique, options);
+        recordFrames(renderer, technique, options);
         return;
     }
 
@@ -189,7 +188,7 @@ void runRender(const RenderOptions& options)
         if (terminal)
             std::fprintf(stderr, "\rrendering frame %d/%d (%s, %dx%d) ...\033[K", ++started, total,
                          options.technique.c_str(), options.width, options.height);
-        FrameSample sample = renderer.renderFrame(*technique, options.view);
+        FrameSample sample = renderer.renderFrame(technique, options.view);
         if (terminal && started == total)
             std::fprintf(stderr, "\r\033[K");
         return sample;
@@ -204,10 +203,10 @@ void runRender(const RenderOptions& options)
     AtomicFileSet outputs;
     // The work counts before --aovs renders its views.
     const WorkCounts work = renderer.lastWorkCounts();
-    outputs.stage(options.output, "image", encodeLastFrame(renderer, *technique, options, options.output));
+    outputs.stage(options.output, "image", encodeLastFrame(renderer, technique, options, options.output));
     if (measuring) {
         nlohmann::json stats = statisticsJson(options, scene, lights.size(), frames, context.description(),
-                                              renderer.anisotropy(), *technique, countWork ? &work : nullptr);
+                                              renderer.anisotropy(), technique, countWork ? &work : nullptr);
         stats["display"] = {{"exposure", display.exposure},
                             {"tonemap", std::string(toneCurveName(display.toneCurve))},
                             {"srgb", display.srgb},

@@ -100,6 +100,8 @@ private:
     static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
 
     Technique& technique();
+    // The renderer's settings as the viewer's state has them (the one route they take).
+    RendererDesc rendererDesc() const;
     void onKeyPressed(int key);
     // Prints the command-line options of the camera on screen (stdout), so that a view found
     // here can be rendered with `manylights render ... --eye ... --look-at ...`.
@@ -118,14 +120,20 @@ private:
     std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
 
     ViewOptions options_;
-    Scene scene_;
+    const Scene scene_;
     std::vector<Light> lights_;
     WindowContext window_;
     std::unique_ptr<Renderer> renderer_;
-    std::map<std::string, std::unique_ptr<Technique>> techniques_;  // by name, "+count" when counting
+    int width_ = 1;  // the window's framebuffer, which frames are rendered at
+    int height_ = 1;
     std::string techniqueName_;
-    std::string lastGoodTechnique_;  // the key in techniques_ of the last technique drawn with
+    // The last technique drawn with, and whether it counted its work (a technique whose
+    // shaders fail to compile falls back on it).
+    std::string lastGoodTechnique_;
+    bool lastGoodCounted_ = false;
     ViewMode view_ = ViewMode::Final;
+    Camera camera_;                      // the scene's, then moved by keys and the mouse
+    AmbientOcclusion ambientOcclusion_;  // the scene's, then edited in the panel
 
     double time_ = 0.0;
     bool paused_ = false;
@@ -185,6 +193,8 @@ Viewer::Viewer(const ViewOptions& options)
       window_({options.width, options.height, "manylights — " + scene_.source, defaultDebugContext()}),
       techniqueName_(options.technique),
       view_(*parseViewMode(options.view)),
+      camera_(scene_.camera),
+      ambientOcclusion_(scene_.ssao),
       time_(options.time)
 {
     if (options.lights && scene_.lightSets.empty())
@@ -209,12 +219,12 @@ Viewer::Viewer(const ViewOptions& options)
         shaderStatus_ = "embedded shaders (no --shader-dir): no reload";
     }
 
-    int width = 0;
-    int height = 0;
-    glfwGetFramebufferSize(window_.window(), &width, &height);
-    renderer_ = std::make_unique<Renderer>(scene_, lights_, std::max(width, 1), std::max(height, 1));
+    glfwGetFramebufferSize(window_.window(), &width_, &height_);
+    width_ = std::max(width_, 1);
+    height_ = std::max(height_, 1);
     display_ = chooseDisplay(scene_, options.display);
     adaptedExposure_ = display_.exposure;
+    renderer_ = std::make_unique<Renderer>(scene_, lights_, rendererDesc());
     axesProgram_ = gl::Program("axes", {{GL_VERTEX_SHADER, "axes.vert"}, {GL_FRAGMENT_SHADER, "axes.frag"}});
 
     GLFWwindow* window = window_.window();
@@ -235,7 +245,7 @@ Viewer::Viewer(const ViewOptions& options)
         Viewer& viewer = of(w);
         if (!viewer.dragging_)
             return;
-        lookCamera(viewer.scene_.camera, -kMouseDegreesPerPixel * static_cast<float>(x - viewer.dragX_),
+        lookCamera(viewer.camera_, -kMouseDegreesPerPixel * static_cast<float>(x - viewer.dragX_),
                    -kMouseDegreesPerPixel * static_cast<float>(y - viewer.dragY_));
         viewer.dragX_ = x;
         viewer.dragY_ = y;
@@ -257,44 +267,52 @@ Viewer::~Viewer()
     gl::setDefaultShaderReader(gl::embeddedShaderReader());
 }
 
-// The technique to draw with, made on first use. A technique whose shaders fail to compile
-// (edited under --shader-dir) is not switched to: the previous one stays, the error shows.
+RendererDesc Viewer::rendererDesc() const
+{
+    DisplaySettings shown = display_;
+    if (autoExposure_)
+        shown.exposure = adaptedExposure_;
+    return {.width = width_,
+            .height = height_,
+            .countWork = view_ == ViewMode::LightCount,
+            .shadowLights = shadowLights_,
+            .directionalShadows = directionalShadows_,
+            .ambientOcclusion = ambientOcclusion_,
+            .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
+            .display = shown};
+}
+
+// The technique to draw with (the renderer makes each variant once). A technique whose
+// shaders fail to compile (edited under --shader-dir) is not switched to: the previous one
+// stays, the error shows.
 Technique& Viewer::technique()
 {
-    const bool counting = view_ == ViewMode::LightCount;
-    const bool localShadows = shadowLights_ > 0;
     const std::string name = effectiveTechnique();
-    const std::string key = name + (counting ? "+count" : "") + (localShadows ? "+shadows" : "");
-    auto& slot = techniques_[key];
-    if (!slot) {
-        try {
-            slot = makeTechnique(name, {.countWork = counting, .localShadows = localShadows});
-            lastGoodTechnique_ = key;
-        } catch (const Error& error) {
-            techniques_.erase(key);
-            if (lastGoodTechnique_.empty())
-                throw;  // the first technique: nothing to fall back on
-            shaderError_ = error.what();
-            std::fprintf(stderr, "manylights view: cannot switch to %s: %s\n", name.c_str(), error.what());
-            // Back to the settings that made the last good technique.
-            const bool lastCounted = lastGoodTechnique_.ends_with("+count");
-            techniqueName_ = lastGoodTechnique_.substr(0, lastGoodTechnique_.find('+'));
-            wireframe_ = false;
-            if (lastCounted)
-                view_ = ViewMode::LightCount;
-            else if (view_ == ViewMode::LightCount)
-                view_ = ViewMode::Final;
-            renderer_->setCountWork(lastCounted);
-            return *techniques_.at(lastGoodTechnique_);
-        }
+    try {
+        Technique& technique = renderer_->technique(name);
+        lastGoodTechnique_ = name;
+        lastGoodCounted_ = renderer_->desc().countWork;
+        return technique;
+    } catch (const Error& error) {
+        if (lastGoodTechnique_.empty())
+            throw;  // the first technique: nothing to fall back on
+        shaderError_ = error.what();
+        std::fprintf(stderr, "manylights view: cannot switch to %s: %s\n", name.c_str(), error.what());
+        // Back to the settings that made the last good technique.
+        techniqueName_ = lastGoodTechnique_;
+        wireframe_ = false;
+        if (lastGoodCounted_)
+            view_ = ViewMode::LightCount;
+        else if (view_ == ViewMode::LightCount)
+            view_ = ViewMode::Final;
+        renderer_->apply(rendererDesc());
+        return renderer_->technique(lastGoodTechnique_);
     }
-    lastGoodTechnique_ = key;
-    return *slot;
 }
 
 void Viewer::printCamera() const
 {
-    std::printf("%s\n", cameraCommandLine(scene_.camera).c_str());
+    std::printf("%s\n", cameraCommandLine(camera_).c_str());
     std::fflush(stdout);
 }
 
@@ -353,7 +371,7 @@ std::vector<int> Viewer::heldKeys() const
 
 void Viewer::applyHeldKeys(const std::vector<int>& keys, double seconds)
 {
-    Camera& camera = scene_.camera;
+    Camera& camera = camera_;
     const auto dt = static_cast<float>(seconds);
     const float orbit = kOrbitDegreesPerSecond * dt;
     const float fly = kFlyFractionPerSecond * dt * glm::distance(camera.eye, camera.lookAt);
@@ -415,7 +433,7 @@ void Viewer::runScript()
                          : what == "axes"          ? axes_
                          : what == "wireframe"     ? wireframe_
                          : what == "shadows"       ? directionalShadows_
-                         : what == "ssao"          ? renderer_->ambientOcclusion().enabled
+                         : what == "ssao"          ? ambientOcclusion_.enabled
                          : what == "auto-exposure" ? autoExposure_
                                                    : panel_;
             flag = !flag;
@@ -451,20 +469,13 @@ void Viewer::checkShaders()
 void Viewer::reloadShaders()
 {
     try {
-        auto renderer = std::make_unique<Renderer>(scene_, lights_, renderer_->width(), renderer_->height());
-        const bool counting = view_ == ViewMode::LightCount;
-        const bool localShadows = shadowLights_ > 0;
-        auto fresh = makeTechnique(effectiveTechnique(), {.countWork = counting, .localShadows = localShadows});
-        renderer->ambientOcclusion() = renderer_->ambientOcclusion();
-        renderer->shadowMaps().setDirectionalShadows(directionalShadows_);
-        renderer->shadowMaps().setLocalLightBudget(shadowLights_);
-        renderer->setCountWork(counting);
+        auto renderer = std::make_unique<Renderer>(scene_, lights_, rendererDesc());
+        renderer->setCamera(camera_);
         renderer->setTime(time_);
-        renderer->renderFrame(*fresh, view_);
+        renderer->renderFrame(effectiveTechnique(), view_);
         renderer_ = std::move(renderer);
-        techniques_.clear();
-        lastGoodTechnique_ = effectiveTechnique() + (counting ? "+count" : "") + (localShadows ? "+shadows" : "");
-        techniques_[lastGoodTechnique_] = std::move(fresh);
+        lastGoodTechnique_ = effectiveTechnique();
+        lastGoodCounted_ = renderer_->desc().countWork;
         shaderError_.clear();
         shaderStatus_ = "reloaded from " + shaderDirectory_;
         std::fprintf(stderr, "manylights view: shaders reloaded\n");
@@ -481,8 +492,9 @@ void Viewer::resizeIfNeeded()
     glfwGetFramebufferSize(window_.window(), &width, &height);
     if (width <= 0 || height <= 0)  // minimised
         return;
-    if (width != renderer_->width() || height != renderer_->height())
-        renderer_->resize(width, height);  // the G-buffer and every size-dependent target
+    // The next frame's desc resizes the G-buffer and every size-dependent target.
+    width_ = width;
+    height_ = height;
 }
 
 void Viewer::adaptExposure()
@@ -499,17 +511,10 @@ void Viewer::adaptExposure()
 
 void Viewer::renderScene()
 {
-    renderer_->refreshCamera();
-    renderer_->setTime(time_);
-    renderer_->setLightingTerms({ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f});
-    renderer_->shadowMaps().setDirectionalShadows(directionalShadows_);
-    renderer_->shadowMaps().setLocalLightBudget(shadowLights_);
-    renderer_->setCountWork(view_ == ViewMode::LightCount);
     adaptExposure();
-    DisplaySettings shown = display_;
-    if (autoExposure_)
-        shown.exposure = adaptedExposure_;
-    renderer_->setDisplay(shown);
+    renderer_->apply(rendererDesc());
+    renderer_->setCamera(camera_);
+    renderer_->setTime(time_);
     Technique& current = technique();
     // Only the final image: the G-buffer views draw full-screen triangles that must stay filled.
     if (wireframe_ && view_ == ViewMode::Final)
@@ -554,7 +559,7 @@ void Viewer::drawAxes()
         return;
     renderer_->gpuScene().bind();
     glDisable(GL_DEPTH_TEST);
-    axesProgram_.set(0, 0.25f * glm::distance(scene_.camera.eye, scene_.camera.lookAt));
+    axesProgram_.set(0, 0.25f * glm::distance(camera_.eye, camera_.lookAt));
     axesProgram_.use();
     emptyVertexArray_.bind();
     glDrawArrays(GL_LINES, 0, 6);
@@ -620,7 +625,7 @@ void Viewer::drawPanel()
     ImGui::Separator();
     ImGui::Checkbox("directional shadows", &directionalShadows_);
     ImGui::SliderInt("shadowed lights", &shadowLights_, 0, kMaxShadowLights);
-    AmbientOcclusion& occlusion = renderer_->ambientOcclusion();
+    AmbientOcclusion& occlusion = ambientOcclusion_;
     ImGui::Checkbox("SSAO", &occlusion.enabled);
     ImGui::SliderFloat("SSAO radius", &occlusion.radius, 0.05f, 4.0f, "%.2f");
     ImGui::SliderFloat("SSAO strength", &occlusion.strength, 0.0f, 2.0f, "%.2f");

@@ -19,7 +19,6 @@
 #include "GlContextTest.h"
 #include "render/Bindings.h"
 #include "render/Renderer.h"
-#include "render/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -170,26 +169,28 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     scene.objects.push_back(pane);
     const std::vector<Light> lights = expandLights(scene);
 
-    Renderer renderer(scene, lights, 96, 64);
-    renderer.shadowMaps().setLocalLightBudget(4);
-    renderer.setDisplay(
-        {.exposure = 1.0f, .toneCurve = ToneCurve::Aces, .srgb = true, .antialiasing = Antialiasing::Fxaa});
-    // The techniques stay alive to the end: their programs with them.
-    std::vector<std::unique_ptr<Technique>> techniques;
+    RendererDesc desc{
+        .width = 96,
+        .height = 64,
+        .shadowLights = 4,
+        .display = DisplaySettings{
+            .exposure = 1.0f, .toneCurve = ToneCurve::Aces, .srgb = true, .antialiasing = Antialiasing::Fxaa}};
+    Renderer renderer(scene, lights, desc);
+    // The renderer keeps every technique variant it made: their programs stay alive to the end.
     for (const bool count : {false, true}) {
-        renderer.setCountWork(count);
+        desc.countWork = count;
+        renderer.apply(desc);
         for (const std::string& name : techniqueNames()) {
-            techniques.push_back(makeTechnique(name, {.countWork = count, .localShadows = true}));
-            renderer.renderFrame(*techniques.back(), ViewMode::Final);
+            renderer.renderFrame(name, ViewMode::Final);
             if (count)
-                renderer.renderFrame(*techniques.back(), ViewMode::LightCount);
+                renderer.renderFrame(name, ViewMode::LightCount);
         }
     }
-    renderer.setCountWork(false);
-    std::unique_ptr<Technique> deferred = makeTechnique("deferred", {.localShadows = true});
+    desc.countWork = false;
+    renderer.apply(desc);
     for (const ViewMode view :
          {ViewMode::Position, ViewMode::Normal, ViewMode::Volumes, ViewMode::Shadow, ViewMode::Ssao})
-        renderer.renderFrame(*deferred, view);
+        renderer.renderFrame("deferred", view);
     renderer.logAverageLuminance();
 
     int programs = 0;

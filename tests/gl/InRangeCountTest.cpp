@@ -6,7 +6,6 @@
 
 #include "GlContextTest.h"
 #include "render/Renderer.h"
-#include "render/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -29,13 +28,13 @@ TEST_P(InRangeCount, CulledCountEqualsBruteForce)
     const InRangeCase& c = GetParam();
     const Scene scene = loadSceneFile(std::string(MANYLIGHTS_SOURCE_DIR) + "/" + c.scene);
     const std::vector<Light> lights = expandLights(scene, c.lights);
-    Renderer renderer(scene, lights, c.width, c.height);
-    renderer.setCountWork(true);
-    const std::unique_ptr<Technique> technique = makeTechnique("deferred", {.countWork = true});
-    renderer.renderFrame(*technique, ViewMode::Final);
+    RendererDesc desc{.width = c.width, .height = c.height, .countWork = true};
+    Renderer renderer(scene, lights, desc);
+    renderer.renderFrame("deferred", ViewMode::Final);
     const std::uint64_t culled = renderer.lastWorkCounts().inRangePairs;
-    renderer.setInRangeBruteForce(true);
-    renderer.renderFrame(*technique, ViewMode::Final);
+    desc.inRangeBruteForce = true;
+    renderer.apply(desc);
+    renderer.renderFrame("deferred", ViewMode::Final);
     const std::uint64_t bruteForce = renderer.lastWorkCounts().inRangePairs;
     EXPECT_GT(bruteForce, 1000u);
     EXPECT_EQ(culled, bruteForce);

@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "GlContextTest.h"
-#include "render/ForwardTechnique.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 #include "render/Renderer.h"
@@ -41,9 +40,9 @@ TEST_F(ShadowMapsTest, UnchangedFrameRendersNoShadowPass)
 {
     const Scene scene = parseScene(kScene, "<shadow maps test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
-    Renderer renderer(scene, lights, 96, 64);
-    renderer.shadowMaps().setLocalLightBudget(3);
-    ForwardTechnique forward({.localShadows = true});
+    RendererDesc desc{.width = 96, .height = 64, .shadowLights = 3};
+    Renderer renderer(scene, lights, desc);
+    Technique& forward = renderer.technique("forward");
 
     renderer.renderFrame(forward, ViewMode::Final);
     const std::uint64_t all = kDirectionalPasses + kSpotPasses + 2 * kCubePasses;
@@ -56,12 +55,13 @@ TEST_F(ShadowMapsTest, UnchangedFrameRendersNoShadowPass)
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), all);
 
     // A new image size changes the view the directional map is fitted to, not the local lights.
-    renderer.resize(80, 64);
+    desc.width = 80;
+    renderer.apply(desc);
     renderer.renderFrame(forward, ViewMode::Final);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), all + kDirectionalPasses);
 
-    // invalidate() forgets every map.
-    renderer.shadowMaps().invalidate();
+    // Invalidating forgets every map.
+    renderer.invalidateShadowMaps();
     renderer.renderFrame(forward, ViewMode::Final);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), 2 * all + kDirectionalPasses);
 }
@@ -96,24 +96,26 @@ TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
 {
     const Scene scene = parseScene(kScene, "<shadow maps test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
-    Renderer renderer(scene, lights, 96, 64);
-    ForwardTechnique forward({.localShadows = true});
+    RendererDesc desc{.width = 96, .height = 64};
+    Renderer renderer(scene, lights, desc);
 
     // The default budget: only the directional light.
-    renderer.renderFrame(forward, ViewMode::Final);
+    renderer.renderFrame("forward", ViewMode::Final);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), kDirectionalPasses);
     EXPECT_TRUE(renderer.shadowMaps().shadowedLights().empty());
 
     // One local light: the brightest on screen, the narrow spot (5 × its coverage wins).
-    renderer.shadowMaps().setLocalLightBudget(1);
-    renderer.renderFrame(forward, ViewMode::Final);
+    desc.shadowLights = 1;
+    renderer.apply(desc);
+    renderer.renderFrame("forward", ViewMode::Final);
     ASSERT_EQ(renderer.shadowMaps().shadowedLights().size(), 1u);
     EXPECT_EQ(renderer.shadowMaps().shadowedLights()[0], 0u);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), kDirectionalPasses + kSpotPasses);
 
     // The directional switch of the viewer.
-    renderer.shadowMaps().setDirectionalShadows(false);
-    renderer.renderFrame(forward, ViewMode::Final);
+    desc.directionalShadows = false;
+    renderer.apply(desc);
+    renderer.renderFrame("forward", ViewMode::Final);
     EXPECT_FALSE(renderer.shadowMaps().directionalActive());
 }
 

@@ -9,7 +9,6 @@
 #include <set>
 
 #include "GlContextTest.h"
-#include "render/DeferredTechnique.h"
 #include "render/Renderer.h"
 #include "render/TiledQuadsTechnique.h"
 #include "scene/Meshes.h"
@@ -82,9 +81,8 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
         for (int tx = 0; tx < 5; ++tx)
             addLightsOverTile(lights, tx, ty, counts[ty][tx], random);
 
-    Renderer renderer(scene, lights, kWidth, kHeight);
-    renderer.setCountWork(true);
-    TiledQuadsTechnique tiled({.countWork = true});
+    Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight, .countWork = true});
+    auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
     renderer.renderFrame(tiled, ViewMode::LightCount);
     const Image evaluations = renderer.readColour();
     const std::vector<bool> covered = renderer.readCoverage();
@@ -128,8 +126,7 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
     // And the image is deferred's (which loops over all 3,029 lights everywhere).
     renderer.renderFrame(tiled, ViewMode::Final);
     const Image image = renderer.readColour();
-    DeferredTechnique deferred({.countWork = true});
-    renderer.renderFrame(deferred, ViewMode::Final);
+    renderer.renderFrame("deferred", ViewMode::Final);
     test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
 }
 
@@ -138,13 +135,12 @@ TEST_F(TiledQuadsTest, NoLightsAndResizing)
     const Scene scene = floorScene();
     // No local lights: nothing to draw but the global terms.
     {
-        Renderer renderer(scene, {}, 40, 30);
-        TiledQuadsTechnique tiled({});
+        Renderer renderer(scene, {}, {.width = 40, .height = 30});
+        auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
         renderer.renderFrame(tiled, ViewMode::Final);
         EXPECT_TRUE(tiled.lastLists().lightIndices.empty());
         const Image image = renderer.readColour();
-        DeferredTechnique deferred({});
-        renderer.renderFrame(deferred, ViewMode::Final);
+        renderer.renderFrame("deferred", ViewMode::Final);
         test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
     // The grid follows the image size from frame to frame.
@@ -152,16 +148,15 @@ TEST_F(TiledQuadsTest, NoLightsAndResizing)
     std::vector<Light> lights;
     addLightsOverTile(lights, 1, 1, 40, random);
     addLightsOverTile(lights, 3, 0, 10, random);
-    Renderer renderer(scene, lights, kWidth, kHeight);
-    TiledQuadsTechnique tiled({});
-    DeferredTechnique deferred({});
+    Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight});
+    auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
     for (const auto& [width, height] : {std::pair{kWidth, kHeight}, std::pair{97, 45}, std::pair{kWidth, kHeight}}) {
-        renderer.resize(width, height);
+        renderer.apply({.width = width, .height = height});
         renderer.renderFrame(tiled, ViewMode::Final);
         EXPECT_EQ(tiled.lastLists().tilesX, (width + 31) / 32);
         EXPECT_EQ(tiled.lastLists().tilesY, (height + 31) / 32);
         const Image image = renderer.readColour();
-        renderer.renderFrame(deferred, ViewMode::Final);
+        renderer.renderFrame("deferred", ViewMode::Final);
         test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
 }

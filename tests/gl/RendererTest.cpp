@@ -1,0 +1,101 @@
+// The renderer's one route for settings (RendererDesc, Renderer::apply), the technique
+// variants it makes and keeps, and its camera.
+#include <gtest/gtest.h>
+
+#include "GlContextTest.h"
+#include "core/Error.h"
+#include "render/Renderer.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+#include "tests/support/ImageComparison.h"
+
+namespace manylights {
+namespace {
+
+class RendererTest : public GlContextTest {};
+
+const char* kScene = R"({
+    "camera": {"eye": [0, 4, 6], "look_at": [0, 0, 0], "fov_y": 50},
+    "ambient": [0.05, 0.05, 0.05],
+    "lights": [{"type": "point", "pos": [1, 2, 1], "intensity": [3, 2, 1], "range": 8}],
+    "objects": [
+        {"mesh": {"primitive": "plane", "size": [10, 10]}},
+        {"mesh": {"primitive": "box", "size": [1, 1, 1]}, "transform": {"translate": [1, 0.5, 0]}}]})";
+
+TEST_F(RendererTest, ZerosInTheDescStandForTheDefaults)
+{
+    const Scene scene = parseScene(kScene, "<renderer test>", ".");
+    const Renderer renderer(scene, expandLights(scene));
+    EXPECT_EQ(renderer.width(), kDefaultImageWidth);
+    EXPECT_EQ(renderer.height(), kDefaultImageHeight);
+    EXPECT_EQ(renderer.desc().supersample, 1);
+    EXPECT_FALSE(renderer.desc().countWork);
+    EXPECT_EQ(renderer.shadowMaps().localLightBudget(), 0);
+}
+
+TEST_F(RendererTest, TechniqueVariantsFollowTheSettingsAndAreMadeOnce)
+{
+    const Scene scene = parseScene(kScene, "<renderer test>", ".");
+    RendererDesc desc{.width = 64, .height = 48};
+    Renderer renderer(scene, expandLights(scene), desc);
+    Technique& plain = renderer.technique("deferred");
+    EXPECT_EQ(plain.name(), "deferred");
+    EXPECT_FALSE(plain.options().countWork);
+    EXPECT_FALSE(plain.options().localShadows);
+    EXPECT_EQ(&renderer.technique("deferred"), &plain);
+
+    desc.countWork = true;
+    renderer.apply(desc);
+    Technique& counting = renderer.technique("deferred");
+    EXPECT_NE(&counting, &plain);
+    EXPECT_TRUE(counting.options().countWork);
+
+    desc.countWork = false;
+    desc.shadowLights = 2;
+    renderer.apply(desc);
+    Technique& shadowed = renderer.technique("deferred");
+    EXPECT_TRUE(shadowed.options().localShadows);
+    EXPECT_EQ(renderer.shadowMaps().localLightBudget(), 2);
+
+    // Back to the first settings: the first variant again, not a new one.
+    desc.shadowLights = 0;
+    renderer.apply(desc);
+    EXPECT_EQ(&renderer.technique("deferred"), &plain);
+}
+
+TEST_F(RendererTest, UnknownTechniqueAndImpossibleSizeAreErrorsThatChangeNothing)
+{
+    const Scene scene = parseScene(kScene, "<renderer test>", ".");
+    Renderer renderer(scene, expandLights(scene), {.width = 64, .height = 48});
+    EXPECT_THROW(renderer.technique("raytraced"), Error);
+    EXPECT_THROW(renderer.apply({.width = 1 << 20, .height = 48}), Error);
+    EXPECT_EQ(renderer.desc().width, 64);
+    EXPECT_EQ(renderer.width(), 64);
+    renderer.renderFrame("deferred", ViewMode::Final);
+}
+
+TEST_F(RendererTest, SetCameraMovesTheViewAndTheScenesCameraRestoresIt)
+{
+    const Scene scene = parseScene(kScene, "<renderer test>", ".");
+    Renderer renderer(scene, expandLights(scene), {.width = 64, .height = 48});
+    renderer.renderFrame("deferred", ViewMode::Final);
+    const Image first = renderer.readColour();
+
+    Camera moved = scene.camera;
+    moved.eye = {4.0f, 3.0f, 2.0f};
+    renderer.setCamera(moved);
+    renderer.renderFrame("deferred", ViewMode::Final);
+    const Image elsewhere = renderer.readColour();
+    int differing = 0;
+    for (std::size_t i = 0; i < first.rgb.size(); ++i)
+        differing += first.rgb[i] != elsewhere.rgb[i];
+    EXPECT_GT(differing, static_cast<int>(first.rgb.size() / 4)) << "the moved camera should see another image";
+
+    // The same frame as the first: exactly the same pixels.
+    renderer.setCamera(scene.camera);
+    renderer.renderFrame("deferred", ViewMode::Final);
+    test::expectImagesNear(renderer.readColour(), first, test::Tolerance{});
+}
+
+}  // namespace
+}  // namespace manylights
