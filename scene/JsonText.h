@@ -1,4 +1,4 @@
-// The scene file's JSON text (scene/SceneLoader.cpp): parsing with positions and duplicate keys
+// The scene file's JSON text (scene/SceneLoader.h): parsing with positions and duplicate keys
 // reported as one line naming the file, line and column, and the wording of every message
 // about a value (its type, shape, a quoted and escaped copy, the JSON pointer of where it is,
 // and "did you mean" hints for misspelt names). Kept apart from the loader, which reads the
