@@ -16,7 +16,6 @@ constexpr GLuint kTileDepthRangesBinding = bindings::CLUSTER_TILE_DEPTHS_BUFFER_
 constexpr GLuint kTileSlicesBinding = bindings::CLUSTER_TILE_SLICES_BUFFER_BINDING;
 constexpr GLuint kMasksBinding = bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING;
 constexpr GLuint kSummariesBinding = bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING;
-constexpr GLuint kDepthUnit = bindings::SCENE_DEPTH_UNIT;
 constexpr GLuint kLightGroupSize = 64;     // local_size_x of cluster_assign.comp
 constexpr GLuint kTileGroupSize = 64;      // local_size_x of cluster_tiles.comp
 constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
@@ -85,15 +84,24 @@ void ClusterGrid::bind() const
     summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
 }
 
-void ClusterGrid::fitToSurfaces(const GpuScene& scene, FrameTargets& targets)
+Pass ClusterGrid::fitPass()
 {
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    targets.depthStencil.bindUnit(kDepthUnit);
+    return {.name = "clusters",
+            .sampled = Resource::GBuffer,
+            .storage = Resource::LightGrid,
+            .writes = Resource::LightGrid};
+}
+
+Pass ClusterGrid::assignPass(std::string_view name)
+{
+    return {.name = name, .storage = Resource::LightGrid, .writes = Resource::LightGrid};
+}
+
+void ClusterGrid::fitToSurfaces()
+{
     bind();
     tiles_.use();
     glDispatchCompute(groupsFor(static_cast<std::uint32_t>(gridWidth_ * gridHeight_), kTileGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void ClusterGrid::coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered)
@@ -106,16 +114,14 @@ void ClusterGrid::coverDepthRange(float nearest, float farthest, const std::vect
     for (std::size_t tile = 0; tile < covered.size(); ++tile)
         slices[tile] = covered[tile] ? allSlices : 0u;
     tileSlices_.update(0, slices.size() * sizeof(std::uint32_t), slices.data());
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void ClusterGrid::assignLights(const GpuScene& scene, const LightBatch& batch)
+void ClusterGrid::assignLights(const LightBatch& batch)
 {
-    // The draws that read the masks of the previous build must be done with them first:
-    // llvmpipe queues draws but clears buffers and runs compute passes at once, and without
-    // this barrier (which makes it finish the queued draws) a transparent layer drawn before
-    // a rebuild read the next build's masks (1,799 values off forward's in a test of it).
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The draws that read the masks of the previous build are done with them: the pass waits
+    // for them (FramePasses: llvmpipe queues draws but clears buffers and runs compute passes
+    // at once; without the wait a transparent layer drawn before a rebuild read the next
+    // build's masks, 1,799 values off forward's in a test of it).
     // Cleared by the GL: on llvmpipe a plain memset of the batch's words beats a compute pass
     // that clears only the occupied clusters' words.
     const std::uint32_t words = wordsFor(batch.size());
@@ -126,8 +132,7 @@ void ClusterGrid::assignLights(const GpuScene& scene, const LightBatch& batch)
     glClearNamedBufferSubData(summaries_.id(), GL_R32UI, 0,
                               static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * wordsFor(words)),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    scene.bind();
+    // The clears are GL commands before the dispatch: its shaders see them without a barrier.
     bind();
     setLightBatch(assign_, batch);
     // Bands of whole rows, at most kTilesPerBand tiles (the shader's loop bound).
@@ -136,7 +141,6 @@ void ClusterGrid::assignLights(const GpuScene& scene, const LightBatch& batch)
     assign_.use();
     glDispatchCompute(groupsFor(batch.size(), kLightGroupSize),
                       groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 }  // namespace manylights

@@ -11,16 +11,15 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
-#include "render/FrameTargets.h"
+#include "render/FramePasses.h"
 #include "render/LightBatches.h"
 
 namespace manylights {
-
-class GpuScene;
 
 // 16-pixel tiles, 8 slices each (the shaders get them as CLUSTER_TILE_SIZE and CLUSTER_SLICES;
 // docs/techniques.md has the measurements behind them).
@@ -46,15 +45,21 @@ public:
     void resize(int width, int height, std::uint32_t largestBatch);
     // Binds the buffers at lib/clusters.glsl's binding points.
     void bind() const;
+    // The passes the grid is built in: fitting it to the surfaces (the G-buffer) and setting
+    // the lights (coverDepthRange and assignLights), which the scene binds for.
+    static Pass fitPass();
+    static Pass assignPass(std::string_view name);
+
     // Each tile's range: its opaque surfaces' nearest to farthest view depth (from the depth
-    // buffer and the G-buffer); its occupied slices: those holding a surface.
-    void fitToSurfaces(const GpuScene& scene, FrameTargets& targets);
+    // buffer and the G-buffer); its occupied slices: those holding a surface. In fitPass().
+    void fitToSurfaces();
     // Every tile's range: view depths nearest to farthest (0 < nearest < farthest); every
     // slice of the tiles where `covered` (one flag per tile, row by row) is true occupied, no
     // slice of the others (lights are then assigned only where something needs them).
     void coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered);
-    // Sets each light of the batch in the masks of the occupied clusters it may reach.
-    void assignLights(const GpuScene& scene, const LightBatch& batch);
+    // Sets each light of the batch in the masks of the occupied clusters it may reach. In
+    // assignPass().
+    void assignLights(const LightBatch& batch);
 
     std::uint32_t clusterCount() const { return clusterCount_; }
     // The tiles across and down, after resize.

@@ -1,7 +1,6 @@
 #include "render/ClusteredTechnique.h"
 
 #include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 #include "render/ScreenPasses.h"
 
 namespace manylights {
@@ -21,30 +20,28 @@ std::vector<TechniqueCounter> ClusteredTechnique::counters() const
             {"light_batches", static_cast<double>(batchCount_)}};
 }
 
-void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(scene, profiler);
+    targets.gbuffer.fill(passes);
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()),
                                                          ClusterGrid::lightsPerBatch(targets.width, targets.height));
     batchCount_ = static_cast<std::uint32_t>(batches.size());
-    {
-        auto pass = profiler.pass("clusters");
+    passes.run(ClusterGrid::fitPass(), [&] {
         grid_.resize(targets.width, targets.height, batches.front().size());
-        grid_.fitToSurfaces(scene, targets);
-    }
+        grid_.fitToSurfaces();
+    });
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
-    if (oneWindow)
-        scene.bindLightWindow(batches.front());
     const gl::Program& program = lighting_.variant(scene.lightingFeatures(),
                                                    oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
     for (const LightBatch& batch : batches) {
-        {
-            auto pass = profiler.pass("clusters");
-            grid_.assignLights(scene, batch);
-        }
-        auto pass = profiler.pass("lighting");
-        grid_.bind();
-        shadeCoveredPixels(scene, targets, program, batch);
+        passes.run(ClusterGrid::assignPass("clusters"), [&] { grid_.assignLights(batch); });
+        passes.run(lightBatchPass(batch, Resource::LightGrid), [&] {
+            if (oneWindow)
+                scene.bindLightWindow(batches.front());
+            grid_.bind();
+            setLightBatch(program, batch);
+            drawCoveredPixels(program);
+        });
     }
 }
 

@@ -22,7 +22,7 @@ class ClusteredTechnique : public Technique {
 public:
     explicit ClusteredTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "clustered"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
     // clusters (the grid's size) and light_batches (passes of the last frame).
     std::vector<TechniqueCounter> counters() const override;

@@ -1,7 +1,6 @@
 #include "render/DeferredTechnique.h"
 
 #include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 #include "render/ScreenPasses.h"
 
 namespace manylights {
@@ -14,18 +13,19 @@ DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
 {
 }
 
-void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(scene, profiler);
-    auto pass = profiler.pass("lighting");
+    targets.gbuffer.fill(passes);
     const gl::Program& program = lighting_.variant(
         scene.lightingFeatures(), lightWindows_ ? LightSource::UniformWindow : LightSource::StorageBuffer);
     const std::uint32_t perBatch = lightWindows_ ? kLightsPerWindow : kLightsPerBatch;
-    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch)) {
-        if (lightWindows_)
-            scene.bindLightWindow(batch);
-        shadeCoveredPixels(scene, targets, program, batch);
-    }
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch))
+        passes.run(lightBatchPass(batch), [&] {
+            if (lightWindows_)
+                scene.bindLightWindow(batch);
+            setLightBatch(program, batch);
+            drawCoveredPixels(program);
+        });
 }
 
 }  // namespace manylights

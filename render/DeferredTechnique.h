@@ -15,7 +15,7 @@ class DeferredTechnique : public Technique {
 public:
     explicit DeferredTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "deferred"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
     bool lightWindows_;  // the lights as uniform windows (render/LightBatches.h)

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/PipelineState.h"
 
 namespace manylights {
 
@@ -61,15 +62,11 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
         auto pass = profiler.pass("display");
         const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb, supersample);
         program.set(kExposureScaleLocation, std::exp2(settings.exposure));
-        // The lit image was written by draws or image stores.
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
         transformedFramebuffer_.bind();
         glViewport(0, 0, width, height);
         emptyVertexArray_.bind();
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_STENCIL_TEST);
-        glDisable(GL_BLEND);
+        applyPipelineState(kEveryPixel);
         program.use();
         glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
     }
@@ -90,21 +87,15 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
         antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
         transformed_.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
         antialiasedFramebuffer_.bind();
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 1, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        applyPipelineState(
+            {.depthTest = DepthTest::Off, .keepDepth = true, .maskColour = true, .stencil = Stencil::MarkDrawn});
         fxaaEdgesProgram_.use();
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glStencilFunc(GL_EQUAL, 1, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        applyPipelineState({.depthTest = DepthTest::Off, .keepDepth = true, .stencil = Stencil::PassMarked});
         fxaaProgram_.use();
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        glDisable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
     }
-    glEnable(GL_DEPTH_TEST);
+    applyPipelineState({});
     glViewport(0, 0, lit.width(), lit.height());
 }
 
@@ -114,7 +105,6 @@ float DisplayPass::logAverageLuminance(const gl::Texture2D& lit, const gl::Textu
         luminanceProgram_ = gl::Program("log-average luminance", {{GL_COMPUTE_SHADER, "log_luminance.comp"}});
         luminance_ = gl::Buffer("log-average luminance", sizeof(float), nullptr);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
     depth.bindUnit(bindings::LUMINANCE_DEPTH_UNIT);
     luminance_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LUMINANCE_RESULT_BUFFER_BINDING);

@@ -12,7 +12,7 @@ public:
     explicit ForwardTechnique(const TechniqueOptions& options);
     bool isReference() const override { return true; }
     std::string_view name() const override { return "forward"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
     LightingProgram program_;

@@ -1,8 +1,8 @@
 #include "render/GBuffer.h"
 #include "render/Bindings.h"
 
+#include "render/FramePasses.h"
 #include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 
 namespace manylights {
 
@@ -45,27 +45,28 @@ GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBuff
 {
 }
 
-void GBuffer::fill(const GpuScene& scene, PassProfiler& profiler)
+void GBuffer::fill(FramePasses& passes)
 {
     if (current_)
         return;
-    auto pass = profiler.pass("geometry");
-    fill(scene);
+    passes.run({.name = "geometry", .target = Resource::GBuffer}, [&] { clearAndDraw(passes.scene()); });
     current_ = true;
 }
 
 void GBuffer::fill(const GpuScene& scene) const
 {
+    framebuffer_.bind();
+    applyPipelineState({});
+    scene.bind();
+    clearAndDraw(scene);
+}
+
+void GBuffer::clearAndDraw(const GpuScene& scene) const
+{
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < static_cast<int>(targets_.size()); ++i)
         framebuffer_.clearColour(i, zero);
     framebuffer_.clearDepthStencil(1.0f, 0);
-    framebuffer_.bind();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    scene.bind();
     // The pass evaluates no light: the variants differ only in the material's maps.
     scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
         return programs_.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);

@@ -15,7 +15,7 @@
 namespace manylights {
 
 class GpuScene;
-class PassProfiler;
+class FramePasses;
 
 struct GBufferTarget {
     std::string_view name;
@@ -97,18 +97,21 @@ public:
 
     GBufferLayout layout() const { return layout_; }
 
-    // The frame's geometry pass, profiled: clears and fills every target, unless they already
-    // hold this frame's surfaces (SSAO fills them before the technique does; drawing the scene
-    // twice would change nothing but the cost).
-    void fill(const GpuScene& scene, PassProfiler& profiler);
-    // Clears and fills every target, always, unprofiled.
+    // The frame's geometry pass: clears and fills every target, unless they already hold this
+    // frame's surfaces (SSAO fills them before the technique does; drawing the scene twice
+    // would change nothing but the cost).
+    void fill(FramePasses& passes);
+    // Clears and fills every target, always, outside the frame's passes.
     void fill(const GpuScene& scene) const;
     // The targets no longer hold the current frame: the Renderer calls it as a frame begins.
     void invalidate() { current_ = false; }
     // Binds the colour targets to texture units 0..4 (shaders/lib/gbuffer.glsl).
     void bindForReading() const;
+    const gl::Framebuffer& framebuffer() const { return framebuffer_; }
 
 private:
+    void clearAndDraw(const GpuScene& scene) const;
+
     GBufferLayout layout_;
     std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
     gl::Framebuffer framebuffer_;

@@ -102,7 +102,6 @@ Technique& Renderer::technique(std::string_view name)
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 {
     glViewport(0, 0, targets_->width, targets_->height);
-    glDisable(GL_CULL_FACE);  // scene meshes are not guaranteed closed or consistently wound
     ML_ASSERT(desc_.countWork || view != ViewMode::LightCount);
     // The technique's shaders read this renderer's G-buffer and, when counting, write the
     // counting images: they must have been made for both (technique() makes them so).
@@ -116,48 +115,29 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
     }
     profiler_.beginFrame();
     targets_->gbuffer.invalidate();
-    prepareShadowing(view);
+    FramePasses passes(gpuScene_, *targets_, profiler_);
+    prepareShadowing(view, passes);
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
-        technique.render(gpuScene_, *targets_, profiler_);
-        if (gpuScene_.hasTransparentObjects()) {
-            const auto made = std::find_if(transparencyPasses_.begin(), transparencyPasses_.end(),
-                                           [&](const auto& pass) { return pass->options() == technique.options(); });
-            if (made != transparencyPasses_.end()) {
-                transparency_ = made->get();
-            } else {
-                transparencyPasses_.push_back(std::make_unique<TransparencyPass>(technique.options()));
-                transparency_ = transparencyPasses_.back().get();
-            }
-            transparency_->run(gpuScene_, *targets_, profiler_, technique.isReference());
-        }
-        if (view == ViewMode::Volumes)
+        technique.render(gpuScene_, *targets_, passes);
+        if (gpuScene_.hasTransparentObjects())
+            transparencyPassFor(technique.options()).run(gpuScene_, *targets_, passes, technique.isReference());
+        if (view == ViewMode::Volumes) {
+            passes.finish();
             drawVolumeOverlay();
+        }
     } else {
-        targets_->gbuffer.fill(gpuScene_, profiler_);
-        auto pass = profiler_.pass("view");
+        targets_->gbuffer.fill(passes);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         targets_->litFramebuffer.clearColour(0, black);
-        targets_->litFramebuffer.bind();
-        gpuScene_.bind();
-        targets_->gbuffer.bindForReading();
-        if (view == ViewMode::Shadow || view == ViewMode::Ssao) {
-            if (!shadowingViewProgram_)
-                shadowingViewProgram_ =
-                    gl::Program("shadowing view",
-                                {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadowing_view.frag"}},
-                                gbufferDefines(desc_.gbufferLayout));
-            shadowingViewProgram_.set(0, static_cast<int>(view));
-            drawCoveredPixels(shadowingViewProgram_);
-        } else {
-            if (!viewProgram_)
-                viewProgram_ = gl::Program(
-                    "gbuffer view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "gbuffer_view.frag"}},
-                    gbufferDefines(desc_.gbufferLayout));
-            viewProgram_.set(0, static_cast<int>(view));
-            drawCoveredPixels(viewProgram_);
-        }
+        const gl::Program& program = gbufferViewProgram(view);
+        passes.run(
+            {.name = "view", .target = Resource::LitImage, .state = kCoveredPixels, .sampled = Resource::GBuffer}, [&] {
+                program.set(0, static_cast<int>(view));
+                drawCoveredPixels(program);
+            });
     }
+    passes.finish();
     displayed_ = desc_.display && (view == ViewMode::Final || view == ViewMode::Volumes);
     // The identity needs no pass: the lit image is then the picture (and a PNG of it is
     // round(255 · clamp(colour, 0, 1)) exactly, as the contract's default look).
@@ -170,16 +150,42 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
     return sample;
 }
 
-void Renderer::prepareShadowing(ViewMode view)
+TransparencyPass& Renderer::transparencyPassFor(const TechniqueOptions& options)
 {
-    shadowMaps_.update(gpuScene_, profiler_);
+    const auto made = std::find_if(transparencyPasses_.begin(), transparencyPasses_.end(),
+                                   [&](const auto& pass) { return pass->options() == options; });
+    if (made != transparencyPasses_.end()) {
+        transparency_ = made->get();
+    } else {
+        transparencyPasses_.push_back(std::make_unique<TransparencyPass>(options));
+        transparency_ = transparencyPasses_.back().get();
+    }
+    return *transparency_;
+}
+
+const gl::Program& Renderer::gbufferViewProgram(ViewMode view)
+{
+    // The shadow and ssao views show the shadowing terms; the others a G-buffer quantity.
+    const bool shadowing = view == ViewMode::Shadow || view == ViewMode::Ssao;
+    gl::Program& program = shadowing ? shadowingViewProgram_ : viewProgram_;
+    if (!program)
+        program = gl::Program(shadowing ? "shadowing view" : "gbuffer view",
+                              {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                               {GL_FRAGMENT_SHADER, shadowing ? "shadowing_view.frag" : "gbuffer_view.frag"}},
+                              gbufferDefines(desc_.gbufferLayout));
+    return program;
+}
+
+void Renderer::prepareShadowing(ViewMode view, FramePasses& passes)
+{
+    shadowMaps_.update(gpuScene_, passes.profilerForOwnScopes());
     // The ssao view shows the occlusion the scene's settings would give, even where the scene
     // leaves it off.
     const AmbientOcclusion& occlusion = ambientOcclusion();
     if (occlusion.enabled || view == ViewMode::Ssao) {
         if (!ssao_)
             ssao_ = std::make_unique<Ssao>(desc_.gbufferLayout);
-        ssao_->run(gpuScene_, *targets_, occlusion, profiler_);
+        ssao_->run(occlusion, passes);
     }
     shadowMaps_.bind(occlusion.enabled);
 }
@@ -270,14 +276,12 @@ void Renderer::drawVolumeOverlay()
     drawer.prepare(gpuScene_);
     targets_->litFramebuffer.bind();
     gpuScene_.bind();
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
+    applyPipelineState(kEveryPixel);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     drawer.drawVolumes(VolumeShape::Sphere, 0, drawer.groups().spheres.size(), overlayProgram_);
     drawer.drawVolumes(VolumeShape::Cone, 0, drawer.groups().cones.size(), overlayProgram_);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glEnable(GL_DEPTH_TEST);
+    applyPipelineState({});
 }
 
 Image Renderer::readColour() const

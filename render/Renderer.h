@@ -139,7 +139,11 @@ private:
     TechniqueOptions techniqueOptions() const;
     // The targets for desc_'s size and layout, and what was made for the old layout dropped.
     void makeTargets();
-    void prepareShadowing(ViewMode view);
+    void prepareShadowing(ViewMode view, FramePasses& passes);
+    // The transparency pass for techniques made with `options` (made on first use).
+    TransparencyPass& transparencyPassFor(const TechniqueOptions& options);
+    // The program of a G-buffer, shadow or ssao view (made on first use).
+    const gl::Program& gbufferViewProgram(ViewMode view);
     void countWork();
     void drawVolumeOverlay();
 

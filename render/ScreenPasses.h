@@ -4,27 +4,20 @@
 #pragma once
 
 #include "gl/Program.h"
-#include "render/FrameTargets.h"
+#include "render/FramePasses.h"
 #include "render/LightBatches.h"
 
 namespace manylights {
 
-class GpuScene;
-
-// Draws one triangle over the screen at depth 1 with the depth test GL_GREATER against the
-// scene's depth, so only pixels holding a surface run `program` (shaders/fullscreen.vert).
-// Used by every full-screen pass over the G-buffer.
+// Draws one triangle over the screen at depth 1 with `program` (shaders/fullscreen.vert): under
+// kCoveredPixels (or kAddToCoveredPixels) the depth test GL_GREATER against the scene's depth
+// passes only the pixels that hold a surface. Every full-screen pass over the G-buffer uses it.
 void drawCoveredPixels(const gl::Program& program);
 
-// A full-screen lighting pass over one light batch: `program` reads the G-buffer and shades
-// each covered pixel with the batch's lights; the first batch writes the lit image (its
-// colour includes the light-independent terms), the others add to it (deferred and clustered
-// end with it).
-void shadeCoveredPixels(const GpuScene& scene, FrameTargets& targets, const gl::Program& program,
-                        const LightBatch& batch);
-
-// Sets up adding to the lit image over covered pixels only: additive blending, and the
-// depth test GL_GREATER against the scene's depth for geometry at depth 1, no depth writes.
-void beginAddingToCoveredPixels();
+// The pass of a full-screen lighting program over one light batch: it reads the G-buffer and
+// shades each covered pixel with the batch's lights; the first batch writes the lit image (its
+// colour includes the light-independent terms), the others add to it. `storage`: what else
+// the program reads (the cluster grid).
+Pass lightBatchPass(const LightBatch& batch, Resource storage = Resource::None);
 
 }  // namespace manylights

@@ -10,6 +10,7 @@
 #include "gl/Debug.h"
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
+#include "render/PipelineState.h"
 #include "scene/ShadowSelection.h"
 
 namespace manylights {
@@ -314,12 +315,9 @@ void ShadowMaps::drawDepthPass(const GpuScene& scene, GLuint framebuffer, int si
     glGetIntegerv(GL_VIEWPORT, viewport);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, size, size);
+    applyPipelineState({});  // before the clear, which the depth mask would stop
     const float farthest = 1.0f;
     glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &farthest);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
     scene.bind();

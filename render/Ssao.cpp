@@ -6,8 +6,8 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "render/FramePasses.h"
 #include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -77,30 +77,32 @@ void Ssao::resize(int width, int height)
     blurred_ = gl::Texture2D("ssao blurred", GL_R32F, width, height);
 }
 
-void Ssao::run(const GpuScene& scene, FrameTargets& targets, const AmbientOcclusion& settings, PassProfiler& profiler)
+void Ssao::run(const AmbientOcclusion& settings, FramePasses& passes)
 {
+    FrameTargets& targets = passes.targets();
     if (raw_.width() != targets.width || raw_.height() != targets.height)
         resize(targets.width, targets.height);
-    targets.gbuffer.fill(scene, profiler);
-    auto pass = profiler.pass("ssao");
+    targets.gbuffer.fill(passes);
     const auto groupsX = static_cast<GLuint>((targets.width + kGroupSize - 1) / kGroupSize);
     const auto groupsY = static_cast<GLuint>((targets.height + kGroupSize - 1) / kGroupSize);
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    targets.depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
-    samples_.bindBase(GL_SHADER_STORAGE_BUFFER, kSamplesBinding);
-    occlusionProgram_.set(kParamsLocation,
-                          glm::vec4(settings.radius, settings.strength, kBiasFraction * settings.radius, 0.0f));
-    glBindImageTexture(kOcclusionImageUnit, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    occlusionProgram_.use();
-    glDispatchCompute(groupsX, groupsY, 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-
-    raw_.bindUnit(kRawOcclusionUnit);
-    glBindImageTexture(kOcclusionImageUnit, blurred_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    blurProgram_.use();
-    glDispatchCompute(groupsX, groupsY, 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    // The occlusion counts as part of the G-buffer (Resource::GBuffer): the passes that sample
+    // it after these write it wait for them.
+    constexpr Pass kSsaoPass{
+        .name = "ssao", .sampled = Resource::GBuffer, .images = Resource::GBuffer, .writes = Resource::GBuffer};
+    passes.run(kSsaoPass, [&] {
+        samples_.bindBase(GL_SHADER_STORAGE_BUFFER, kSamplesBinding);
+        occlusionProgram_.set(kParamsLocation,
+                              glm::vec4(settings.radius, settings.strength, kBiasFraction * settings.radius, 0.0f));
+        glBindImageTexture(kOcclusionImageUnit, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        occlusionProgram_.use();
+        glDispatchCompute(groupsX, groupsY, 1);
+    });
+    passes.run(kSsaoPass, [&] {
+        raw_.bindUnit(kRawOcclusionUnit);
+        glBindImageTexture(kOcclusionImageUnit, blurred_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        blurProgram_.use();
+        glDispatchCompute(groupsX, groupsY, 1);
+    });
     blurred_.bindUnit(kAmbientOcclusionUnit);
 }
 

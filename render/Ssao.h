@@ -18,7 +18,7 @@
 namespace manylights {
 
 class GpuScene;
-class PassProfiler;
+class FramePasses;
 struct FrameTargets;
 
 inline constexpr GLuint kAmbientOcclusionUnit =
@@ -46,7 +46,7 @@ public:
     // Computes the occlusion of the visible surfaces for `settings`: fills the G-buffer (the
     // forward technique has none of its own) and runs the occlusion and blur passes. Leaves
     // the blurred result bound to unit 13.
-    void run(const GpuScene& scene, FrameTargets& targets, const AmbientOcclusion& settings, PassProfiler& profiler);
+    void run(const AmbientOcclusion& settings, FramePasses& passes);
 
 private:
     void resize(int width, int height);

@@ -13,7 +13,7 @@
 namespace manylights {
 
 class GpuScene;
-class PassProfiler;
+class FramePasses;
 
 // How a technique's shaders are built.
 struct TechniqueOptions {
@@ -58,7 +58,7 @@ public:
     virtual std::vector<TechniqueCounter> counters() const { return {}; }
     // Renders the frame into targets.lit (already cleared to the background colour) and
     // leaves the scene's depth in targets.depthStencil.
-    virtual void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) = 0;
+    virtual void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) = 0;
 
 private:
     TechniqueOptions options_;

@@ -6,8 +6,8 @@
 #include <span>
 #include <string>
 
+#include "render/FramePasses.h"
 #include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 #include "render/ScreenPasses.h"
 
 namespace manylights {
@@ -101,18 +101,14 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
 }
 
-void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& targets) const
+void TiledQuadsTechnique::drawTiles(const FrameTargets& targets) const
 {
     if (drawOrder_.empty())
         return;
     const TileLightLists& lists = culler_.lists();
-    scene.bind();
     tileQuads_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileQuadsBinding);
     lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
     const glm::vec2 imageSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
-    // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
-    // background is never shaded.
-    beginAddingToCoveredPixels();
     for (std::size_t v = 0; v < kVariants; ++v) {
         const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
         if (tiles == 0)
@@ -125,30 +121,21 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
         program.use();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(tiles));
     }
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
 }
 
-void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(scene, profiler);
-    {
-        // The culling runs on the CPU: this pass's wall time is its cost (with the upload of
-        // the lists), its GPU time is near zero.
-        auto pass = profiler.pass("cpu-culling");
-        cullAndUpload(scene, targets);
-    }
-    {
-        auto pass = profiler.pass("global");
-        targets.litFramebuffer.bind();
-        scene.bind();
-        targets.gbuffer.bindForReading();
-        glDisable(GL_BLEND);
-        drawCoveredPixels(global_);
-    }
-    auto pass = profiler.pass("lighting");
-    drawTiles(scene, targets);
+    targets.gbuffer.fill(passes);
+    // The culling runs on the CPU: this pass's wall time is its cost (with the upload of the
+    // lists), its GPU time is near zero.
+    passes.run({.name = "cpu-culling"}, [&] { cullAndUpload(scene, targets); });
+    passes.run({.name = "global", .target = Resource::LitImage, .state = kCoveredPixels, .sampled = Resource::GBuffer},
+               [&] { drawCoveredPixels(global_); });
+    // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
+    // background is never shaded.
+    passes.run(
+        {.name = "lighting", .target = Resource::LitImage, .state = kAddToCoveredPixels, .sampled = Resource::GBuffer},
+        [&] { drawTiles(targets); });
 }
 
 }  // namespace manylights

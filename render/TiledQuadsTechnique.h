@@ -27,7 +27,7 @@ class TiledQuadsTechnique : public Technique {
 public:
     explicit TiledQuadsTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "tiled-quads"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
     // The last frame's culling result, for tests and statistics.
     const TileLightLists& lastLists() const { return culler_.lists(); }
@@ -46,7 +46,7 @@ private:
 
     // Culls, buckets the tiles by variant and uploads what the quads read.
     void cullAndUpload(const GpuScene& scene, const FrameTargets& targets);
-    void drawTiles(const GpuScene& scene, const FrameTargets& targets) const;
+    void drawTiles(const FrameTargets& targets) const;
 
     gl::Program global_;
     std::array<gl::Program, kVariants> variants_;

@@ -4,17 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "render/FramePasses.h"
 #include "render/GpuScene.h"
 #include "render/LightBatches.h"
-#include "render/PassProfiler.h"
 
 namespace manylights {
 
 namespace {
-// Bindings of shaders/tiled.comp.
-constexpr GLuint kLitImageUnit = bindings::LIT_IMAGE_UNIT;
-constexpr GLuint kDepthUnit = bindings::SCENE_DEPTH_UNIT;
-
 gl::Defines tiledDefines(const TechniqueOptions& options)
 {
     gl::Defines defines = shaderDefines(options);
@@ -31,31 +27,27 @@ TiledTechnique::TiledTechnique(const TechniqueOptions& options)
 {
 }
 
-void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler)
+void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(scene, profiler);
-    auto pass = profiler.pass("lighting");
-    scene.bind();
-    targets.gbuffer.bindForReading();
-    targets.depthStencil.bindUnit(kDepthUnit);
-    // Make the lit image's clear to the background visible to the image stores' neighbours.
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    glBindImageTexture(kLitImageUnit, targets.lit.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    targets.gbuffer.fill(passes);
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()));
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
-    if (oneWindow)
-        scene.bindLightWindow(batches.front());
     const gl::Program& program =
         program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
-    program.use();
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
-    for (const LightBatch& batch : batches) {
-        // Each batch after the first adds to what the one before it stored.
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        setLightBatch(program, batch);
-        glDispatchCompute(groups(targets.width), groups(targets.height), 1);
-    }
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    // One dispatch per batch: each batch after the first loads what the one before it stored.
+    for (const LightBatch& batch : batches)
+        passes.run({.name = "lighting",
+                    .sampled = Resource::GBuffer,
+                    .images = Resource::LitImage,
+                    .writes = Resource::LitImage},
+                   [&] {
+                       if (oneWindow)
+                           scene.bindLightWindow(batches.front());
+                       setLightBatch(program, batch);
+                       program.use();
+                       glDispatchCompute(groups(targets.width), groups(targets.height), 1);
+                   });
 }
 
 }  // namespace manylights

@@ -20,7 +20,7 @@ class TiledTechnique : public Technique {
 public:
     explicit TiledTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "tiled"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
     LightingProgram program_;

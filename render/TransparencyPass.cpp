@@ -82,7 +82,7 @@ TransparencyPass::TransparencyPass(const TechniqueOptions& options)
 {
 }
 
-void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler, bool everyLight)
+void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, bool everyLight)
 {
     lastEvaluations_ = 0;
     if (!scene.hasTransparentObjects())
@@ -112,55 +112,51 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, PassPro
                                   ClusterGrid::lightsPerBatch(targets.width, targets.height, kTransparentGridSlices));
     // One grid build serves every layer when the lights are one batch.
     const bool gridPerLayer = !everyLight && batches.size() > 1;
-    if (!everyLight) {
-        auto pass = profiler.pass("transparency grid");
-        if (!grid_)
-            grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
-        grid_->resize(targets.width, targets.height, batches.front().size());
-        // Widened so that rounding cannot put a surface of the objects outside the slices.
-        grid_->coverDepthRange(std::max(nearest * 0.99f, nearPlane), std::min(farthest * 1.01f, farPlane),
-                               coveredTiles(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
-        if (!gridPerLayer)
-            grid_->assignLights(scene, batches.front());
-    }
-    auto pass = profiler.pass("transparency");
+    const Pass gridPass = ClusterGrid::assignPass("transparency grid");
+    if (!everyLight)
+        passes.run(gridPass, [&] {
+            if (!grid_)
+                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
+            grid_->resize(targets.width, targets.height, batches.front().size());
+            // Widened so that rounding cannot put a surface of the objects outside the slices.
+            grid_->coverDepthRange(std::max(nearest * 0.99f, nearPlane), std::min(farthest * 1.01f, farPlane),
+                                   coveredTiles(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
+            if (!gridPerLayer)
+                grid_->assignLights(batches.front());
+        });
     if (options_.countWork) {
         const std::uint32_t zero = 0;
         evaluations_.update(0, sizeof zero, &zero);
-        evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
     }
-    const std::vector<GpuScene::TransparentLayer> layers = scene.transparentLayersBackToFront();
-
-    targets.litFramebuffer.bind();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    // Premultiplied over; the lit image's alpha is left as it is.
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    // Depth-tested against the opaque surfaces, never written; premultiplied over.
+    const Resource counted = options_.countWork ? Resource::WorkCounts : Resource::None;
+    const Pass drawPass{.name = "transparency",
+                        .target = Resource::LitImage,
+                        .state = {.keepDepth = true, .blend = Blend::PremultipliedOver},
+                        .storage = (everyLight ? Resource::None : Resource::LightGrid) | counted,
+                        .writes = counted};
     const LightingProgram& programs = everyLight ? everyLightProgram_ : gridProgram_;
-    for (const GpuScene::TransparentLayer& layer : layers) {
+    for (const GpuScene::TransparentLayer& layer : scene.transparentLayersBackToFront()) {
         for (const LightBatch& batch : batches) {
-            if (gridPerLayer) {
-                grid_->assignLights(scene, batch);
-                targets.litFramebuffer.bind();
-            }
-            scene.bind();
-            if (!everyLight)
-                grid_->bind();
-            scene.drawTransparentLayer(layer, [&](MaterialVariant variant) -> const gl::Program& {
-                const gl::Program& program =
-                    programs.variant(scene.lightingFeatures(), LightSource::StorageBuffer, variant);
-                setLightBatch(program, batch);
-                return program;
+            if (gridPerLayer)
+                passes.run(gridPass, [&] { grid_->assignLights(batch); });
+            passes.run(drawPass, [&] {
+                if (!everyLight)
+                    grid_->bind();
+                if (options_.countWork)
+                    evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
+                scene.drawTransparentLayer(layer, [&](MaterialVariant variant) -> const gl::Program& {
+                    const gl::Program& program =
+                        programs.variant(scene.lightingFeatures(), LightSource::StorageBuffer, variant);
+                    setLightBatch(program, batch);
+                    return program;
+                });
             });
         }
     }
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
     if (options_.countWork) {
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        // The count is read back: the frame's passes are done first.
+        passes.finish();
         std::uint32_t count = 0;
         glGetNamedBufferSubData(evaluations_.id(), 0, sizeof count, &count);
         lastEvaluations_ = count;

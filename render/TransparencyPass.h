@@ -21,9 +21,9 @@
 
 #include "gl/Buffer.h"
 #include "render/ClusterGrid.h"
+#include "render/FramePasses.h"
 #include "render/FrameTargets.h"
 #include "render/LightingPrograms.h"
-#include "render/PassProfiler.h"
 #include "render/Technique.h"
 
 namespace manylights {
@@ -37,7 +37,7 @@ public:
 
     // Draws the scene's transparent objects over targets.lit (a no-op without any). `everyLight`:
     // loop over every light (the forward technique's reference) instead of the light grid.
-    void run(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler, bool everyLight);
+    void run(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, bool everyLight);
 
     // The (pixel, light) pairs the last run evaluated; counted only when the options counted
     // work.

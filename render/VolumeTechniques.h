@@ -17,7 +17,7 @@ class VolumesTechnique : public Technique {
 public:
     explicit VolumesTechnique(const TechniqueOptions& options) : Technique(options), drawer_(shaderDefines(options)) {}
     std::string_view name() const override { return "volumes"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
     VolumeDrawer drawer_;
@@ -29,16 +29,15 @@ class StencilTechnique : public Technique {
 public:
     explicit StencilTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "stencil"; }
-    void render(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler) override;
+    void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
     VolumeDrawer drawer_;
     gl::Program stencilOnly_;  // the volume vertex shader and no fragment shader
 };
 
-// The first two steps of both: the G-buffer, then the global terms and the unbounded lights
-// over every covered pixel. Leaves the lit framebuffer bound with additive blending on.
-void shadeGlobalTermsAndUnboundedLights(const GpuScene& scene, FrameTargets& targets, PassProfiler& profiler,
-                                        VolumeDrawer& drawer);
+// The first passes of both: the G-buffer, then the global terms and the unbounded lights
+// over every covered pixel.
+void shadeGlobalTermsAndUnboundedLights(FramePasses& passes, VolumeDrawer& drawer);
 
 }  // namespace manylights

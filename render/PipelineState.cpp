@@ -1,0 +1,77 @@
+#include "render/PipelineState.h"
+
+#include <epoxy/gl.h>
+
+namespace manylights {
+
+namespace {
+
+void enable(GLenum capability, bool on)
+{
+    if (on)
+        glEnable(capability);
+    else
+        glDisable(capability);
+}
+
+GLenum depthFunction(DepthTest test)
+{
+    switch (test) {
+    case DepthTest::Less: return GL_LESS;
+    case DepthTest::Off: return GL_ALWAYS;
+    case DepthTest::Greater: return GL_GREATER;
+    case DepthTest::GreaterOrEqual: return GL_GEQUAL;
+    case DepthTest::Equal: return GL_EQUAL;
+    }
+    return GL_LESS;
+}
+
+}  // namespace
+
+void applyPipelineState(const PipelineState& state)
+{
+    // The test stays enabled when off (GL_ALWAYS): a disabled test would also stop depth writes.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(depthFunction(state.depthTest));
+    glDepthMask(state.keepDepth ? GL_FALSE : GL_TRUE);
+
+    enable(GL_BLEND, state.blend != Blend::Replace);
+    glBlendEquation(GL_FUNC_ADD);
+    if (state.blend == Blend::PremultipliedOver)
+        glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    else
+        glBlendFunc(GL_ONE, GL_ONE);
+
+    enable(GL_CULL_FACE, state.cullFrontFaces);
+    glCullFace(state.cullFrontFaces ? GL_FRONT : GL_BACK);
+    enable(GL_DEPTH_CLAMP, state.clampDepth);
+    const GLboolean colour = state.maskColour ? GL_FALSE : GL_TRUE;
+    glColorMask(colour, colour, colour, colour);
+
+    enable(GL_STENCIL_TEST, state.stencil != Stencil::Off);
+    switch (state.stencil) {
+    case Stencil::Off:
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        break;
+    case Stencil::CountVolumeFaces:
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        break;
+    case Stencil::PassMarkedAndClear:
+        glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+        break;
+    case Stencil::MarkDrawn:
+        glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        break;
+    case Stencil::PassMarked:
+        glStencilFunc(GL_EQUAL, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        break;
+    }
+}
+
+}  // namespace manylights
