@@ -11,15 +11,11 @@
 #                                                && make -C /tmp/before build
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${ML:-}" ]; then
-  make build >/dev/null
-  ML=build/manylights
-fi
 lights=${LIGHTS:-4096}
 size=${SIZE:-1280x720}
 frames=${FRAMES:-3}
 mkdir -p out
-echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), binary $ML"
+source scripts/measure-common.sh
 "$ML" bench bench/courtyard.json --techniques clustered,stencil --lights "$lights" --size "$size" \
   --frames "$frames" --warmup 1 | tail -n 3
 "$ML" render bench/courtyard.json -o out/measure-clustered.png --lights "$lights" --size "$size" \

@@ -7,14 +7,10 @@
 #   scripts/measure-display.sh                 SIZE=1920x1080 TECHNIQUE=deferred scripts/measure-display.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${ML:-}" ]; then
-  make build >/dev/null
-  ML=build/manylights
-fi
 size=${SIZE:-1280x720}
 technique=${TECHNIQUE:-clustered}
 mkdir -p out
-echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), binary $ML"
+source scripts/measure-common.sh
 run() {
   local name=$1
   shift

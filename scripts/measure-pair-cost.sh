@@ -11,16 +11,12 @@
 #   TECHNIQUES=deferred,clustered SIZE=800x600 ML=/tmp/before/build/manylights scripts/measure-pair-cost.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${ML:-}" ]; then
-  make build >/dev/null
-  ML=build/manylights
-fi
 counts=${COUNTS:-256,1024}
 size=${SIZE:-1280x720}
 techniques=${TECHNIQUES:-deferred,volumes,stencil,tiled-quads,tiled,clustered}
 mkdir -p out
 csv=out/measure-pair-cost.csv
-echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), binary $ML"
+source scripts/measure-common.sh
 "$ML" bench ${SCENE:-} --techniques "$techniques" --lights "$counts" --size "$size" --frames "${FRAMES:-3}" \
   --warmup 1 --count-work --csv "$csv" >/dev/null
 python3 - "$csv" <<'PY'

@@ -10,15 +10,11 @@
 #   scripts/measure-transparency.sh            SIZE=640x360 TECHNIQUE=tiled scripts/measure-transparency.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${ML:-}" ]; then
-  make build >/dev/null
-  ML=build/manylights
-fi
 size=${SIZE:-1280x720}
 technique=${TECHNIQUE:-clustered}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), binary $ML"
+source scripts/measure-common.sh
 python3 - "$out" <<'PY'
 import json, sys
 scene = json.load(open("scenes/glass.json"))
