@@ -136,6 +136,8 @@ public:
     std::size_t lightCount() const { return lightCount_; }
     // The kinds of light the scene has, which the lighting programs are specialised for.
     const LightingFeatures& lightingFeatures() const { return lightingFeatures_; }
+    // The lights as posed at time() (their animations applied), and as the shaders get them.
+    const std::vector<Light>& lights() const { return currentLights_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
     const TextureCache& textures() const { return textures_; }

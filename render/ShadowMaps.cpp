@@ -11,6 +11,7 @@
 #include "render/GpuScene.h"
 #include "render/PassProfiler.h"
 #include "render/PipelineState.h"
+#include "scene/Falloff.h"
 #include "scene/ShadowSelection.h"
 
 namespace manylights {
@@ -152,21 +153,20 @@ bool sameLight(const GpuLight& a, const GpuLight& b)
            a.attenuation == b.attenuation && a.spotAxisCosCutoff == b.spotAxisCosCutoff;
 }
 
-// Spot lights are packed with cos(cutoff) ≥ −1; point lights with −2 (render/GpuScene.cpp).
-bool isSpot(const GpuLight& light) { return light.spotAxisCosCutoff.w >= -1.0f; }
-
-float cutoffDegrees(const GpuLight& light)
+// A wide spot's map would be a stretched perspective: it gets a cube map as a point light does.
+bool needsCube(const Light& light)
 {
-    return glm::degrees(std::acos(std::clamp(light.spotAxisCosCutoff.w, -1.0f, 1.0f)));
+    return light.type != LightType::Spot || light.cutoffDegrees > kMaxSpotMapCutoffDegrees;
 }
 
 // The far plane of a local light's map: its radius, or for a light that reaches farther than
 // the scene, the scene's farthest corner (a little beyond, so it is not clipped).
-float shadowFar(const GpuLight& light, const Bounds& scene)
+float shadowFar(const Light& light, const GpuScene& scene)
 {
-    const glm::vec3 p(light.positionRadius);
-    const glm::vec3 farthest = glm::max(glm::abs(scene.min - p), glm::abs(scene.max - p));
-    return std::min(light.positionRadius.w, 1.01f * glm::length(farthest) + 1e-3f);
+    const Bounds bounds = scene.objectsWorldBounds();
+    const glm::vec3 p = light.position;
+    const glm::vec3 farthest = glm::max(glm::abs(bounds.min - p), glm::abs(bounds.max - p));
+    return std::min(lightRadius(light, scene.scene().attenuationThreshold), 1.01f * glm::length(farthest) + 1e-3f);
 }
 // The near plane: objects closer to the light than this do not cast. A thousandth of the far
 // plane keeps the 24-bit depth's resolution near the far plane at about far / 16000.
@@ -200,16 +200,15 @@ void ShadowMaps::ensureArrays(int spotLayers, int cubes)
 
 void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
 {
-    const std::vector<GpuLight>& lights = scene.packedLights();
+    const std::vector<Light>& lights = scene.lights();
     lightCount_ = lights.size();
     shadowedLights_.clear();
     if (localBudget_ > 0) {
         std::vector<ShadowCandidate> candidates;
         candidates.reserve(lights.size());
-        for (const GpuLight& light : lights)
-            candidates.push_back(
-                {glm::vec3(light.positionRadius), light.positionRadius.w,
-                 std::max({light.intensityExponent.r, light.intensityExponent.g, light.intensityExponent.b})});
+        for (const Light& light : lights)
+            candidates.push_back({light.position, lightRadius(light, scene.scene().attenuationThreshold),
+                                  std::max({light.intensity.r, light.intensity.g, light.intensity.b})});
         shadowedLights_ = selectShadowLights(candidates, scene.frameUniforms().viewProjection, localBudget_);
     }
 
@@ -217,7 +216,7 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
     std::vector<LocalSlot> kept;
     std::vector<std::size_t> fresh;
     for (std::size_t light : shadowedLights_) {
-        const bool cube = !isSpot(lights[light]) || cutoffDegrees(lights[light]) > kMaxSpotMapCutoffDegrees;
+        const bool cube = needsCube(lights[light]);
         const auto old = std::find_if(slots_.begin(), slots_.end(),
                                       [&](const LocalSlot& s) { return s.light == light && s.cube == cube; });
         if (old != slots_.end())
@@ -228,7 +227,7 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
     for (std::size_t light : fresh) {
         LocalSlot slot;
         slot.light = light;
-        slot.cube = !isSpot(lights[light]) || cutoffDegrees(lights[light]) > kMaxSpotMapCutoffDegrees;
+        slot.cube = needsCube(lights[light]);
         slot.layer = 0;
         while (std::any_of(kept.begin(), kept.end(),
                            [&](const LocalSlot& s) { return s.cube == slot.cube && s.layer == slot.layer; }))
@@ -245,12 +244,13 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
     ensureArrays(spotLayers, cubes);
 
     for (LocalSlot& slot : slots_) {
-        if (slot.valid && sameLight(slot.renderedFor, lights[slot.light]) &&
-            slot.renderedVersion == scene.transformsVersion())
+        // The packed light is the cache key: what the shaders see of it.
+        const GpuLight& packed = scene.packedLights()[slot.light];
+        if (slot.valid && sameLight(slot.renderedFor, packed) && slot.renderedVersion == scene.transformsVersion())
             continue;
         auto pass = profiler.pass(slot.cube ? "shadow point" : "shadow spot");
         slot.cube ? renderCube(scene, slot) : renderSpot(scene, slot);
-        slot.renderedFor = lights[slot.light];
+        slot.renderedFor = packed;
         slot.renderedVersion = scene.transformsVersion();
         slot.valid = true;
     }
@@ -260,11 +260,11 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
 
 void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
 {
-    const GpuLight& light = scene.packedLights()[slot.light];
-    const glm::vec3 position(light.positionRadius);
-    const glm::vec3 axis(light.spotAxisCosCutoff);
-    const float cutoff = cutoffDegrees(light);
-    const float far = shadowFar(light, scene.objectsWorldBounds());
+    const Light& light = scene.lights()[slot.light];
+    const glm::vec3 position = light.position;
+    const glm::vec3 axis = glm::normalize(light.direction);
+    const float cutoff = light.cutoffDegrees;
+    const float far = shadowFar(light, scene);
     const glm::vec3 up = std::abs(axis.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
     const glm::mat4 viewProjection =
         glm::perspective(glm::radians(2.0f * cutoff + kSpotFovMarginDegrees), 1.0f, kNearFraction * far, far) *
@@ -277,9 +277,9 @@ void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
 
 void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
 {
-    const GpuLight& light = scene.packedLights()[slot.light];
-    const glm::vec3 position(light.positionRadius);
-    const float far = shadowFar(light, scene.objectsWorldBounds());
+    const Light& light = scene.lights()[slot.light];
+    const glm::vec3 position = light.position;
+    const float far = shadowFar(light, scene);
     const float near = kNearFraction * far;
     // The faces in GL's order (+X, −X, +Y, −Y, +Z, −Z) with the up vectors that make a 90°
     // perspective view of each match the cube map's texture coordinates.
