@@ -3,8 +3,9 @@
 // resources it reads and writes. FramePasses::run derives the rest from the record: the
 // profiler's scope (consecutive passes of one name share one, and the profiler sums a name's
 // scopes: a technique's light batches are one timed pass), the bound target and inputs, the GL
-// state, and the memory barriers between passes. A technique's render() is then a list of passes, each with the draw or
-// dispatch that is its own. Not a frame graph: the frame is a fixed sequence, run in the order written.
+// state, and the memory barriers between passes. A technique's render() is then a list of
+// passes, each with the draw or dispatch that is its own. Not a frame graph: the frame is a
+// fixed sequence, run in the order written.
 #pragma once
 
 #include <array>
