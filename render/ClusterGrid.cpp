@@ -62,8 +62,8 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
     clusterCount_ = tiles * static_cast<std::uint32_t>(slices_);
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
     if (!tileSlices_ || tileSlices_.size() != tileBytes) {
-        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, 0);
-        // Dynamic: coverDepthRange writes it from the CPU.
+        // Dynamic: coverDepthRanges writes them from the CPU.
+        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
@@ -104,15 +104,14 @@ void ClusterGrid::fitToSurfaces()
     glDispatchCompute(groupsFor(static_cast<std::uint32_t>(gridWidth_ * gridHeight_), kTileGroupSize), 1, 1);
 }
 
-void ClusterGrid::coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered)
+void ClusterGrid::coverDepthRanges(const std::vector<glm::vec2>& ranges)
 {
-    ML_ASSERT(covered.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
-    const float range[2] = {nearest, farthest};
-    glClearNamedBufferData(tileDepthRanges_.id(), GL_RG32F, GL_RG, GL_FLOAT, range);
+    ML_ASSERT(ranges.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
     const std::uint32_t allSlices = slices_ == 32 ? ~0u : (1u << slices_) - 1u;
-    std::vector<std::uint32_t> slices(covered.size());
-    for (std::size_t tile = 0; tile < covered.size(); ++tile)
-        slices[tile] = covered[tile] ? allSlices : 0u;
+    std::vector<std::uint32_t> slices(ranges.size());
+    for (std::size_t tile = 0; tile < ranges.size(); ++tile)
+        slices[tile] = ranges[tile].x < ranges[tile].y ? allSlices : 0u;
+    tileDepthRanges_.update(0, ranges.size() * sizeof(glm::vec2), ranges.data());
     tileSlices_.update(0, slices.size() * sizeof(std::uint32_t), slices.data());
 }
 

@@ -4,8 +4,8 @@
 // - the clustered technique fits each tile's range to the opaque surfaces seen through it and
 //   gives lights only to the slices that hold one (fitToSurfaces): Olsson et al.'s compaction;
 // - the transparency pass (render/TransparencyPass.h) needs lights wherever a transparent
-//   surface may be, in front of, between or beyond the opaque ones: every tile spans the same
-//   range, the transparent objects' depths, and every slice is occupied (coverDepthRange).
+//   surface may be, in front of, between or beyond the opaque ones: each tile spans the
+//   depths of the transparent objects over it, and every slice is occupied (coverDepthRanges).
 // The masks have a fixed size (a bit per light of the batch), so no light can be dropped,
 // nothing is read back and no pass loops more than a bounded number of times.
 #pragma once
@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <string_view>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -46,17 +48,18 @@ public:
     // Binds the buffers at lib/clusters.glsl's binding points.
     void bind() const;
     // The passes the grid is built in: fitting it to the surfaces (the G-buffer) and setting
-    // the lights (coverDepthRange and assignLights), which the scene binds for.
+    // the lights (coverDepthRanges and assignLights), which the scene binds for.
     static Pass fitPass();
     static Pass assignPass(std::string_view name);
 
     // Each tile's range: its opaque surfaces' nearest to farthest view depth (from the depth
     // buffer and the G-buffer); its occupied slices: those holding a surface. In fitPass().
     void fitToSurfaces();
-    // Every tile's range: view depths nearest to farthest (0 < nearest < farthest); every
-    // slice of the tiles where `covered` (one flag per tile, row by row) is true occupied, no
-    // slice of the others (lights are then assigned only where something needs them).
-    void coverDepthRange(float nearest, float farthest, const std::vector<bool>& covered);
+    // Each tile's range (one per tile, row by row): view depths nearest to farthest, with
+    // 0 < nearest < farthest; every slice of such a tile is occupied. A tile whose range is
+    // empty (nearest >= farthest) has no slice occupied: lights are assigned only where
+    // something needs them.
+    void coverDepthRanges(const std::vector<glm::vec2>& ranges);
     // Sets each light of the batch in the masks of the occupied clusters it may reach. In
     // assignPass().
     void assignLights(const LightBatch& batch);

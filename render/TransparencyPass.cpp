@@ -25,15 +25,32 @@ gl::Defines everyLightDefines(gl::Defines defines)
     return defines;
 }
 
-// The grid's tiles that a transparent item's world bounds may cover on screen: the rectangle
-// around its box's projected corners, widened by a tile; every tile when a corner lies at or
-// behind the eye plane (the projection is not bounded there).
-std::vector<bool> coveredTiles(const std::vector<Bounds>& objects, const FrameUniforms& frame, int tilesAcross,
-                               int tilesDown)
+// The view depths of a transparent item's world bounds (its box's centre depth ± its extent
+// along the view axis), widened so that rounding cannot put a surface of it outside, and
+// clipped to the view's depth.
+glm::vec2 depthSpan(const Bounds& bounds, const FrameUniforms& frame)
 {
-    std::vector<bool> covered(static_cast<std::size_t>(tilesAcross * tilesDown), false);
+    const float middle = glm::dot(0.5f * (bounds.min + bounds.max) - glm::vec3(frame.eye), glm::vec3(frame.viewAxis));
+    const float reach = glm::dot(glm::abs(glm::vec3(frame.viewAxis)), 0.5f * (bounds.max - bounds.min));
+    const float nearPlane = frame.projection.z;
+    const float farPlane = frame.projection.w;
+    return {std::max((middle - reach) * 0.99f, nearPlane), std::min((middle + reach) * 1.01f, farPlane)};
+}
+
+// Per tile of the grid, the union of the depth spans of the transparent items whose world
+// bounds may cover it on screen: the rectangle around the box's projected corners, widened by
+// a tile; every tile when a corner lies at or behind the eye plane (the projection is not
+// bounded there). Tiles no item covers get an empty range.
+std::vector<glm::vec2> tileDepthRanges(const std::vector<Bounds>& objects, const FrameUniforms& frame, int tilesAcross,
+                                       int tilesDown)
+{
+    std::vector<glm::vec2> ranges(static_cast<std::size_t>(tilesAcross * tilesDown),
+                                  glm::vec2(std::numeric_limits<float>::max(), 0.0f));
     const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
     for (const Bounds& bounds : objects) {
+        const glm::vec2 span = depthSpan(bounds, frame);
+        if (!(span.x < span.y))
+            continue;  // wholly in front of the near plane or beyond the far plane
         glm::vec2 lo(std::numeric_limits<float>::max());
         glm::vec2 hi(-std::numeric_limits<float>::max());
         bool behindEye = false;
@@ -62,10 +79,12 @@ std::vector<bool> coveredTiles(const std::vector<Bounds>& objects, const FrameUn
             y1 = std::min(tile(hi.y, tilesDown) + 1, tilesDown - 1);
         }
         for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x)
-                covered[static_cast<std::size_t>(y * tilesAcross + x)] = true;
+            for (int x = x0; x <= x1; ++x) {
+                glm::vec2& range = ranges[static_cast<std::size_t>(y * tilesAcross + x)];
+                range = {std::min(range.x, span.x), std::max(range.y, span.y)};
+            }
     }
-    return covered;
+    return ranges;
 }
 
 }  // namespace
@@ -88,22 +107,11 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
     if (!scene.hasTransparentObjects())
         return;
     const FrameUniforms& frame = scene.frameUniforms();
-    const float nearPlane = frame.projection.z;
-    const float farPlane = frame.projection.w;
     const std::vector<Bounds> objects = scene.transparentWorldBounds();
-    // The view depths the objects' boxes span: each box's centre depth ± its extent along the
-    // view axis.
-    float nearest = std::numeric_limits<float>::max();
-    float farthest = -std::numeric_limits<float>::max();
-    const glm::vec3 eye(frame.eye);
-    const glm::vec3 axis(frame.viewAxis);
-    for (const Bounds& bounds : objects) {
-        const float middle = glm::dot(0.5f * (bounds.min + bounds.max) - eye, axis);
-        const float reach = glm::dot(glm::abs(axis), 0.5f * (bounds.max - bounds.min));
-        nearest = std::min(nearest, middle - reach);
-        farthest = std::max(farthest, middle + reach);
-    }
-    if (objects.empty() || farthest <= nearPlane || nearest >= farPlane)
+    if (std::none_of(objects.begin(), objects.end(), [&](const Bounds& bounds) {
+            const glm::vec2 span = depthSpan(bounds, frame);
+            return span.x < span.y;
+        }))
         return;  // nothing transparent within the view's depth
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     const std::vector<LightBatch> batches =
@@ -118,9 +126,7 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
             if (!grid_)
                 grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
             grid_->resize(targets.width, targets.height, batches.front().size());
-            // Widened so that rounding cannot put a surface of the objects outside the slices.
-            grid_->coverDepthRange(std::max(nearest * 0.99f, nearPlane), std::min(farthest * 1.01f, farPlane),
-                                   coveredTiles(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
+            grid_->coverDepthRanges(tileDepthRanges(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
             if (!gridPerLayer)
                 grid_->assignLights(batches.front());
         });
