@@ -26,7 +26,8 @@ public:
     // ke + ambient + directional for every covered pixel, replacing the lit colour.
     void drawGlobalTerms() const;
     // Draws `count` lights of `shape` starting at `first` within that shape's list, with the
-    // lighting program (or `program`, for the stencil pass). The caller sets the GL state.
+    // lighting program (or `program`, for the stencil pass). The pass it runs in sets the GL
+    // state (render/FramePasses.h).
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const;
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count, const gl::Program& program) const;
     const gl::Program& lightingProgram() const { return lighting_; }
