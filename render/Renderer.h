@@ -60,8 +60,6 @@ struct RendererDesc {
     // the displayed picture is the size divided by it.
     std::optional<DisplaySettings> display{};
     int supersample = 0;
-
-    bool operator==(const RendererDesc&) const = default;
 };
 
 // The size of an image when none is asked for (docs/cli.md).
