@@ -19,10 +19,13 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
     // One draw of the objects per light batch. The later ones add their batch's light to the
     // fragments the first one left visible: the same program draws the same triangles, so the
     // depth test GL_EQUAL passes exactly those (GL's invariance rule).
-    constexpr Pass kFirstBatch{.name = "forward", .target = Resource::LitImage};
+    // Forward reads no G-buffer, but its ambient term reads SSAO's occlusion, which counts as
+    // part of it (Resource::GBuffer): the passes wait for SSAO's image stores.
+    constexpr Pass kFirstBatch{.name = "forward", .target = Resource::LitImage, .sampled = Resource::GBuffer};
     constexpr Pass kLaterBatch{.name = "forward",
                                .target = Resource::LitImage,
-                               .state = {.depthTest = DepthTest::Equal, .keepDepth = true, .blend = Blend::Add}};
+                               .state = {.depthTest = DepthTest::Equal, .keepDepth = true, .blend = Blend::Add},
+                               .sampled = Resource::GBuffer};
     for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount())))
         passes.run(batch.isFirst() ? kFirstBatch : kLaterBatch, [&] {
             if (batch.isFirst())
