@@ -282,6 +282,10 @@ void GpuScene::setViewport(int width, int height)
 
 void GpuScene::setCamera(const Camera& camera)
 {
+    // The viewer sets its camera every frame; one that did not move needs no new draw order
+    // and instance records.
+    if (camera == camera_)
+        return;
     camera_ = camera;
     updateFrameUniforms();
 }

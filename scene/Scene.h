@@ -25,6 +25,8 @@ struct Camera {
     float fovYDegrees = 45.0f;
     float nearPlane = 0.1f;
     float farPlane = 200.0f;
+
+    bool operator==(const Camera&) const = default;
 };
 
 // What keeps a camera from defining a view basis. One check for the scene file's camera and
