@@ -56,6 +56,9 @@ public:
     // Waits for the frame's queries and returns its sample.
     FrameSample endFrame();
     [[nodiscard]] Scope pass(std::string_view name) { return Scope(*this, name); }
+    // The scopes opened since beginFrame, each with a glFinish at either end (endFrame sums
+    // the scopes of one name into one PassSample).
+    std::size_t scopesThisFrame() const { return passesThisFrame_; }
 
 private:
     struct PassQueries {

@@ -94,11 +94,14 @@ TEST_F(FramePassesTest, PassesOfOneNameAreOneTimedPass)
         for (const char* name : {"geometry", "lighting", "lighting", "lighting", "clusters", "lighting"})
             passes.run({.name = name}, [] {});
     }
+    // Consecutive passes of one name (a pass per light batch) share one scope: one pair of
+    // glFinish calls, not one per batch.
+    EXPECT_EQ(profiler_.scopesThisFrame(), 4u);
     const FrameSample frame = profiler_.endFrame();
     std::vector<std::string> names;
     for (const PassSample& pass : frame.passes)
         names.push_back(pass.name);
-    // Consecutive ones share one scope; the profiler sums the rest (a pass per light batch).
+    // The profiler sums the scopes of one name into one entry.
     EXPECT_EQ(names, (std::vector<std::string>{"geometry", "lighting", "clusters"}));
 }
 
