@@ -15,7 +15,9 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
+    bool lightWindows_;
     LightingProgram program_;
+    LightingProgram depthPrepass_;
 };
 
 }  // namespace manylights

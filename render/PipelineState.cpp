@@ -71,6 +71,10 @@ void applyPipelineState(const PipelineState& state)
         glStencilFunc(GL_EQUAL, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         break;
+    case Stencil::OncePerPixel:
+        glStencilFunc(GL_EQUAL, state.stencilReference, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        break;
     }
 }
 

@@ -33,6 +33,11 @@ enum class Stencil : std::uint8_t {
     // Marks every pixel drawn with 1 (FXAA's edge test), then passes only those.
     MarkDrawn,
     PassMarked,
+    // Passes where the mark equals PipelineState::stencilReference and increments it. Passes
+    // drawn with references 0, 1, 2, ... over the same pixels each shade a pixel once, however
+    // many fragments tie at its depth: forward's lighting draws keep the first drawn of the
+    // surfaces that tie at the depth its pre-pass left, the one a single GL_LESS pass keeps.
+    OncePerPixel,
 };
 
 struct PipelineState {
@@ -43,6 +48,7 @@ struct PipelineState {
     bool clampDepth = false;       // keep geometry beyond the far plane instead of clipping it
     bool maskColour = false;       // no colour writes
     Stencil stencil = Stencil::Off;
+    std::uint8_t stencilReference = 0;  // Stencil::OncePerPixel's
 
     bool operator==(const PipelineState&) const = default;
 };

@@ -15,6 +15,11 @@ layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inTangent;  // xyz tangent, w handedness; zero without uvs
 layout(location = 4) in vec4 inColour;   // glTF COLOR_0; read by vertex-colour variants only
 
+// forward's depth pre-pass and its lighting draws are different programs over this shader;
+// `invariant` makes them compute the same depth bit for bit (GLSL 4.50, 4.6.1), so the
+// lighting draws' GL_EQUAL passes exactly the fragments the pre-pass left visible.
+invariant gl_Position;
+
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec2 uv;

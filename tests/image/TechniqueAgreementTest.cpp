@@ -127,6 +127,10 @@ INSTANTIATE_TEST_SUITE_P(
         AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
         AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
         AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json", {"--size", "160x90"}},
+        // Surfaces drawn at exactly the same depths, lit in two light batches: the G-buffer
+        // keeps the first drawn; forward's lighting draws after its depth pre-pass must too,
+        // and shade it once per batch, not once per surface that ties.
+        AgreementCase{"coplanar_surfaces", kScenes + "coplanar_surfaces.json", {"--size", "160x90"}},
         // Diffuse, specular and normal maps (issue 5): the G-buffer must carry the
         // textured, normal-mapped surface exactly as forward shades it.
         AgreementCase{"textured_normal_mapped", kScenes + "textured_normal_mapped.json", {"--size", "200x120"}},
