@@ -17,7 +17,13 @@ namespace manylights {
 
 // An icosphere subdivided `subdivisions` times, scaled so that the distance from the centre
 // to its nearest face is 1: it contains the unit sphere. Convex, outward (CCW) faces.
-Mesh makeBoundingSphere(int subdivisions = 2);
+// The light-volume techniques draw the icosahedron itself (20 faces, reaching 1.26 from the
+// centre at its corners): llvmpipe sets up every triangle and shades every 4x4 block a
+// triangle touches, so on screen-small volumes the 320 faces of two subdivisions cost more
+// than the icosahedron's slack. Courtyard at 4096 lights, 1280x720: 2 subdivisions 44.97 M
+// fragment-shader invocations and 475 ms of volumes' lighting pass, 1 subdivision 31.0 M and
+// 352 ms, none 26.4 M and 265 ms (docs/performance.md).
+Mesh makeBoundingSphere(int subdivisions = 0);
 
 // A cone with its apex at (just behind) the origin, its axis along +Z, its base cap at z = 1,
 // and its polygonal base circumscribing the circle of radius 1 (with a margin, see the .cpp):

@@ -5,11 +5,12 @@
 
 layout(early_fragment_tests) in;
 layout(location = 0) flat in uint lightIndex;
+layout(location = 1) flat in GpuLight volumeLight;
 layout(location = 0) out vec4 outColor;
 
 void main()
 {
     Surface s = gbufferSurface(ivec2(gl_FragCoord.xy));
-    outColor = vec4(shadeLocal(lightIndex, s, viewVector(s.position)), 0.0);
+    outColor = vec4(shadeLocalLight(lightIndex, volumeLight, s, viewVector(s.position)), 0.0);
     recordLightEvaluations(1u);
 }

@@ -16,6 +16,7 @@ layout(location = 0) uniform uint firstVolumeLight;  // where this draw's lights
 layout(location = 1) uniform int volumeShape;        // 0 sphere, 1 cone, 2 full screen
 
 layout(location = 0) flat out uint lightIndex;
+layout(location = 1) flat out GpuLight volumeLight;
 
 const int SHAPE_SPHERE = 0;
 const int SHAPE_CONE = 1;
@@ -24,6 +25,7 @@ void main()
 {
     lightIndex = volumeLights[firstVolumeLight + uint(gl_InstanceID)];
     GpuLight light = lights[lightIndex];
+    volumeLight = light;
     vec3 centre = light.positionRadius.xyz;
     float radius = light.positionRadius.w;
     if (volumeShape == SHAPE_SPHERE) {

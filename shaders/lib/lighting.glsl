@@ -91,15 +91,19 @@ vec4 lightReach(GpuLight light, vec3 position)
 
 // intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, times its shadow factor when it
 // has a shadow map (lib/shadows.glsl); exactly zero where A·S is zero.
-vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
+vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
 {
-    GpuLight light = batchLight(lightIndex);
     vec4 reach = lightReach(light, s.position);
     // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
     // skips its texture taps for the pairs out of reach.
     float shadow = reach.w != 0.0 ? localShadow(lightIndex, light.positionRadius.xyz, s.position) : 0.0;
     vec3 color = light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w * shadow;
     return reach.w != 0.0 ? color : vec3(0.0);
+}
+
+vec3 shadeLocal(uint lightIndex, Surface s, vec3 V)
+{
+    return shadeLocalLight(lightIndex, batchLight(lightIndex), s, V);
 }
 
 // Work counting (--count-work): the shaders of each technique report how many (pixel,

@@ -26,16 +26,20 @@ float largestFaceDistance(const Mesh& mesh, const glm::vec3& point)
 
 TEST(LightVolumes, SphereEnclosesTheUnitSphere)
 {
-    const Mesh sphere = makeBoundingSphere();
-    EXPECT_EQ(sphere.indices.size(), 320u * 3u);  // icosahedron subdivided twice
-    // Every face's plane is at distance ≥ 1 from the centre, facing outwards...
-    EXPECT_LE(largestFaceDistance(sphere, glm::vec3(0.0f)), -1.0f + 1e-5f);
-    // ...so points on the unit sphere, in every direction, are inside.
-    for (int i = 0; i < 2000; ++i) {
-        const float z = 1.0f - 2.0f * (static_cast<float>(i) + 0.5f) / 2000.0f;
-        const float phi = static_cast<float>(i) * 2.39996323f;
-        const float r = std::sqrt(1.0f - z * z);
-        EXPECT_LE(largestFaceDistance(sphere, glm::vec3(r * std::cos(phi), r * std::sin(phi), z)), 1e-5f);
+    EXPECT_EQ(makeBoundingSphere().indices.size(), 20u * 3u);  // the icosahedron by default
+    for (int subdivisions = 0; subdivisions <= 2; ++subdivisions) {
+        const Mesh sphere = makeBoundingSphere(subdivisions);
+        EXPECT_EQ(sphere.indices.size(), (20u << (2 * subdivisions)) * 3u);
+        // Every face's plane is at distance ≥ 1 from the centre, facing outwards...
+        EXPECT_LE(largestFaceDistance(sphere, glm::vec3(0.0f)), -1.0f + 1e-5f);
+        // ...so points on the unit sphere, in every direction, are inside.
+        for (int i = 0; i < 2000; ++i) {
+            const float z = 1.0f - 2.0f * (static_cast<float>(i) + 0.5f) / 2000.0f;
+            const float phi = static_cast<float>(i) * 2.39996323f;
+            const float r = std::sqrt(1.0f - z * z);
+            EXPECT_LE(largestFaceDistance(sphere, glm::vec3(r * std::cos(phi), r * std::sin(phi), z)), 1e-5f)
+                << subdivisions << " subdivisions";
+        }
     }
 }
 
