@@ -36,4 +36,11 @@ DepthTextureArray::DepthTextureArray(GLenum target, std::string_view label, int 
     glClearTexImage(id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
 }
 
+BufferTexture::BufferTexture(std::string_view label, GLenum internalFormat, const Buffer& buffer)
+    : GlObject(detail::createTexture(GL_TEXTURE_BUFFER))
+{
+    setLabel(GL_TEXTURE, id(), label);
+    glTextureBuffer(id(), internalFormat, buffer.id());
+}
+
 }  // namespace manylights::gl

@@ -1,10 +1,12 @@
 // gl::Texture2D: a single-level 2D texture for render targets and the G-buffer, owned and
 // labelled (material textures with mipmaps are gl/MipmappedTexture.h); gl::DepthTextureArray:
-// the layered depth textures of the local lights' shadow maps.
+// the layered depth textures of the local lights' shadow maps; gl::BufferTexture: a buffer's
+// bytes read as texels.
 #pragma once
 
 #include <string_view>
 
+#include "gl/Buffer.h"
 #include "gl/GlObject.h"
 
 namespace manylights::gl {
@@ -47,6 +49,16 @@ class DepthTextureArray : public GlObject<detail::deleteTexture> {
 public:
     DepthTextureArray() = default;
     DepthTextureArray(GLenum target, std::string_view label, int size, int layers);
+
+    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+};
+
+// A texture buffer: the bytes of `buffer` read as texels of `internalFormat` (texelFetch on a
+// samplerBuffer). It reads the buffer as it is at each draw; the buffer must outlive it.
+class BufferTexture : public GlObject<detail::deleteTexture> {
+public:
+    BufferTexture() = default;
+    BufferTexture(std::string_view label, GLenum internalFormat, const Buffer& buffer);
 
     void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
 };

@@ -32,7 +32,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
     });
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
     const gl::Program& program = lighting_.variant(scene.lightingFeatures(),
-                                                   oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
+                                                   oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
     for (const LightBatch& batch : batches) {
         passes.run(ClusterGrid::assignPass("clusters"), [&] { grid_.assignLights(batch); });
         passes.run(lightBatchPass(batch, Resource::LightGrid), [&] {

@@ -194,6 +194,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     const std::size_t windows =
         std::max<std::size_t>(1, (packedLights_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
     lightBuffer_ = gl::Buffer("lights", windows * kLightWindowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    setLightTexels(true);
     frameBuffer_ = gl::Buffer("frame uniforms", sizeof(FrameUniforms), nullptr);
     setTime(0.0);
     setViewport(1, 1);
@@ -432,11 +433,23 @@ void GpuScene::bindLightWindow(const LightBatch& batch) const
                       static_cast<GLintptr>(batch.first * sizeof(GpuLight)), kLightWindowBytes);
 }
 
+void GpuScene::setLightTexels(bool wanted)
+{
+    if (wanted && lightTexelsSupported(packedLights_.size())) {
+        if (!lightTexels_)
+            lightTexels_ = gl::BufferTexture("light texels", GL_RGBA32F, lightBuffer_);
+    } else {
+        lightTexels_ = gl::BufferTexture();
+    }
+}
+
 void GpuScene::bind() const
 {
     vertexArray_.bind();
     frameBuffer_.bindBase(GL_UNIFORM_BUFFER, kFrameBinding);
     lightBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding);
+    if (lightTexels_)
+        lightTexels_.bindUnit(kLightTexelsUnit);
 }
 
 void GpuScene::setObjectUniforms(const gl::Program& program, const DrawItem& draw) const

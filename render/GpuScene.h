@@ -12,6 +12,7 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
@@ -144,6 +145,14 @@ public:
     // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
     // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
     void bindLightWindow(const LightBatch& batch) const;
+    // Where a pass that reads any light by index reads them: the light texels (bound by bind())
+    // when asked for and the driver has them for this many lights (lightTexelsSupported), else
+    // the storage buffer.
+    void setLightTexels(bool wanted);
+    LightSource indexedLightSource() const
+    {
+        return lightTexels_ ? LightSource::TexelBuffer : LightSource::StorageBuffer;
+    }
     // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
     void setAnisotropy(int requested) { textures_.setAnisotropy(requested); }
     const Scene& scene() const { return scene_; }
@@ -241,6 +250,7 @@ private:
     gl::Buffer indices_;
     gl::VertexArray vertexArray_;
     gl::Buffer lightBuffer_;
+    gl::BufferTexture lightTexels_;  // lightBuffer_ as texels, where the driver allows them
     gl::Buffer instanceBuffer_;
     gl::Buffer frameBuffer_;
 };

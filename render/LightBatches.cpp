@@ -48,6 +48,20 @@ bool lightWindowsSupported()
     return static_cast<std::size_t>(maxBlockSize) >= kLightWindowBytes;
 }
 
+bool lightTexelsSupported(std::size_t lightCount)
+{
+    GLint fragmentUnits = 0;
+    GLint computeUnits = 0;
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
+    glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &computeUnits);
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    const auto units = static_cast<unsigned>(std::min(fragmentUnits, computeUnits));
+    return units > kLightTexelsUnit && lightCount * kTexelsPerLight <= static_cast<std::size_t>(maxTexels);
+}
+
+void addLightTexelsDefines(gl::Defines& defines) { defines.emplace_back("LIGHT_TEXELS", "1"); }
+
 void addLightWindowDefines(gl::Defines& defines)
 {
     defines.emplace_back("LIGHT_WINDOW_BINDING", std::to_string(kLightWindowBinding));

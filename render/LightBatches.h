@@ -72,4 +72,20 @@ bool lightWindowsSupported();
 // LIGHT_WINDOW_BINDING and LIGHTS_PER_WINDOW.
 void addLightWindowDefines(gl::Defines& defines);
 
+// Light texels: the whole light buffer read through a texture buffer, four RGBA32F texels per
+// light (shaders/lib/lights.glsl, built with LIGHT_TEXELS), for passes whose pixels read
+// different lights by index (tiled-quads, tiled, clustered, the transparency pass): a window
+// holds 1,024 lights, and llvmpipe loads from a storage buffer lane by lane, testing each
+// lane's bounds, where it fetches a texel for 8 lanes at once. On the courtyard at 4096
+// lights, 1280x720, the lighting passes took 267 -> 141 ms (tiled-quads), 298-304 ->
+// 246-262 ms (tiled) and 113-116 -> 98-100 ms (clustered) with them (docs/performance.md).
+inline constexpr unsigned kLightTexelsUnit = bindings::LIGHT_TEXELS_UNIT;
+inline constexpr std::size_t kTexelsPerLight = 4;
+// Whether the driver has a 17th texture unit in fragment and compute shaders and a texture
+// buffer of 4 × `lightCount` texels (GL promises 16 units and 65,536 texels; desktop drivers
+// have 32 and 2^27). Where it has not, those passes read the storage buffer.
+bool lightTexelsSupported(std::size_t lightCount);
+// LIGHT_TEXELS: the shaders read the lights through lightTexels at LIGHT_TEXELS_UNIT.
+void addLightTexelsDefines(gl::Defines& defines);
+
 }  // namespace manylights

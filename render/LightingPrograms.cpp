@@ -47,6 +47,8 @@ const gl::Program& LightingProgram::variant(const LightingFeatures& features, Li
         gl::Defines defines = lightingFeatureDefines(features, defines_);
         if (source == LightSource::UniformWindow)
             addLightWindowDefines(defines);
+        if (source == LightSource::TexelBuffer)
+            addLightTexelsDefines(defines);
         if (material)
             defines = materialVariantDefines(*material, std::move(defines));
         found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;

@@ -46,6 +46,8 @@ enum class LightSource : std::uint8_t {
     StorageBuffer,  // the whole light buffer, any light by index
     UniformWindow,  // the batch's window (render/LightBatches.h: light windows); the caller
                     // binds it with GpuScene::bindLightWindow
+    TexelBuffer,    // the whole light buffer as texels (render/LightBatches.h: light texels),
+                    // which GpuScene::bind binds
 };
 
 // What a mesh program (shaders/mesh.vert with a fragment shader calling lib/material.glsl's

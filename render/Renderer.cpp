@@ -61,6 +61,8 @@ void Renderer::apply(const RendererDesc& requested)
         gpuScene_.setAnisotropy(desc.anisotropy);
     if (first || desc.lightingTerms != old.lightingTerms)
         gpuScene_.setLightingTerms(desc.lightingTerms);
+    if (first || desc.lightTexels != old.lightTexels)
+        gpuScene_.setLightTexels(desc.lightTexels);
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);

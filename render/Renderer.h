@@ -60,6 +60,10 @@ struct RendererDesc {
     // the displayed picture is the size divided by it.
     std::optional<DisplaySettings> display{};
     int supersample = 0;
+    // Passes that read lights by index read them through the light texels where the driver
+    // has them (render/LightBatches.h); false: through the storage buffer, as on a driver
+    // without them (the tests compare the two).
+    bool lightTexels = true;
 };
 
 // The size of an image when none is asked for (docs/cli.md).

@@ -23,14 +23,14 @@ constexpr GLint kImageSize = 3;
 constexpr GLuint kTileQuadsBinding = bindings::TILE_QUADS_BUFFER_BINDING;
 constexpr GLuint kTileLightsBinding = bindings::TILE_LIGHTS_BUFFER_BINDING;
 
-gl::Program makeVariant(const TechniqueOptions& options, std::size_t variant)
+LightingProgram makeVariant(const TechniqueOptions& options, std::size_t variant)
 {
     gl::Defines defines = shaderDefines(options);
     const std::string bound = std::to_string(kTileLightBounds[variant]);
     defines.emplace_back("MAX_TILE_LIGHTS", bound + "u");
     const std::string label = "tiled quads, up to " + bound + " lights";
-    return gl::Program(label, {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
-                       defines);
+    return LightingProgram(label, {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
+                           defines);
 }
 
 // The variant that draws a quad with 0 < `count` ≤ kLightsPerBatch lights.
@@ -59,7 +59,7 @@ TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
               shaderDefines(options))
 {
     for (std::size_t v = 0; v < kVariants; ++v)
-        variants_[v] = makeVariant(options, v);
+        variants_.push_back(makeVariant(options, v));
 }
 
 void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTargets& targets)
@@ -101,7 +101,7 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
 }
 
-void TiledQuadsTechnique::drawTiles(const FrameTargets& targets) const
+void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& targets) const
 {
     if (drawOrder_.empty())
         return;
@@ -113,7 +113,7 @@ void TiledQuadsTechnique::drawTiles(const FrameTargets& targets) const
         const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
         if (tiles == 0)
             continue;
-        const gl::Program& program = variants_[v];
+        const gl::Program& program = variants_[v].variant(scene.lightingFeatures(), scene.indexedLightSource());
         program.set(kFirstQuad, variantFirst_[v]);
         program.set(kTilesX, lists.tilesX);
         program.set(kTileSize, lists.tileSize);
@@ -135,7 +135,7 @@ void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, F
     // background is never shaded.
     passes.run(
         {.name = "lighting", .target = Resource::LitImage, .state = kAddToCoveredPixels, .sampled = Resource::GBuffer},
-        [&] { drawTiles(targets); });
+        [&] { drawTiles(scene, targets); });
 }
 
 }  // namespace manylights

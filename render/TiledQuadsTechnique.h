@@ -10,6 +10,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "render/LightBatches.h"
+#include "render/LightingPrograms.h"
 #include "render/Technique.h"
 #include "render/TileCulling.h"
 
@@ -46,10 +47,11 @@ private:
 
     // Culls, buckets the tiles by variant and uploads what the quads read.
     void cullAndUpload(const GpuScene& scene, const FrameTargets& targets);
-    void drawTiles(const FrameTargets& targets) const;
+    void drawTiles(const GpuScene& scene, const FrameTargets& targets) const;
 
     gl::Program global_;
-    std::array<gl::Program, kVariants> variants_;
+    // One per light-count bucket, each compiled per the scene's kinds of light and light source.
+    std::vector<LightingProgram> variants_;
     TileCuller culler_;
     // The quads to draw (tiles with lights), grouped by variant: variant v draws
     // drawOrder_[variantFirst_[v] .. variantFirst_[v + 1]).

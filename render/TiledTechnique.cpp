@@ -33,7 +33,7 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()));
     const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
     const gl::Program& program =
-        program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : LightSource::StorageBuffer);
+        program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
     // One dispatch per batch: each batch after the first loads what the one before it stored.
     for (const LightBatch& batch : batches)

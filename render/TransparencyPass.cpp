@@ -153,7 +153,7 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
                     evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
                 scene.drawTransparentLayer(layer, [&](MaterialVariant variant) -> const gl::Program& {
                     const gl::Program& program =
-                        programs.variant(scene.lightingFeatures(), LightSource::StorageBuffer, variant);
+                        programs.variant(scene.lightingFeatures(), scene.indexedLightSource(), variant);
                     setLightBatch(program, batch);
                     return program;
                 });

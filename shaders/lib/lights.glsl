@@ -26,6 +26,22 @@ GpuLight batchLight(uint lightIndex)
 {
     return windowLights[lightIndex - lightBatch.x];
 }
+#elif defined(LIGHT_TEXELS)
+// The same buffer as four RGBA32F texels per light (render/LightBatches.h: light texels), for
+// passes whose pixels read different lights: llvmpipe fetches a texel for all lanes at once,
+// and loads from a storage buffer lane by lane.
+layout(binding = LIGHT_TEXELS_UNIT) uniform samplerBuffer lightTexels;
+
+GpuLight batchLight(uint lightIndex)
+{
+    int first = int(lightIndex) * 4;
+    GpuLight light;
+    light.positionRadius = texelFetch(lightTexels, first);
+    light.intensityExponent = texelFetch(lightTexels, first + 1);
+    light.attenuation = texelFetch(lightTexels, first + 2);
+    light.spotAxisCosCutoff = texelFetch(lightTexels, first + 3);
+    return light;
+}
 #else
 GpuLight batchLight(uint lightIndex)
 {

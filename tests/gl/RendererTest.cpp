@@ -97,5 +97,37 @@ TEST_F(RendererTest, SetCameraMovesTheViewAndTheScenesCameraRestoresIt)
     test::expectImagesNear(renderer.readColour(), first, test::Tolerance{});
 }
 
+// The light texels hold the light buffer's bytes: reading a light through them or through the
+// storage buffer gives the same floats, so the same image bit for bit (Tolerance{} is zero),
+// in every technique that reads lights by index. 2,000 lights, beyond one light window, so
+// that tiled and clustered read by index too. The transparency pass is covered by glass.json
+// in TechniqueAgreementTest.
+TEST_F(RendererTest, LightTexelsAndTheStorageBufferGiveTheSameImage)
+{
+    const Scene scene = parseScene(R"({
+        "camera": {"eye": [0, 6, 9], "look_at": [0, 0, 0], "fov_y": 50},
+        "light_sets": [{"count": 2000, "seed": 7, "type": "point", "min": [-5, 0.2, -5], "max": [5, 1, 5],
+                        "range": [1, 2.5], "intensity": [0.1, 0.4]}],
+        "objects": [
+            {"mesh": {"primitive": "plane", "size": [12, 12]}},
+            {"mesh": {"primitive": "sphere", "radius": 1}, "transform": {"translate": [1, 1, 0]}}]})",
+                                   "<renderer test>", ".");
+    RendererDesc desc{.width = 96, .height = 64};
+    Renderer renderer(scene, expandLights(scene), desc);
+    if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
+        GTEST_SKIP() << "the driver has no light texels (render/LightBatches.h)";
+    for (const char* technique : {"tiled-quads", "tiled", "clustered"}) {
+        desc.lightTexels = true;
+        renderer.apply(desc);
+        renderer.renderFrame(technique, ViewMode::Final);
+        const Image texels = renderer.readColour();
+        desc.lightTexels = false;
+        renderer.apply(desc);
+        EXPECT_EQ(renderer.gpuScene().indexedLightSource(), LightSource::StorageBuffer);
+        renderer.renderFrame(technique, ViewMode::Final);
+        test::expectImagesNear(renderer.readColour(), texels, test::Tolerance{}, technique);
+    }
+}
+
 }  // namespace
 }  // namespace manylights
