@@ -9,8 +9,7 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout),
       lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                clusterGridDefines(shaderDefines(options))),
-      lightWindows_(lightWindowsSupported())
+                clusterGridDefines(shaderDefines(options)))
 {
 }
 
@@ -30,7 +29,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
         grid_.resize(targets.width, targets.height, batches.front().size());
         grid_.fitToSurfaces();
     });
-    const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
+    const bool oneWindow = scene.readsLightWindows() && fitsOneLightWindow(batches);
     const gl::Program& program = lighting_.variant(scene.lightingFeatures(),
                                                    oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
     for (const LightBatch& batch : batches) {

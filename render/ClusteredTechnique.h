@@ -32,7 +32,6 @@ private:
     LightingProgram lighting_;
     // A frame of one batch that fits a uniform window reads its lights from it
     // (render/LightBatches.h); larger frames keep batches as large as the mask budget allows.
-    bool lightWindows_;
     std::uint32_t batchCount_ = 0;
 };
 

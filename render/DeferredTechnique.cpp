@@ -7,7 +7,6 @@ namespace manylights {
 
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
     : Technique(options),
-      lightWindows_(lightWindowsSupported()),
       lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
                 shaderDefines(options))
 {
@@ -16,12 +15,13 @@ DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
 void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
     targets.gbuffer.fill(passes);
-    const gl::Program& program = lighting_.variant(
-        scene.lightingFeatures(), lightWindows_ ? LightSource::UniformWindow : LightSource::StorageBuffer);
-    const std::uint32_t perBatch = lightWindows_ ? kLightsPerWindow : kLightsPerBatch;
+    const bool windows = scene.readsLightWindows();
+    const gl::Program& program =
+        lighting_.variant(scene.lightingFeatures(), windows ? LightSource::UniformWindow : scene.indexedLightSource());
+    const std::uint32_t perBatch = windows ? kLightsPerWindow : kLightsPerBatch;
     for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch))
         passes.run(lightBatchPass(batch), [&] {
-            if (lightWindows_)
+            if (windows)
                 scene.bindLightWindow(batch);
             setLightBatch(program, batch);
             drawCoveredPixels(program);

@@ -18,7 +18,6 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
-    bool lightWindows_;  // the lights as uniform windows (render/LightBatches.h)
     LightingProgram lighting_;
 };
 

@@ -20,7 +20,6 @@ gl::Defines depthPrepassDefines(const TechniqueOptions& options)
 
 ForwardTechnique::ForwardTechnique(const TechniqueOptions& options)
     : Technique(options),
-      lightWindows_(lightWindowsSupported()),
       program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
                shaderDefines(options)),
       depthPrepass_("forward depth pre-pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
@@ -47,8 +46,9 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
     });
     // Every fragment walks the same lights in order: a batch's lights are read as a uniform
     // block where the driver allows one (render/LightBatches.h: light windows), as deferred's.
-    const LightSource source = lightWindows_ ? LightSource::UniformWindow : LightSource::StorageBuffer;
-    const std::uint32_t perBatch = lightWindows_ ? kLightsPerWindow : kLightsPerBatch;
+    const bool windows = scene.readsLightWindows();
+    const LightSource source = windows ? LightSource::UniformWindow : scene.indexedLightSource();
+    const std::uint32_t perBatch = windows ? kLightsPerWindow : kLightsPerBatch;
     std::uint8_t batchNumber = 0;  // the stencil wraps as the reference does
     for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch)) {
         const Pass lighting{.name = "forward",
@@ -60,7 +60,7 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
                                       .stencilReference = batchNumber++},
                             .sampled = Resource::GBuffer};
         passes.run(lighting, [&] {
-            if (lightWindows_)
+            if (windows)
                 scene.bindLightWindow(batch);
             scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
                 const gl::Program& program = program_.variant(scene.lightingFeatures(), source, maps);

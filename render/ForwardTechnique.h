@@ -15,7 +15,6 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
-    bool lightWindows_;
     LightingProgram program_;
     LightingProgram depthPrepass_;
 };

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/Buffer.h"
+#include "gl/Driver.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
@@ -153,6 +154,15 @@ public:
     {
         return lightTexels_ ? LightSource::TexelBuffer : LightSource::StorageBuffer;
     }
+    // Whether a pass whose pixels walk a batch of lights in order (deferred, forward; tiled and
+    // clustered when the scene fits one window) reads the batch's uniform window
+    // (bindLightWindow) rather than as by index. On a GPU, yes where the driver has the block
+    // size: a read that every thread of a warp shares is a broadcast, what the vendors advise.
+    // On a software rasteriser only without light texels, which it fetches faster than it
+    // gathers from a uniform block, even at an index every lane shares (docs/performance.md:
+    // LearnOpenGL's scene, 512 lights, deferred's lighting pass 620 ms from windows, 492 ms
+    // from texels).
+    bool readsLightWindows() const { return lightWindowsSupported_ && (!softwareRenderer_ || !lightTexels_); }
     // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
     void setAnisotropy(int requested) { textures_.setAnisotropy(requested); }
     const Scene& scene() const { return scene_; }
@@ -251,6 +261,8 @@ private:
     gl::VertexArray vertexArray_;
     gl::Buffer lightBuffer_;
     gl::BufferTexture lightTexels_;  // lightBuffer_ as texels, where the driver allows them
+    bool lightWindowsSupported_ = lightWindowsSupported();
+    bool softwareRenderer_ = gl::isSoftwareRenderer();
     gl::Buffer instanceBuffer_;
     gl::Buffer frameBuffer_;
 };

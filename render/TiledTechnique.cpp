@@ -21,9 +21,7 @@ gl::Defines tiledDefines(const TechniqueOptions& options)
 }  // namespace
 
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
-    : Technique(options),
-      program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options)),
-      lightWindows_(lightWindowsSupported())
+    : Technique(options), program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options))
 {
 }
 
@@ -31,7 +29,7 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
 {
     targets.gbuffer.fill(passes);
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()));
-    const bool oneWindow = lightWindows_ && fitsOneLightWindow(batches);
+    const bool oneWindow = scene.readsLightWindows() && fitsOneLightWindow(batches);
     const gl::Program& program =
         program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };

@@ -24,7 +24,6 @@ public:
 
 private:
     LightingProgram program_;
-    bool lightWindows_;
 };
 
 }  // namespace manylights

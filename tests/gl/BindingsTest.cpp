@@ -179,16 +179,21 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
             .exposure = 1.0f, .toneCurve = ToneCurve::Aces, .srgb = true, .antialiasing = Antialiasing::Fxaa}};
     Renderer renderer(scene, lights, desc);
     // The renderer keeps every technique variant it made: their programs stay alive to the end.
+    // Without light texels the lights come from the other sources (windows, storage buffer).
     for (const bool count : {false, true}) {
-        desc.countWork = count;
-        renderer.apply(desc);
-        for (const std::string& name : techniqueNames()) {
-            renderer.renderFrame(name, ViewMode::Final);
-            if (count)
-                renderer.renderFrame(name, ViewMode::LightCount);
+        for (const bool texels : {true, false}) {
+            desc.countWork = count;
+            desc.lightTexels = texels;
+            renderer.apply(desc);
+            for (const std::string& name : techniqueNames()) {
+                renderer.renderFrame(name, ViewMode::Final);
+                if (count)
+                    renderer.renderFrame(name, ViewMode::LightCount);
+            }
         }
     }
     desc.countWork = false;
+    desc.lightTexels = true;
     renderer.apply(desc);
     for (const ViewMode view :
          {ViewMode::Position, ViewMode::Normal, ViewMode::Volumes, ViewMode::Shadow, ViewMode::Ssao})
