@@ -29,10 +29,11 @@ public:
 
 private:
     ClusterGrid grid_;
+    // Compiled per light source: a frame of one batch that fits a uniform window reads it where
+    // the scene reads windows (GpuScene::readsLightWindows); other frames read the light texels
+    // and keep batches as large as the mask budget allows.
     LightingProgram lighting_;
-    // A frame of one batch that fits a uniform window reads its lights from it
-    // (render/LightBatches.h); larger frames keep batches as large as the mask budget allows.
-    std::uint32_t batchCount_ = 0;
+    std::uint32_t batchCount_ = 0;  // of the last frame
 };
 
 }  // namespace manylights

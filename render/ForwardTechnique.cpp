@@ -44,8 +44,9 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
             return depthPrepass_.variant(scene.lightingFeatures(), LightSource::StorageBuffer, maps);
         });
     });
-    // Every fragment walks the same lights in order: a batch's lights are read as a uniform
-    // block where the driver allows one (render/LightBatches.h: light windows), as deferred's.
+    // Every fragment walks the same lights in order: as deferred's, a batch's lights come from
+    // a uniform window on a GPU and as texels on a software rasteriser
+    // (GpuScene::readsLightWindows). The depth pre-pass reads no light at all.
     const bool windows = scene.readsLightWindows();
     const LightSource source = windows ? LightSource::UniformWindow : scene.indexedLightSource();
     const std::uint32_t perBatch = windows ? kLightsPerWindow : kLightsPerBatch;

@@ -146,10 +146,12 @@ public:
     // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
     // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
     void bindLightWindow(const LightBatch& batch) const;
-    // Where a pass that reads any light by index reads them: the light texels (bound by bind())
-    // when asked for and the driver has them for this many lights (lightTexelsSupported), else
-    // the storage buffer.
+    // Makes the light texels (render/LightBatches.h; bound by bind()) when `wanted` and the
+    // driver has them for this many lights (lightTexelsSupported); drops them otherwise
+    // (RendererDesc::lightTexels). They are wanted from the start.
     void setLightTexels(bool wanted);
+    // Where a pass that reads any light by index reads them: the light texels where there are
+    // some, else the storage buffer.
     LightSource indexedLightSource() const
     {
         return lightTexels_ ? LightSource::TexelBuffer : LightSource::StorageBuffer;

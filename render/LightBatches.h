@@ -74,9 +74,11 @@ void addLightWindowDefines(gl::Defines& defines);
 
 // Light texels: the whole light buffer read through a texture buffer, four RGBA32F texels per
 // light (shaders/lib/lights.glsl, built with LIGHT_TEXELS), for passes whose pixels read
-// different lights by index (tiled-quads, tiled, clustered, the transparency pass): a window
-// holds 1,024 lights, and llvmpipe loads from a storage buffer lane by lane, testing each
-// lane's bounds, where it fetches a texel for 8 lanes at once. On the courtyard at 4096
+// different lights by index (tiled-quads, tiled, clustered, the transparency pass), and on a
+// software rasteriser for every pass (GpuScene::readsLightWindows): a window holds 1,024
+// lights, and llvmpipe loads from a storage buffer lane by lane, testing each lane's bounds,
+// and gathers from a uniform block per component, where it fetches a texel for 8 lanes at
+// once. On the courtyard at 4096
 // lights, 1280x720, the lighting passes took 267 -> 141 ms (tiled-quads), 298-304 ->
 // 246-262 ms (tiled) and 113-116 -> 98-100 ms (clustered) with them (docs/performance.md).
 inline constexpr unsigned kLightTexelsUnit = bindings::LIGHT_TEXELS_UNIT;

@@ -60,9 +60,10 @@ struct RendererDesc {
     // the displayed picture is the size divided by it.
     std::optional<DisplaySettings> display{};
     int supersample = 0;
-    // Passes that read lights by index read them through the light texels where the driver
-    // has them (render/LightBatches.h); false: through the storage buffer, as on a driver
-    // without them (the tests compare the two).
+    // Lighting passes read the lights through the light texels where the driver has them and
+    // they are the faster source (render/LightBatches.h, GpuScene::readsLightWindows); false:
+    // through the uniform windows or the storage buffer, as on a driver without them (the
+    // tests compare the sources).
     bool lightTexels = true;
 };
 

@@ -89,8 +89,9 @@ vec4 lightReach(GpuLight light, vec3 position)
     return reaches ? vec4(L, A * S) : vec4(0.0);
 }
 
-// intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, times its shadow factor when it
-// has a shadow map (lib/shadows.glsl); exactly zero where A·S is zero.
+// intensity ⊙ brdf(L) · A(d) · S for local light `lightIndex`, whose record is `light`, times
+// its shadow factor when it has a shadow map (lib/shadows.glsl); exactly zero where A·S is
+// zero. shadeLocal() reads the record itself; shaders/volume.frag has it from its vertex shader.
 vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
 {
     vec4 reach = lightReach(light, s.position);

@@ -28,8 +28,9 @@ GpuLight batchLight(uint lightIndex)
 }
 #elif defined(LIGHT_TEXELS)
 // The same buffer as four RGBA32F texels per light (render/LightBatches.h: light texels), for
-// passes whose pixels read different lights: llvmpipe fetches a texel for all lanes at once,
-// and loads from a storage buffer lane by lane.
+// passes whose pixels read different lights, and for every pass on a software rasteriser:
+// llvmpipe fetches a texel for all lanes at once, loads from a storage buffer lane by lane
+// and gathers from a uniform block per component.
 layout(binding = LIGHT_TEXELS_UNIT) uniform samplerBuffer lightTexels;
 
 GpuLight batchLight(uint lightIndex)
