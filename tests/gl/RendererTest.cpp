@@ -139,5 +139,46 @@ TEST_F(RendererTest, LightTexelsWindowsAndTheStorageBufferGiveTheSameImage)
     }
 }
 
+// forward's lighting draws let one fragment per pixel through per light batch with the
+// stencil, testing it against the batch's number (Stencil::OncePerPixel): past 256 batches the
+// stencil must wrap as the 8-bit reference does (GL_INCR_WRAP). Without light texels llvmpipe
+// reads windows of 1,024 lights, as a GPU does, so 307,200 lights on one spot are 300 batches.
+// The image must be the one-light image times the lights' summed intensity: a stencil that
+// saturated at 255 would drop the last 44 batches (14% of the light), while float rounding of
+// 307,200 terms stays under 307,200 · 2^-24 = 1.8% (tests/image/ManyLightsTest.cpp says why).
+TEST_F(RendererTest, ForwardAddsEveryLightPastTwoHundredFiftySixBatches)
+{
+    constexpr int kLights = 307200;
+    constexpr double kTolerance = 0.02;
+    static_assert(kLights * 0x1p-24 < kTolerance);
+    const std::string scenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
+    const Scene one = loadSceneFile(scenes + "one_light_on_one_spot.json");
+    Scene many = loadSceneFile(scenes + "lights_on_one_spot.json");
+    ASSERT_EQ(many.lightSets.size(), 1u);
+    many.lightSets[0].count = kLights;
+    const std::vector<Light> lights = expandLights(many);
+    double total[3] = {0.0, 0.0, 0.0};
+    for (const Light& light : lights)
+        for (int c = 0; c < 3; ++c)
+            total[c] += light.intensity[c];
+
+    const RendererDesc desc{.width = 1280, .height = 720, .lightTexels = false};
+    Renderer oneRenderer(one, expandLights(one), desc);
+    oneRenderer.renderFrame("forward", ViewMode::Final);
+    const Image oneImage = oneRenderer.readColour();
+    Renderer renderer(many, lights, desc);
+    if (!renderer.gpuScene().readsLightWindows())
+        GTEST_SKIP() << "the driver has no light windows (render/LightBatches.h)";
+    renderer.renderFrame("forward", ViewMode::Final);
+    Image expected = oneImage;
+    int lit = 0;
+    for (std::size_t i = 0; i < expected.rgb.size(); ++i) {
+        expected.rgb[i] = static_cast<float>(static_cast<double>(oneImage.rgb[i]) * total[i % 3]);
+        lit += expected.rgb[i] > 0.0f;
+    }
+    EXPECT_GE(lit, 3) << "the square should cover a pixel";
+    test::expectImagesNear(expected, renderer.readColour(), {.relative = kTolerance});
+}
+
 }  // namespace
 }  // namespace manylights
