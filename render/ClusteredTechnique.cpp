@@ -29,14 +29,12 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
         grid_.resize(targets.width, targets.height, batches.front().size());
         grid_.fitToSurfaces();
     });
-    const bool oneWindow = scene.readsLightWindows() && fitsOneLightWindow(batches);
-    const gl::Program& program = lighting_.variant(scene.lightingFeatures(),
-                                                   oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
+    const LightSource source = fitsOneLightWindow(batches) ? scene.walkedLightSource() : scene.indexedLightSource();
+    const gl::Program& program = lighting_.variant(scene.lightingFeatures(), source);
     for (const LightBatch& batch : batches) {
         passes.run(ClusterGrid::assignPass("clusters"), [&] { grid_.assignLights(batch); });
         passes.run(lightBatchPass(batch, Resource::LightGrid), [&] {
-            if (oneWindow)
-                scene.bindLightWindow(batches.front());
+            scene.bindLightSource(source, batch);
             grid_.bind();
             setLightBatch(program, batch);
             drawCoveredPixels(program);

@@ -15,14 +15,11 @@ DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
 void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
     targets.gbuffer.fill(passes);
-    const bool windows = scene.readsLightWindows();
-    const gl::Program& program =
-        lighting_.variant(scene.lightingFeatures(), windows ? LightSource::UniformWindow : scene.indexedLightSource());
-    const std::uint32_t perBatch = windows ? kLightsPerWindow : kLightsPerBatch;
-    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch))
+    const LightSource source = scene.walkedLightSource();
+    const gl::Program& program = lighting_.variant(scene.lightingFeatures(), source);
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source)))
         passes.run(lightBatchPass(batch), [&] {
-            if (windows)
-                scene.bindLightWindow(batch);
+            scene.bindLightSource(source, batch);
             setLightBatch(program, batch);
             drawCoveredPixels(program);
         });

@@ -47,11 +47,10 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
     // Every fragment walks the same lights in order: as deferred's, a batch's lights come from
     // a uniform window on a GPU and as texels on a software rasteriser
     // (GpuScene::readsLightWindows). The depth pre-pass reads no light at all.
-    const bool windows = scene.readsLightWindows();
-    const LightSource source = windows ? LightSource::UniformWindow : scene.indexedLightSource();
-    const std::uint32_t perBatch = windows ? kLightsPerWindow : kLightsPerBatch;
+    const LightSource source = scene.walkedLightSource();
     std::uint8_t batchNumber = 0;  // the stencil wraps as the reference does
-    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), perBatch)) {
+    for (const LightBatch& batch :
+         lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source))) {
         const Pass lighting{.name = "forward",
                             .target = Resource::LitImage,
                             .state = {.depthTest = DepthTest::Equal,
@@ -61,8 +60,7 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
                                       .stencilReference = batchNumber++},
                             .sampled = Resource::GBuffer};
         passes.run(lighting, [&] {
-            if (windows)
-                scene.bindLightWindow(batch);
+            scene.bindLightSource(source, batch);
             scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
                 const gl::Program& program = program_.variant(scene.lightingFeatures(), source, maps);
                 setLightBatch(program, batch);

@@ -165,6 +165,18 @@ public:
     // LearnOpenGL's scene, 512 lights, deferred's lighting pass 620 ms from windows, 492 ms
     // from texels).
     bool readsLightWindows() const { return lightWindowsSupported_ && (!softwareRenderer_ || !lightTexels_); }
+    // Where such a pass reads its lights: the batch's uniform window where readsLightWindows(),
+    // else as by index. Its batches are lightsPerBatch(source) lights.
+    LightSource walkedLightSource() const
+    {
+        return readsLightWindows() ? LightSource::UniformWindow : indexedLightSource();
+    }
+    // Binds what reading `batch` from `source` needs beyond bind(): a uniform window's range.
+    void bindLightSource(LightSource source, const LightBatch& batch) const
+    {
+        if (source == LightSource::UniformWindow)
+            bindLightWindow(batch);
+    }
     // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
     void setAnisotropy(int requested) { textures_.setAnisotropy(requested); }
     const Scene& scene() const { return scene_; }

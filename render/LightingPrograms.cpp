@@ -38,6 +38,11 @@ gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines)
     return defines;
 }
 
+std::uint32_t lightsPerBatch(LightSource source)
+{
+    return source == LightSource::UniformWindow ? kLightsPerWindow : kLightsPerBatch;
+}
+
 const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source,
                                             std::optional<MaterialVariant> material) const
 {

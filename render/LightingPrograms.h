@@ -50,6 +50,10 @@ enum class LightSource : std::uint8_t {
                     // which GpuScene::bind binds
 };
 
+// The batch size of a pass that walks its lights from `source`: a window's worth from a
+// uniform window, else kLightsPerBatch (render/LightBatches.h).
+std::uint32_t lightsPerBatch(LightSource source);
+
 // What a mesh program (shaders/mesh.vert with a fragment shader calling lib/material.glsl's
 // meshSurface()) reads for a material, one bit each: its texture maps, its alpha mask, its mesh's
 // vertex colours. A mesh program is compiled per variant, with the bits as the constant

@@ -29,9 +29,8 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
 {
     targets.gbuffer.fill(passes);
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()));
-    const bool oneWindow = scene.readsLightWindows() && fitsOneLightWindow(batches);
-    const gl::Program& program =
-        program_.variant(scene.lightingFeatures(), oneWindow ? LightSource::UniformWindow : scene.indexedLightSource());
+    const LightSource source = fitsOneLightWindow(batches) ? scene.walkedLightSource() : scene.indexedLightSource();
+    const gl::Program& program = program_.variant(scene.lightingFeatures(), source);
     const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
     // One dispatch per batch: each batch after the first loads what the one before it stored.
     for (const LightBatch& batch : batches)
@@ -40,8 +39,7 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
                     .images = Resource::LitImage,
                     .writes = Resource::LitImage},
                    [&] {
-                       if (oneWindow)
-                           scene.bindLightWindow(batches.front());
+                       scene.bindLightSource(source, batch);
                        setLightBatch(program, batch);
                        program.use();
                        glDispatchCompute(groups(targets.width), groups(targets.height), 1);
