@@ -49,8 +49,6 @@ struct PipelineState {
     bool maskColour = false;       // no colour writes
     Stencil stencil = Stencil::Off;
     std::uint8_t stencilReference = 0;  // Stencil::OncePerPixel's
-
-    bool operator==(const PipelineState&) const = default;
 };
 
 // A full-screen triangle at depth 1 over the pixels that hold a surface (shaders/fullscreen.vert).
