@@ -37,20 +37,34 @@ glm::vec2 depthSpan(const Bounds& bounds, const FrameUniforms& frame)
     return {std::max((middle - reach) * 0.99f, nearPlane), std::min((middle + reach) * 1.01f, farPlane)};
 }
 
-// Per tile of the grid, the union of the depth spans of the transparent items whose world
-// bounds may cover it on screen: the rectangle around the box's projected corners, widened by
-// a tile; every tile when a corner lies at or behind the eye plane (the projection is not
-// bounded there). Tiles no item covers get an empty range.
-std::vector<glm::vec2> tileDepthRanges(const std::vector<Bounds>& objects, const FrameUniforms& frame, int tilesAcross,
-                                       int tilesDown)
+// A transparent item whose depth span lies (partly) within the view's depth.
+struct ItemInView {
+    Bounds bounds;   // world space
+    glm::vec2 span;  // depthSpan(bounds), not empty
+};
+
+// The transparent items within the view's depth: the others are wholly in front of the near
+// plane or beyond the far plane.
+std::vector<ItemInView> itemsInView(const std::vector<Bounds>& objects, const FrameUniforms& frame)
+{
+    std::vector<ItemInView> items;
+    for (const Bounds& bounds : objects)
+        if (const glm::vec2 span = depthSpan(bounds, frame); span.x < span.y)
+            items.push_back({bounds, span});
+    return items;
+}
+
+// Per tile of the grid, the union of the depth spans of the items whose world bounds may
+// cover it on screen: the rectangle around the box's projected corners, widened by a tile;
+// every tile when a corner lies at or behind the eye plane (the projection is not bounded
+// there). Tiles no item covers get an empty range.
+std::vector<glm::vec2> tileDepthRanges(const std::vector<ItemInView>& items, const FrameUniforms& frame,
+                                       int tilesAcross, int tilesDown)
 {
     std::vector<glm::vec2> ranges(static_cast<std::size_t>(tilesAcross * tilesDown),
                                   glm::vec2(std::numeric_limits<float>::max(), 0.0f));
     const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
-    for (const Bounds& bounds : objects) {
-        const glm::vec2 span = depthSpan(bounds, frame);
-        if (!(span.x < span.y))
-            continue;  // wholly in front of the near plane or beyond the far plane
+    for (const auto& [bounds, span] : items) {
         glm::vec2 lo(std::numeric_limits<float>::max());
         glm::vec2 hi(-std::numeric_limits<float>::max());
         bool behindEye = false;
@@ -107,11 +121,8 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
     if (!scene.hasTransparentObjects())
         return;
     const FrameUniforms& frame = scene.frameUniforms();
-    const std::vector<Bounds> objects = scene.transparentWorldBounds();
-    if (std::none_of(objects.begin(), objects.end(), [&](const Bounds& bounds) {
-            const glm::vec2 span = depthSpan(bounds, frame);
-            return span.x < span.y;
-        }))
+    const std::vector<ItemInView> items = itemsInView(scene.transparentWorldBounds(), frame);
+    if (items.empty())
         return;  // nothing transparent within the view's depth
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     const std::vector<LightBatch> batches =
@@ -126,7 +137,7 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
             if (!grid_)
                 grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
             grid_->resize(targets.width, targets.height, batches.front().size());
-            grid_->coverDepthRanges(tileDepthRanges(objects, frame, grid_->gridWidth(), grid_->gridHeight()));
+            grid_->coverDepthRanges(tileDepthRanges(items, frame, grid_->gridWidth(), grid_->gridHeight()));
             if (!gridPerLayer)
                 grid_->assignLights(batches.front());
         });
