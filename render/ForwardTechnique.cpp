@@ -41,7 +41,8 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
     passes.run(kDepthPrepass, [&] {
         targets.litFramebuffer.clearDepthStencil(1.0f, 0);
         scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
-            return depthPrepass_.variant(scene.lightingFeatures(), LightSource::StorageBuffer, maps);
+            // It evaluates no light: the variants differ only in the material's maps.
+            return depthPrepass_.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
         });
     });
     // Every fragment walks the same lights in order: as deferred's, a batch's lights come from
