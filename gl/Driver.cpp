@@ -18,4 +18,11 @@ bool isSoftwareRenderer()
     return renderer != nullptr && isSoftwareRendererName(renderer);
 }
 
+int queryInteger(unsigned name)
+{
+    GLint value = 0;
+    glGetIntegerv(name, &value);
+    return value;
+}
+
 }  // namespace manylights::gl

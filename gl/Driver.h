@@ -11,4 +11,8 @@ namespace manylights::gl {
 bool isSoftwareRenderer();
 bool isSoftwareRendererName(std::string_view renderer);
 
+// One integer the implementation reports (glGetIntegerv): a limit such as
+// GL_MAX_TEXTURE_SIZE.
+int queryInteger(unsigned name);
+
 }  // namespace manylights::gl

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "gl/Driver.h"
 #include "render/ShadowMaps.h"
 
 namespace manylights {
@@ -43,21 +44,15 @@ bool fitsOneLightWindow(const std::vector<LightBatch>& batches)
 
 bool lightWindowsSupported()
 {
-    GLint maxBlockSize = 0;
-    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
-    return static_cast<std::size_t>(maxBlockSize) >= kLightWindowBytes;
+    return static_cast<std::size_t>(gl::queryInteger(GL_MAX_UNIFORM_BLOCK_SIZE)) >= kLightWindowBytes;
 }
 
 bool lightTexelsSupported(std::size_t lightCount)
 {
-    GLint fragmentUnits = 0;
-    GLint computeUnits = 0;
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
-    glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &computeUnits);
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    const auto units = static_cast<unsigned>(std::min(fragmentUnits, computeUnits));
-    return units > kLightTexelsUnit && lightCount * kTexelsPerLight <= static_cast<std::size_t>(maxTexels);
+    const auto units = static_cast<unsigned>(
+        std::min(gl::queryInteger(GL_MAX_TEXTURE_IMAGE_UNITS), gl::queryInteger(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS)));
+    const auto maxTexels = static_cast<std::size_t>(gl::queryInteger(GL_MAX_TEXTURE_BUFFER_SIZE));
+    return units > kLightTexelsUnit && lightCount * kTexelsPerLight <= maxTexels;
 }
 
 void addLightTexelsDefines(gl::Defines& defines) { defines.emplace_back("LIGHT_TEXELS", "1"); }

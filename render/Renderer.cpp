@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/Error.h"
+#include "gl/Driver.h"
 #include "render/LightBatches.h"
 #include "render/ScreenPasses.h"
 
@@ -15,14 +16,9 @@ namespace {
 
 void checkSize(int width, int height)
 {
-    GLint maxTexture = 0;
-    GLint maxFramebufferWidth = 0;
-    GLint maxFramebufferHeight = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &maxFramebufferWidth);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxFramebufferHeight);
-    const int maxWidth = std::min(maxTexture, maxFramebufferWidth);
-    const int maxHeight = std::min(maxTexture, maxFramebufferHeight);
+    const int maxTexture = gl::queryInteger(GL_MAX_TEXTURE_SIZE);
+    const int maxWidth = std::min(maxTexture, gl::queryInteger(GL_MAX_FRAMEBUFFER_WIDTH));
+    const int maxHeight = std::min(maxTexture, gl::queryInteger(GL_MAX_FRAMEBUFFER_HEIGHT));
     if (width < 1 || height < 1 || width > maxWidth || height > maxHeight)
         throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is outside what this OpenGL implementation supports (1x1 to " + std::to_string(maxWidth) + "x" +

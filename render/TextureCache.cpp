@@ -76,9 +76,7 @@ const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, Texture
     const auto key = std::make_pair(isEmbedded ? path : canonicalKey(path), space);
     if (const auto found = textures_.find(key); found != textures_.end())
         return found->second;
-    GLint maxTextureSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
-    const int maxSide = std::min(maxTextureSize, kMaxTextureSide);
+    const int maxSide = std::min(gl::queryInteger(GL_MAX_TEXTURE_SIZE), kMaxTextureSide);
     const DecodedImage image =
         isEmbedded ? decodeImageMemory(path, embedded->bytes, maxSide) : decodeImageFile(path, maxSide);
     const GLenum format = space == TextureColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
