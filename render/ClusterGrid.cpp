@@ -16,10 +16,13 @@ constexpr GLuint kTileDepthRangesBinding = bindings::CLUSTER_TILE_DEPTHS_BUFFER_
 constexpr GLuint kTileSlicesBinding = bindings::CLUSTER_TILE_SLICES_BUFFER_BINDING;
 constexpr GLuint kMasksBinding = bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING;
 constexpr GLuint kSummariesBinding = bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING;
-constexpr GLuint kLightGroupSize = 64;     // local_size_x of cluster_assign.comp
+// cluster_assign.comp's workgroup: the invocations that share one light's tiles. llvmpipe's
+// lock-step width (8 with 256-bit vectors); on a GPU a fraction of a warp, in a pass that is
+// small there.
+constexpr int kAssignLanes = 8;
 constexpr GLuint kTileGroupSize = 64;      // local_size_x of cluster_tiles.comp
 constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
-constexpr int kTilesPerBand = 1024;
+constexpr int kTilesPerBand = 1024 * kAssignLanes;
 
 GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupSize - 1) / groupSize; }
 
@@ -42,7 +45,8 @@ ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, int slices)
     : slices_(slices),
       tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
              clusterGridDefines(gbufferDefines(gbufferLayout), slices)),
-      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}}, clusterGridDefines({}, slices))
+      assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}},
+              clusterGridDefines({{"CLUSTER_ASSIGN_LANES", std::to_string(kAssignLanes)}}, slices))
 {
 }
 
@@ -138,8 +142,7 @@ void ClusterGrid::assignLights(const LightBatch& batch)
     const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth_));
     assign_.set(kRowsPerBandLocation, rowsPerBand);
     assign_.use();
-    glDispatchCompute(groupsFor(batch.size(), kLightGroupSize),
-                      groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
+    glDispatchCompute(batch.size(), groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
 }
 
 }  // namespace manylights
