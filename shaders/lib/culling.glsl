@@ -85,6 +85,10 @@ bool lightMayReachTile(GpuLight light, TileFrustum tile)
     for (int i = 0; i < 4; ++i)
         if (dot(tile.planes[i], centre) < -radius)
             return false;
+#ifdef NO_SPOT_LIGHTS
+    return true;  // a program specialised for a scene without spots (render/LightingPrograms.h)
+#else
     vec3 axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
     return coneTouchesSphere(centre, axis, light.spotAxisCosCutoff.w, tile.boxCentre, tile.boxRadius);
+#endif
 }
