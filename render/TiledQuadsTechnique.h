@@ -1,6 +1,6 @@
-// tiled-quads: the screen cut into 32-pixel tiles, the lights culled against each tile on
-// the CPU (render/TileCulling.h), and each tile drawn as one quad whose fragment shader
-// loops over that tile's lights only.
+// tiled-quads: the screen cut into 16-pixel tiles, the lights culled against each tile on
+// the CPU (render/TileCulling.h), and each tile drawn as one point or quad whose fragment
+// shader loops over that tile's lights only.
 #pragma once
 
 #include <array>
@@ -32,6 +32,9 @@ public:
 
     // The last frame's culling result, for tests and statistics.
     const TileLightLists& lastLists() const { return culler_.lists(); }
+    // Draws tiles as quads even where the driver draws points of the tile's size (tests: the
+    // fallback's image).
+    void drawTilesAsQuads(bool quads) { tilesAsQuads_ = quads; }
 
 private:
     static constexpr std::size_t kVariants = kTileLightBounds.size();
@@ -48,6 +51,7 @@ private:
     // Culls, buckets the tiles by variant and uploads what the quads read.
     void cullAndUpload(const GpuScene& scene, const FrameTargets& targets);
     void drawTiles(const GpuScene& scene, const FrameTargets& targets) const;
+    bool drawsTilesAsPoints(const TileLightLists& lists) const;
 
     gl::Program global_;
     // One per light-count bucket, each compiled per the scene's kinds of light and light source.
@@ -59,6 +63,9 @@ private:
     std::array<std::uint32_t, kVariants + 1> variantFirst_{};
     gl::Buffer tileQuads_;
     gl::Buffer lightIndices_;
+    float largestPoint_ = 1.0f;  // pixels
+    std::array<GLint, 2> largestViewport_{};
+    bool tilesAsQuads_ = false;
 };
 
 }  // namespace manylights

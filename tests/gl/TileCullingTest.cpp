@@ -394,7 +394,8 @@ TEST(TileCulling, ManyLightsAtFullResolution)
     const TileLightLists& lists = culler.cull(view, lights);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     RecordProperty("cull_ms", std::to_string(ms));
-    EXPECT_EQ(lists.tileCount(), 40u * 23u);
+    ASSERT_EQ(view.tileSize, 16);
+    EXPECT_EQ(lists.tileCount(), 80u * 45u);
     EXPECT_GT(lists.lightIndices.size(), lights.size() / 2);
     // Small lights: a handful of tiles each, not the whole screen.
     EXPECT_LT(lists.lightIndices.size(), lights.size() * 8);

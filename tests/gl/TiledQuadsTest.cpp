@@ -1,5 +1,6 @@
 // tiled-quads on a headless context: every tile is drawn once, over exactly its pixels, by
-// the shader variant of its light count, and the image is deferred's.
+// the shader variant of its light count, and the image is deferred's; as points (where the
+// driver draws points of the tile's size, as llvmpipe does) and as quads (the fallback).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,10 +18,9 @@
 namespace manylights {
 namespace {
 
-class TiledQuadsTest : public GlContextTest {};
-
-constexpr int kWidth = 160;  // 5x2 tiles of 32 pixels
-constexpr int kHeight = 64;
+constexpr int kTile = kDefaultTileSize;
+constexpr int kWidth = 5 * kTile;  // 5x2 tiles
+constexpr int kHeight = 2 * kTile;
 constexpr float kEyeHeight = 10.0f;
 constexpr float kLightHeight = 0.3f;
 
@@ -47,18 +47,19 @@ Scene floorScene()
 }
 
 // `count` small lights just above the floor under the middle of tile (tx, ty): random
-// pixels at least 10 from the tile's edges, where a light of range 0.5 (about 4 pixels
-// across here) cannot reach a neighbouring tile.
+// pixels at least 5 from the edges of the 16-pixel tile, where a light of range 0.5 (about 3
+// pixels in radius here) cannot reach a neighbouring tile.
 void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, std::mt19937& random)
 {
     const float tanY = std::tan(glm::radians(30.0f) / 2.0f);
     const float tanX = tanY * static_cast<float>(kWidth) / static_cast<float>(kHeight);
     const float depth = kEyeHeight - kLightHeight;
-    std::uniform_real_distribution<float> within(10.0f, 22.0f);
+    static_assert(kTile == 16, "the margins below are for 16-pixel tiles");
+    std::uniform_real_distribution<float> within(5.0f, 11.0f);
     std::uniform_real_distribution<float> hue(0.0f, 1.0f);
     for (int i = 0; i < count; ++i) {
-        const float px = static_cast<float>(tx * 32) + within(random);
-        const float py = static_cast<float>(ty * 32) + within(random);
+        const float px = static_cast<float>(tx * kTile) + within(random);
+        const float py = static_cast<float>(ty * kTile) + within(random);
         const float slopeX = (2.0f * px / kWidth - 1.0f) * tanX;
         const float slopeY = (2.0f * py / kHeight - 1.0f) * tanY;
         Light light;
@@ -69,7 +70,9 @@ void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, st
     }
 }
 
-TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
+class TiledQuadsPrimitiveTest : public GlContextTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(TiledQuadsPrimitiveTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
 {
     const Scene scene = floorScene();
     // One tile per variant (up to 8, 16, ..., 1024 lights, and up to a light batch), and one
@@ -83,6 +86,7 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
 
     Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight, .countWork = true});
     auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
+    tiled.drawTilesAsQuads(GetParam());
     renderer.renderFrame(tiled, ViewMode::LightCount);
     const Image evaluations = renderer.readColour();
     const std::vector<bool> covered = renderer.readCoverage();
@@ -112,7 +116,7 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
             const bool surface = covered[static_cast<std::size_t>(y) * kWidth + x];
             coveredPixels += surface;
             const float expected =
-                surface ? static_cast<float>(lists.tiles[lists.tileIndex(x / 32, glY / 32)].count) : 0.0f;
+                surface ? static_cast<float>(lists.tiles[lists.tileIndex(x / kTile, glY / kTile)].count) : 0.0f;
             if (evaluations.pixel(x, y)[0] != expected && ++wrong <= 5)
                 ADD_FAILURE() << "pixel (" << x << ", " << glY << "): " << evaluations.pixel(x, y)[0]
                               << " evaluations, expected " << expected;
@@ -130,36 +134,49 @@ TEST_F(TiledQuadsTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
     test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
 }
 
-TEST_F(TiledQuadsTest, NoLightsAndResizing)
+TEST_P(TiledQuadsPrimitiveTest, NoLightsAndResizing)
 {
     const Scene scene = floorScene();
     // No local lights: nothing to draw but the global terms.
     {
         Renderer renderer(scene, {}, {.width = 40, .height = 30});
         auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
+        tiled.drawTilesAsQuads(GetParam());
         renderer.renderFrame(tiled, ViewMode::Final);
         EXPECT_TRUE(tiled.lastLists().lightIndices.empty());
         const Image image = renderer.readColour();
         renderer.renderFrame("deferred", ViewMode::Final);
         test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
-    // The grid follows the image size from frame to frame.
+    // The grid follows the image size from frame to frame; at 97x45 the last row and column
+    // of tiles are cut at the image's edge (the centres of the last row's points lie beyond it).
     std::mt19937 random(2);
     std::vector<Light> lights;
     addLightsOverTile(lights, 1, 1, 40, random);
     addLightsOverTile(lights, 3, 0, 10, random);
+    addLightsOverTile(lights, 4, 1, 10, random);
+    // And one over the whole floor, in every tile, the cut ones too.
+    Light wide;
+    wide.position = glm::vec3(0.0f, 2.0f, 0.0f);
+    wide.range = 40.0f;
+    wide.intensity = glm::vec3(0.3f);
+    lights.push_back(wide);
     Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight});
     auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
+    tiled.drawTilesAsQuads(GetParam());
     for (const auto& [width, height] : {std::pair{kWidth, kHeight}, std::pair{97, 45}, std::pair{kWidth, kHeight}}) {
         renderer.apply({.width = width, .height = height});
         renderer.renderFrame(tiled, ViewMode::Final);
-        EXPECT_EQ(tiled.lastLists().tilesX, (width + 31) / 32);
-        EXPECT_EQ(tiled.lastLists().tilesY, (height + 31) / 32);
+        EXPECT_EQ(tiled.lastLists().tilesX, (width + kTile - 1) / kTile);
+        EXPECT_EQ(tiled.lastLists().tilesY, (height + kTile - 1) / kTile);
         const Image image = renderer.readColour();
         renderer.renderFrame("deferred", ViewMode::Final);
         test::expectImagesNear(renderer.readColour(), image, test::kAgreementTolerance);
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(PointsAndQuads, TiledQuadsPrimitiveTest, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& param) { return param.param ? "quads" : "points"; });
 
 }  // namespace
 }  // namespace manylights
