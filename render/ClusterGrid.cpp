@@ -6,6 +6,7 @@
 
 #include "core/Error.h"
 #include "render/GpuScene.h"
+#include "render/LightTiles.h"
 
 namespace manylights {
 
@@ -16,13 +17,7 @@ constexpr GLuint kTileDepthRangesBinding = bindings::CLUSTER_TILE_DEPTHS_BUFFER_
 constexpr GLuint kTileSlicesBinding = bindings::CLUSTER_TILE_SLICES_BUFFER_BINDING;
 constexpr GLuint kMasksBinding = bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING;
 constexpr GLuint kSummariesBinding = bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING;
-// cluster_assign.comp's workgroup: the invocations that share one light's tiles. llvmpipe's
-// lock-step width (8 with 256-bit vectors); on a GPU a fraction of a warp, in a pass that is
-// small there.
-constexpr int kAssignLanes = 8;
-constexpr GLuint kTileGroupSize = 64;      // local_size_x of cluster_tiles.comp
-constexpr GLint kRowsPerBandLocation = 0;  // in cluster_assign.comp
-constexpr int kTilesPerBand = 1024 * kAssignLanes;
+constexpr GLuint kTileGroupSize = 64;  // local_size_x of cluster_tiles.comp
 
 GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupSize - 1) / groupSize; }
 
@@ -46,7 +41,7 @@ ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, int slices)
       tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
              clusterGridDefines(gbufferDefines(gbufferLayout), slices)),
       assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}},
-              clusterGridDefines({{"CLUSTER_ASSIGN_LANES", std::to_string(kAssignLanes)}}, slices))
+              clusterGridDefines(lightTileDefines(), slices))
 {
 }
 
@@ -137,12 +132,7 @@ void ClusterGrid::assignLights(const LightBatch& batch)
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     // The clears are GL commands before the dispatch: its shaders see them without a barrier.
     bind();
-    setLightBatch(assign_, batch);
-    // Bands of whole rows, at most kTilesPerBand tiles (the shader's loop bound).
-    const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth_));
-    assign_.set(kRowsPerBandLocation, rowsPerBand);
-    assign_.use();
-    glDispatchCompute(batch.size(), groupsFor(static_cast<std::uint32_t>(gridHeight_), rowsPerBand), 1);
+    dispatchLightTiles(assign_, batch, gridWidth_, gridHeight_);
 }
 
 }  // namespace manylights

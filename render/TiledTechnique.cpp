@@ -7,21 +7,58 @@
 #include "render/FramePasses.h"
 #include "render/GpuScene.h"
 #include "render/LightBatches.h"
+#include "render/LightTiles.h"
 
 namespace manylights {
 
 namespace {
+
+constexpr int kCoarseTileSizeLocation = 42;  // lib/coarse_tiles.glsl's coarseTileSize
+constexpr GLuint kCoarseMasksBinding = bindings::COARSE_TILE_MASKS_BUFFER_BINDING;
+
+std::size_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
+
+int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize - 1) / tileSize; }
+
+gl::Defines coarseTileDefines(gl::Defines defines)
+{
+    defines.emplace_back("COARSE_TILE_SIZE_LOCATION", std::to_string(kCoarseTileSizeLocation));
+    return defines;
+}
+
+gl::Defines coarsePassDefines()
+{
+    gl::Defines defines = coarseTileDefines(lightTileDefines());
+    addLightBatchDefines(defines);
+    return defines;
+}
+
 gl::Defines tiledDefines(const TechniqueOptions& options)
 {
-    gl::Defines defines = shaderDefines(options);
+    gl::Defines defines = coarseTileDefines(shaderDefines(options));
     defines.emplace_back("TILE_SIZE", std::to_string(kTiledTileSize));
     defines.emplace_back("LIGHTS_PER_BATCH", std::to_string(kLightsPerBatch));
     return defines;
 }
+
 }  // namespace
 
+int coarseTileSizeFor(int width, int height)
+{
+    int size = kCoarseTileSize;
+    const auto maskBytes = [&] {
+        return static_cast<std::size_t>(tilesAlong(width, size)) * static_cast<std::size_t>(tilesAlong(height, size)) *
+               wordsFor(kLightsPerBatch) * sizeof(std::uint32_t);
+    };
+    while (maskBytes() > kCoarseMaskBudgetBytes)
+        size *= 2;
+    return size;
+}
+
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
-    : Technique(options), program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options))
+    : Technique(options),
+      coarse_("tiled coarse tiles", {{GL_COMPUTE_SHADER, "tiled_coarse.comp"}}, coarsePassDefines()),
+      program_("tiled lighting", {{GL_COMPUTE_SHADER, "tiled.comp"}}, tiledDefines(options))
 {
 }
 
@@ -31,19 +68,39 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
     const std::vector<LightBatch> batches = lightBatches(static_cast<std::uint32_t>(scene.lightCount()));
     const LightSource source = fitsOneLightWindow(batches) ? scene.walkedLightSource() : scene.indexedLightSource();
     const gl::Program& program = program_.variant(scene.lightingFeatures(), source);
-    const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kTiledTileSize - 1) / kTiledTileSize); };
-    // One dispatch per batch: each batch after the first loads what the one before it stored.
-    for (const LightBatch& batch : batches)
+    const int coarseSize = coarseTileSizeFor(targets.width, targets.height);
+    const int coarseX = tilesAlong(targets.width, coarseSize);
+    const int coarseY = tilesAlong(targets.height, coarseSize);
+    const auto groups = [](int pixels) { return static_cast<GLuint>(tilesAlong(pixels, kTiledTileSize)); };
+    for (const LightBatch& batch : batches) {
+        const auto maskBytes =
+            static_cast<GLsizeiptr>(static_cast<std::size_t>(coarseX) * static_cast<std::size_t>(coarseY) *
+                                    wordsFor(batch.size()) * sizeof(std::uint32_t));
+        passes.run({.name = "coarse tiles", .storage = Resource::LightGrid, .writes = Resource::LightGrid}, [&] {
+            if (!coarseMasks_ || coarseMasks_.size() < static_cast<std::size_t>(maskBytes))
+                coarseMasks_ = gl::Buffer("tiled coarse tile masks", static_cast<std::size_t>(maskBytes), nullptr, 0);
+            const std::uint32_t zero = 0;
+            glClearNamedBufferSubData(coarseMasks_.id(), GL_R32UI, 0, maskBytes, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                                      &zero);
+            coarseMasks_.bindBase(GL_SHADER_STORAGE_BUFFER, kCoarseMasksBinding);
+            coarse_.set(kCoarseTileSizeLocation, static_cast<unsigned>(coarseSize));
+            dispatchLightTiles(coarse_, batch, coarseX, coarseY);
+        });
+        // One dispatch per batch: each batch after the first loads what the one before it stored.
         passes.run({.name = "lighting",
                     .sampled = Resource::GBuffer,
                     .images = Resource::LitImage,
+                    .storage = Resource::LightGrid,
                     .writes = Resource::LitImage},
                    [&] {
                        scene.bindLightSource(source, batch);
+                       coarseMasks_.bindBase(GL_SHADER_STORAGE_BUFFER, kCoarseMasksBinding);
                        setLightBatch(program, batch);
+                       program.set(kCoarseTileSizeLocation, static_cast<unsigned>(coarseSize));
                        program.use();
                        glDispatchCompute(groups(targets.width), groups(targets.height), 1);
                    });
+    }
 }
 
 }  // namespace manylights

@@ -1,53 +1,18 @@
 #version 450 core
 // Clustered, once per light batch: the lights' bits in the masks of the clusters they
-// reach. One workgroup per (light, band of rows of tiles): its invocations share out the
-// tiles of the band that the light's bounding sphere covers on screen (tile i to invocation
-// i % CLUSTER_ASSIGN_LANES) and test, in each, the occupied slices within the sphere's depth
-// span whose box the sphere (and a spot's cone) reaches.
-//
-// A workgroup per light rather than an invocation per light: llvmpipe runs 8 invocations in
-// lock step, and 8 lights on them walked as many tiles as the largest of the 8 covers; the
-// tiles of one light keep every lane busy but the last round's. Courtyard, 4096 lights,
-// 1280x720: 23 -> 15 ms (docs/performance.md). A band has rowsPerBand rows, at most
-// kTilesPerBand tiles (render/ClusterGrid.cpp), so loop iterations per invocation stay under
-// kTilesPerBand / CLUSTER_ASSIGN_LANES · (CLUSTER_SLICES + 1), about 9,200, within the bound
-// of render/LightBatches.h.
+// reach. One workgroup per (light, band of rows of tiles), its invocations sharing out the
+// tiles the light's bounding sphere covers on screen (lib/light_tiles.glsl), each testing, in
+// its tiles, the occupied slices within the sphere's depth span whose box the sphere (and a
+// spot's cone) reaches. Loop iterations per invocation: at most 1,024 tiles (the bands of
+// lib/light_tiles.glsl) times CLUSTER_SLICES + 1, about 9,200, within the bound of
+// render/LightBatches.h.
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
 #include "lib/light_batch.glsl"
 #include "lib/clusters.glsl"
 #include "lib/culling.glsl"
-
-layout(local_size_x = CLUSTER_ASSIGN_LANES) in;
-layout(location = 0) uniform uint rowsPerBand;
-
-// The tile rectangle (first.xy, last.xy inclusive) a sphere in view space covers on screen.
-// A sphere wholly beyond the near plane projects inside the projection of its bounding
-// box's corners; one reaching the eye plane may cover any tile. False when it is off screen.
-bool sphereTileRect(vec3 centre, float radius, uvec2 grid, out uvec2 first, out uvec2 last)
-{
-    first = uvec2(0u);
-    last = grid - 1u;
-    if (-centre.z - radius <= frame.projection.z)
-        return true;
-    vec2 ndcLo = vec2(1e30);
-    vec2 ndcHi = vec2(-1e30);
-    for (int corner = 0; corner < 8; ++corner) {
-        vec3 p = centre + radius * vec3((corner & 1) != 0 ? 1.0 : -1.0, (corner & 2) != 0 ? 1.0 : -1.0,
-                                        (corner & 4) != 0 ? 1.0 : -1.0);
-        vec2 ndc = p.xy / (-p.z * frame.projection.xy);
-        ndcLo = min(ndcLo, ndc);
-        ndcHi = max(ndcHi, ndc);
-    }
-    if (any(greaterThan(ndcLo, vec2(1.0))) || any(lessThan(ndcHi, vec2(-1.0))))
-        return false;
-    vec2 pixelLo = (clamp(ndcLo, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
-    vec2 pixelHi = (clamp(ndcHi, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
-    first = min(uvec2(pixelLo) / uint(CLUSTER_TILE_SIZE), grid - 1u);
-    last = min(uvec2(pixelHi) / uint(CLUSTER_TILE_SIZE), grid - 1u);
-    return true;
-}
+#include "lib/light_tiles.glsl"
 
 // A light of the batch as the culling sees it, in view space.
 struct ViewLight {
@@ -123,7 +88,6 @@ void addLightToTile(ViewLight light, uint tile, uint word, uint wordBit)
 void main()
 {
     uint bit = gl_WorkGroupID.x;
-    uint band = gl_WorkGroupID.y;
     uint lightIndex = lightBatch.x + bit;
     if (lightIndex >= lightBatch.y)
         return;
@@ -137,19 +101,9 @@ void main()
     light.axis = mat3(frame.view) * gpuLight.spotAxisCosCutoff.xyz;
     light.cosCutoff = gpuLight.spotAxisCosCutoff.w;
     uvec2 grid = clusterTileGrid();
-    uvec2 first = uvec2(0u);
-    uvec2 last = grid - 1u;
-    if (!light.unbounded && (-light.centre.z + light.radius < frame.projection.z ||
-                             !sphereTileRect(light.centre, light.radius, grid, first, last)))
+    LightTileRun run;
+    if (!lightTileRun(light.centre, light.radius, light.unbounded, uint(CLUSTER_TILE_SIZE), grid, run))
         return;
-    // This band's rows of the light's tile rectangle, walked as one run of tiles.
-    first.y = max(first.y, band * rowsPerBand);
-    last.y = min(last.y, band * rowsPerBand + rowsPerBand - 1u);
-    if (first.y > last.y)
-        return;
-    uint columns = last.x - first.x + 1u;
-    uint tiles = columns * (last.y - first.y + 1u);
-    for (uint i = gl_LocalInvocationID.x; i < tiles; i += uint(CLUSTER_ASSIGN_LANES))
-        addLightToTile(light, (first.y + i / columns) * grid.x + first.x + i % columns, bit / 32u,
-                       1u << (bit % 32u));
+    for (uint i = gl_LocalInvocationID.x; i < run.tiles; i += uint(LIGHT_TILE_LANES))
+        addLightToTile(light, tileOfRun(run, i, grid.x), bit / 32u, 1u << (bit % 32u));
 }

@@ -1,14 +1,22 @@
 #version 450 core
 // tiled (Lauritzen, SIGGRAPH 2010): one workgroup per 16x16 tile. It finds the tile's
-// depth range among its surfaces, culls every light of the batch against the tile's frustum
+// depth range among its surfaces, culls the lights of the batch against the tile's frustum
 // cut to that range into a bit mask in shared memory (bit i: light lightBatch.x + i may reach
 // the tile), and shades its pixels by walking the mask. A mask rather than a list: it needs
 // no count, no capacity (a bit for every light of a batch: nothing can overflow) and no sort
 // (a pixel walks its lights in index order, the order forward adds them in, so the image is
 // the same on every run). One dispatch per light batch (lib/light_batch.glsl); the later
-// ones add to the lit image. Loop iterations per invocation: clearing the mask (1), the
-// culling loop (a batch / 256 ≤ 32, with the frustum's four planes) and the shading walk (one
-// per mask word and one per light of the batch): under the bound of render/LightBatches.h.
+// ones add to the lit image.
+//
+// The culling tests only the lights its coarse tile lists (lib/coarse_tiles.glsl, set by
+// tiled_coarse.comp from each light's screen rectangle), not every light of the batch: with
+// thousands of small lights a tile's workgroup spent more on testing them all than on
+// shading (courtyard, 4096 lights, 1280x720: ~100 of 300 ms, docs/performance.md).
+//
+// Loop iterations per invocation: clearing the mask (1), the culling walk (one mask word of
+// the coarse tile's per 256 invocations, a batch / 32 / 256 ≤ 1, with its ≤ 32 bits and the
+// frustum's four planes) and the shading walk (one per mask word and one per light of the
+// batch): under the bound of render/LightBatches.h.
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
@@ -16,6 +24,7 @@
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/culling.glsl"
+#include "lib/coarse_tiles.glsl"
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 // After the workgroup size, which it reads.
@@ -51,12 +60,24 @@ void main()
     if (!tileHasSurface())
         return;
 
+    // Each invocation culls the candidates of whole mask words, so it owns the words it
+    // writes: no atomics but the summary's.
     TileFrustum frustum = workgroupTileFrustum();
-    for (uint i = lightBatch.x + gl_LocalInvocationIndex; i < lightBatch.y; i += THREADS) {
-        if (lightMayReachTile(batchLight(i), frustum)) {
-            uint bit = i - lightBatch.x;
-            atomicOr(tileLightMask[bit / 32u], 1u << (bit % 32u));
-            atomicOr(tileMaskSummary[bit / 1024u], 1u << (bit / 32u % 32u));
+    uvec2 coarseTile = gl_WorkGroupID.xy * gl_WorkGroupSize.xy / coarseTileSize;
+    uint words = coarseMaskWords();
+    uint coarseMasks = (coarseTile.y * coarseTileGrid().x + coarseTile.x) * words;
+    for (uint w = gl_LocalInvocationIndex; w < words; w += THREADS) {
+        uint candidates = coarseTileMasks[coarseMasks + w];
+        uint reaching = 0u;
+        while (candidates != 0u) {
+            uint bit = uint(findLSB(candidates));
+            candidates &= candidates - 1u;
+            if (lightMayReachTile(batchLight(lightBatch.x + w * 32u + bit), frustum))
+                reaching |= 1u << bit;
+        }
+        if (reaching != 0u) {
+            tileLightMask[w] = reaching;
+            atomicOr(tileMaskSummary[w / 32u], 1u << (w % 32u));
         }
     }
     barrier();

@@ -20,6 +20,7 @@ const int CLUSTER_TILE_SLICES_BUFFER_BINDING = 3;     // lib/clusters.glsl Clust
 const int TILE_LIGHTS_BUFFER_BINDING = 3;             // tiled_quads.frag TileLights
 const int CLUSTER_LIGHT_MASKS_BUFFER_BINDING = 4;     // lib/clusters.glsl ClusterLightMasks
 const int CLUSTER_MASK_SUMMARIES_BUFFER_BINDING = 5;  // lib/clusters.glsl ClusterMaskSummaries
+const int COARSE_TILE_MASKS_BUFFER_BINDING = 6;       // lib/coarse_tiles.glsl CoarseTileMasks
 const int INSTANCES_BUFFER_BINDING = 8;               // lib/instances.glsl Instances
 const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag TransparentEvaluations
 const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl ShadowSlotOfLight

@@ -1,0 +1,26 @@
+// The passes that set each light's bit in per-tile masks: the cluster assignment
+// (render/ClusterGrid.h) and tiled's coarse tiles (render/TiledTechnique.h). Their shaders
+// include shaders/lib/light_tiles.glsl: one workgroup of kLightTileLanes invocations per
+// (light, band of tile rows), the invocations sharing out the light's tiles.
+#pragma once
+
+#include "gl/Program.h"
+#include "render/LightBatches.h"
+
+namespace manylights {
+
+// llvmpipe's lock-step width (8 with 256-bit vectors): the invocations that share one
+// light's tiles. On a GPU a fraction of a warp, in passes that are small there.
+inline constexpr int kLightTileLanes = 8;
+// A band of tile rows has at most this many tiles, so an invocation visits at most 1,024.
+inline constexpr int kTilesPerBand = 1024 * kLightTileLanes;
+inline constexpr int kRowsPerBandLocation = 41;  // lib/light_tiles.glsl's rowsPerBand
+
+// LIGHT_TILE_LANES and LIGHT_TILE_ROWS_PER_BAND_LOCATION.
+gl::Defines lightTileDefines();
+
+// Runs `program` for every light of `batch` over a grid of gridWidth x gridHeight tiles: a
+// workgroup per light and band of rows.
+void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int gridWidth, int gridHeight);
+
+}  // namespace manylights
