@@ -1,8 +1,8 @@
 // tiled: compute-shader tiled deferred shading (Lauritzen, SIGGRAPH 2010). One workgroup
-// per 16x16-pixel tile culls the lights of a batch against the tile's depth-bounded frustum
+// per 8x8-pixel tile culls the lights of a batch against the tile's depth-bounded frustum
 // into a bit mask in shared memory (a bit for every light of the batch, so nothing can
 // overflow), then shades the tile's pixels by walking it. The lights it tests are those whose
-// screen rectangle meets its coarse tile (a square of 4x4 tiles or more), which a pass per
+// screen rectangle meets its coarse tile (a square of 8x8 tiles or more), which a pass per
 // batch marks first: a per-light scatter, so that no workgroup tests every light of a large
 // scene. A scene whose lights fit one light window (render/LightBatches.h) reads them from a
 // uniform block, the others from the light texels or the storage buffer.
@@ -17,7 +17,7 @@
 
 namespace manylights {
 
-inline constexpr int kTiledTileSize = 16;
+inline constexpr int kTiledTileSize = 8;
 // The coarse tiles' side: 64 pixels, or more where their masks would exceed
 // kCoarseMaskBudgetBytes (above 8192x8192 for batches of 8,192 lights).
 inline constexpr int kCoarseTileSize = 64;

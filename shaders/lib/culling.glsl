@@ -24,12 +24,14 @@ bool coneTouchesSphere(vec3 apex, vec3 axis, float cosCutoff, vec3 centre, float
 
 // A screen tile's frustum (pixels pixelLo..pixelHi) cut to the view-depth range of the
 // surfaces seen through it: four planes through the eye (normals point inwards) and the
-// depth range, widened slightly so rounding cannot cut a surface off, and a sphere around
-// the cut frustum's bounding box for the cone test.
+// depth range, widened slightly so rounding cannot cut a surface off, the cut frustum's
+// bounding box, and a sphere around that box for the cone test.
 struct TileFrustum {
     vec3 planes[4];
     float depthMin;
     float depthMax;
+    vec3 boxLo;  // the view-space box around the cut frustum
+    vec3 boxHi;
     vec3 boxCentre;
     float boxRadius;
 };
@@ -63,11 +65,9 @@ TileFrustum makeTileFrustum(vec2 pixelLo, vec2 pixelHi, float depthMin, float de
     vec2 slopeHi = pixelSlope(pixelHi);
     tile.planes = vec3[4](normalize(vec3(1.0, 0.0, slopeLo.x)), normalize(vec3(-1.0, 0.0, -slopeHi.x)),
                           normalize(vec3(0.0, 1.0, slopeLo.y)), normalize(vec3(0.0, -1.0, -slopeHi.y)));
-    vec3 boxLo;
-    vec3 boxHi;
-    frustumSectionBox(pixelLo, pixelHi, depthMin, depthMax, boxLo, boxHi);
-    tile.boxCentre = 0.5 * (boxLo + boxHi);
-    tile.boxRadius = 0.5 * length(boxHi - boxLo);
+    frustumSectionBox(pixelLo, pixelHi, depthMin, depthMax, tile.boxLo, tile.boxHi);
+    tile.boxCentre = 0.5 * (tile.boxLo + tile.boxHi);
+    tile.boxRadius = 0.5 * length(tile.boxHi - tile.boxLo);
     return tile;
 }
 
@@ -85,6 +85,11 @@ bool lightMayReachTile(GpuLight light, TileFrustum tile)
     for (int i = 0; i < 4; ++i)
         if (dot(tile.planes[i], centre) < -radius)
             return false;
+    // The box around the cut frustum as well: the planes one at a time keep a sphere near a
+    // corner of the tile, outside two planes but near each (courtyard, 4096 lights: `tiled`
+    // evaluates 13.9 instead of 17.4 M pairs).
+    if (!sphereTouchesBox(centre, radius, tile.boxLo, tile.boxHi))
+        return false;
 #ifdef NO_SPOT_LIGHTS
     return true;  // a program specialised for a scene without spots (render/LightingPrograms.h)
 #else
