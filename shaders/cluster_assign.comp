@@ -59,9 +59,9 @@ void addLightToTile(ViewLight light, uint tile, uint word, uint wordBit)
     if (!lightTouchesBox(light, lo, hi))
         return;
     // Only the slices within the sphere's depth span: a surface the light reaches lies within
-    // its radius in depth too (courtyard, as above: 15 -> 12 ms, fewer box tests). The lighting pass computes a surface's slice in another
-    // program, whose rounding may differ: a hundredth of a slice either way, as
-    // cluster_tiles.comp allows for.
+    // its radius in depth too (courtyard, 4096 lights: 15 -> 12 ms, fewer box tests). The
+    // lighting pass computes a surface's slice in another program, whose rounding may
+    // differ: a hundredth of a slice either way, as cluster_tiles.comp allows for.
     if (!light.unbounded) {
         float viewDepth = -light.centre.z;
         uint kLo = uint(clamp(floor(sliceCoordinate(viewDepth - light.radius, range) - 0.01), 0.0,
