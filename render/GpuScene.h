@@ -136,8 +136,16 @@ public:
     static Mesh lightMarkerMesh();
 
     std::size_t lightCount() const { return lightCount_; }
-    // The kinds of light the scene has, which the lighting programs are specialised for.
+    // The kinds of light the scene has and what the frame's shadowing reads, which the lighting
+    // programs are specialised for.
     const LightingFeatures& lightingFeatures() const { return lightingFeatures_; }
+    // Whether this frame reads a directional shadow map and the SSAO factor (the Renderer says,
+    // before its technique runs; ShadowMaps sets the same in the shadowing uniforms).
+    void setFrameShadowing(bool directionalShadow, bool ambientOcclusion)
+    {
+        lightingFeatures_.directionalShadow = directionalShadow;
+        lightingFeatures_.ambientOcclusion = ambientOcclusion;
+    }
     // The lights as posed at time() (their animations applied), and as the shaders get them.
     const std::vector<Light>& lights() const { return currentLights_; }
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }

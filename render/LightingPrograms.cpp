@@ -15,6 +15,7 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
         .classicFalloff = any([](const Light& light) { return light.falloff == Falloff::Classic; }),
         .rangeFalloff = any([](const Light& light) { return light.falloff != Falloff::Classic; }),
         .directionalLight = directional.has_value(),
+        .directionalShadow = directional.has_value() && directional->shadows,
     };
 }
 
@@ -29,6 +30,10 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("ONLY_RANGE_FALLOFF", "1");
     if (!features.directionalLight)
         defines.emplace_back("NO_DIRECTIONAL_LIGHT", "1");
+    if (!features.directionalShadow)
+        defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
+    if (!features.ambientOcclusion)
+        defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
     return defines;
 }
 

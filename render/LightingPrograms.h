@@ -28,6 +28,12 @@ struct LightingFeatures {
     bool classicFalloff = true;
     bool rangeFalloff = true;
     bool directionalLight = true;
+    // What the frame's shadowing reads (GpuScene::setFrameShadowing): the directional light's
+    // shadow map, the SSAO factor. Without them their factors are 1 and their lookups are left
+    // out: on llvmpipe the switched-off lookups cost about a tenth of clustered's lighting
+    // pass on the courtyard (docs/performance.md).
+    bool directionalShadow = true;
+    bool ambientOcclusion = true;
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
@@ -37,8 +43,8 @@ struct LightingFeatures {
 LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
                                     const std::optional<DirectionalLight>& directional);
 
-// `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF and
-// NO_DIRECTIONAL_LIGHT as `features` allow.
+// `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW and NO_AMBIENT_OCCLUSION as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).

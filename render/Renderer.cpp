@@ -186,6 +186,7 @@ void Renderer::prepareShadowing(ViewMode view, FramePasses& passes)
         ssao_->run(occlusion, passes);
     }
     shadowMaps_.bind(occlusion.enabled);
+    gpuScene_.setFrameShadowing(shadowMaps_.directionalActive(), occlusion.enabled);
 }
 
 namespace {

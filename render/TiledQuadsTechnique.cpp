@@ -168,7 +168,7 @@ void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, F
     // lists), its GPU time is near zero.
     passes.run({.name = "cpu-culling"}, [&] { cullAndUpload(scene, targets); });
     passes.run({.name = "global", .target = Resource::LitImage, .state = kCoveredPixels, .sampled = Resource::GBuffer},
-               [&] { drawCoveredPixels(global_); });
+               [&] { drawCoveredPixels(global_.variant(scene.lightingFeatures())); });
     // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
     // background is never shaded.
     passes.run(

@@ -53,7 +53,7 @@ private:
     void drawTiles(const GpuScene& scene, const FrameTargets& targets) const;
     bool drawsTilesAsPoints(const TileLightLists& lists) const;
 
-    gl::Program global_;
+    LightingProgram global_;
     // One per light-count bucket, each compiled per the scene's kinds of light and light source.
     std::vector<LightingProgram> variants_;
     TileCuller culler_;

@@ -1,6 +1,7 @@
 #include "render/VolumeDrawer.h"
 #include "render/Bindings.h"
 
+#include "core/Error.h"
 #include "render/GpuScene.h"
 #include "render/ScreenPasses.h"
 
@@ -41,6 +42,8 @@ VolumeDrawer::VolumeDrawer(const gl::Defines& defines)
 
 void VolumeDrawer::prepare(const GpuScene& scene)
 {
+    globalVariant_ = &global_.variant(scene.lightingFeatures());
+    lightingVariant_ = &lighting_.variant(scene.lightingFeatures());
     // Moving lights regroup: a light's volume shape depends on where the camera is.
     if (preparedFor_ == &scene && preparedVersion_ == scene.lightsVersion())
         return;
@@ -53,11 +56,16 @@ void VolumeDrawer::prepare(const GpuScene& scene)
     lightLists_ = gl::Buffer::fromSpan<std::uint32_t>("light volume lists", lists, 0);
 }
 
-void VolumeDrawer::drawGlobalTerms() const { drawCoveredPixels(global_); }
+void VolumeDrawer::drawGlobalTerms() const
+{
+    ML_ASSERT(globalVariant_);
+    drawCoveredPixels(*globalVariant_);
+}
 
 void VolumeDrawer::drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const
 {
-    drawVolumes(shape, first, count, lighting_);
+    ML_ASSERT(lightingVariant_);
+    drawVolumes(shape, first, count, *lightingVariant_);
 }
 
 void VolumeDrawer::drawVolumes(VolumeShape shape, std::size_t first, std::size_t count,

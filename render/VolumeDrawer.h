@@ -8,6 +8,7 @@
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
 #include "render/LightVolumes.h"
+#include "render/LightingPrograms.h"
 
 namespace manylights {
 
@@ -19,7 +20,8 @@ class VolumeDrawer {
 public:
     explicit VolumeDrawer(const gl::Defines& defines = {});
 
-    // Rebuilds the per-shape light lists when the scene's lights changed.
+    // Picks the programs for the scene's lighting features and rebuilds the per-shape light
+    // lists when the scene's lights changed. Once per frame, before the draws below.
     void prepare(const GpuScene& scene);
     const LightVolumeGroups& groups() const { return groups_; }
 
@@ -30,7 +32,6 @@ public:
     // state (render/FramePasses.h).
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const;
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count, const gl::Program& program) const;
-    const gl::Program& lightingProgram() const { return lighting_; }
 
 private:
     struct MeshRange {
@@ -39,8 +40,11 @@ private:
         GLint baseVertex;
     };
 
-    gl::Program global_;
-    gl::Program lighting_;
+    LightingProgram global_;
+    LightingProgram lighting_;
+    // The variants of this frame's lighting features (prepare).
+    const gl::Program* globalVariant_ = nullptr;
+    const gl::Program* lightingVariant_ = nullptr;
     gl::Buffer vertices_;
     gl::Buffer indices_;
     gl::VertexArray vertexArray_;

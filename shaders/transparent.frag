@@ -7,7 +7,9 @@
 // (coverage · colour, coverage), each later one adds coverage · its lights' colour with alpha
 // 0. The ambient term has no occlusion: SSAO is made from the opaque surfaces' G-buffer.
 #include "lib/bindings.glsl"
+#ifndef NO_AMBIENT_OCCLUSION
 #define NO_AMBIENT_OCCLUSION 1
+#endif
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
 #include "lib/lighting.glsl"

@@ -37,6 +37,9 @@ layout(binding = AMBIENT_OCCLUSION_UNIT) uniform sampler2D ambientOcclusionMap;
 // map covers every surface the camera can see (render/ShadowMaps.cpp fits it).
 float directionalShadow(vec3 position)
 {
+#ifdef NO_DIRECTIONAL_SHADOW  // a frame without the map (render/LightingPrograms.h)
+    return 1.0;
+#endif
     if (shadowing.directionalShadowParams.x == 0.0)
         return 1.0;
     vec3 coord = (shadowing.directionalShadowMatrix * vec4(position, 1.0)).xyz;
@@ -123,7 +126,8 @@ ivec2 screenPixel(vec3 position)
 // The ambient-occlusion factor (1: open, 0: fully occluded) at a visible surface point.
 float ambientOcclusion(vec3 position)
 {
-#ifdef NO_AMBIENT_OCCLUSION  // a surface the occlusion map was not made from (a transparent one)
+// A surface the occlusion map was not made from (a transparent one), or a frame without it.
+#ifdef NO_AMBIENT_OCCLUSION
     return 1.0;
 #endif
     if (shadowing.occlusionParams.x == 0.0)
