@@ -70,8 +70,8 @@ void addLightToTile(ViewLight light, uint tile, uint word, uint wordBit)
                               float(CLUSTER_SLICES - 1)));
         slices &= (0xffffffffu >> (31u - kHi)) & ~((1u << kLo) - 1u);
     }
-    uint words = clusterMaskWords();
-    uint summaryWords = clusterSummaryWords();
+    uint words = lightBatchMaskWords();
+    uint summaryWords = lightBatchSummaryWords();
     while (slices != 0u) {
         uint k = uint(findLSB(slices));
         slices &= slices - 1u;

@@ -32,7 +32,7 @@ void main()
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     bool inside = all(lessThan(pixel, imageSize(inRangeCounts)));
     bool covered = inside && texelFetch(sceneDepth, pixel, 0).r < 1.0;
-    uint words = (lightBatch.y - lightBatch.x + 31u) / 32u;
+    uint words = lightBatchMaskWords();
     for (uint w = gl_LocalInvocationIndex; w < words; w += THREADS)
         candidates[w] = 0u;
     if (gl_LocalInvocationIndex == 0u)

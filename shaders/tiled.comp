@@ -68,7 +68,7 @@ void main()
     // writes: no atomics but the summary's.
     TileFrustum frustum = workgroupTileFrustum();
     uvec2 coarseTile = gl_WorkGroupID.xy * gl_WorkGroupSize.xy / coarseTileSize;
-    uint words = coarseMaskWords();
+    uint words = lightBatchMaskWords();
     uint coarseMasks = (coarseTile.y * coarseTileGrid().x + coarseTile.x) * words;
     for (uint w = gl_LocalInvocationIndex; w < words; w += THREADS) {
         uint candidates = coarseTileMasks[coarseMasks + w];
@@ -90,7 +90,7 @@ void main()
 
     vec3 V = viewVector(s.position);
     vec3 color = isFirstLightBatch() ? shadeGlobal(s, V) : vec3(0.0);
-    uint summaryWords = (lightBatch.y - lightBatch.x + 1023u) / 1024u;
+    uint summaryWords = lightBatchSummaryWords();
     uint evaluated = 0u;
     for (uint g = 0u; g < summaryWords; ++g) {
         uint nonEmpty = tileMaskSummary[g];

@@ -30,7 +30,7 @@ void main()
         return;
     uint word = bit / 32u;
     uint wordBit = 1u << (bit % 32u);
-    uint words = coarseMaskWords();
+    uint words = lightBatchMaskWords();
     for (uint i = gl_LocalInvocationID.x; i < run.tiles; i += uint(LIGHT_TILE_LANES))
         atomicOr(coarseTileMasks[tileOfRun(run, i, grid.x) * words + word], wordBit);
 }

@@ -19,8 +19,8 @@
 vec3 shadeClusterLights(uint cluster, Surface s, vec3 V, inout uint evaluated)
 {
     vec3 color = vec3(0.0);
-    uint words = clusterMaskWords();
-    uint summaryWords = clusterSummaryWords();
+    uint words = lightBatchMaskWords();
+    uint summaryWords = lightBatchSummaryWords();
     for (uint g = 0u; g < summaryWords; ++g) {
         uint nonEmpty = clusterMaskSummaries[cluster * summaryWords + g];
         uint bits = 0u;

@@ -17,10 +17,10 @@ layout(std430, binding = CLUSTER_TILE_SLICES_BUFFER_BINDING) buffer ClusterTileS
     uint tileOccupiedSlices[];  // bit k: slice k holds at least one pixel's surface
 };
 layout(std430, binding = CLUSTER_LIGHT_MASKS_BUFFER_BINDING) buffer ClusterLightMasks {
-    uint clusterLightMasks[];  // cluster c, word w: [c * clusterMaskWords() + w]
+    uint clusterLightMasks[];  // cluster c, word w: [c * lightBatchMaskWords() + w]
 };
 layout(std430, binding = CLUSTER_MASK_SUMMARIES_BUFFER_BINDING) buffer ClusterMaskSummaries {
-    uint clusterMaskSummaries[];  // cluster c: [c * clusterSummaryWords() + w / 32], bit w % 32
+    uint clusterMaskSummaries[];  // cluster c: [c * lightBatchSummaryWords() + w / 32], bit w % 32
 };
 
 uvec2 clusterTileGrid()
@@ -60,15 +60,4 @@ float sliceCoordinate(float z, vec2 range)
 uint sliceOfDepth(float z, vec2 range)
 {
     return uint(clamp(floor(sliceCoordinate(z, range)), 0.0, float(CLUSTER_SLICES - 1)));
-}
-
-// Words of one cluster's mask, and of its summary, for the current light batch.
-uint clusterMaskWords()
-{
-    return (lightBatch.y - lightBatch.x + 31u) / 32u;
-}
-
-uint clusterSummaryWords()
-{
-    return (clusterMaskWords() + 31u) / 32u;
 }

@@ -5,7 +5,7 @@
 // of its tiles instead of every light of the batch. Needs lib/frame.glsl and
 // lib/light_batch.glsl first.
 layout(std430, binding = COARSE_TILE_MASKS_BUFFER_BINDING) buffer CoarseTileMasks {
-    uint coarseTileMasks[];  // coarse tile t, word w: [t * coarseMaskWords() + w]
+    uint coarseTileMasks[];  // coarse tile t, word w: [t * lightBatchMaskWords() + w]
 };
 layout(location = COARSE_TILE_SIZE_LOCATION) uniform uint coarseTileSize;  // pixels
 
@@ -14,7 +14,3 @@ uvec2 coarseTileGrid()
     return (uvec2(frame.viewport.xy) + coarseTileSize - 1u) / coarseTileSize;
 }
 
-uint coarseMaskWords()
-{
-    return (lightBatch.y - lightBatch.x + 31u) / 32u;
-}

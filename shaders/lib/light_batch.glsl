@@ -8,3 +8,16 @@ bool isFirstLightBatch()
 {
     return lightBatch.x == 0u;
 }
+
+// The words of a bit mask over the batch's lights (bit i: light lightBatch.x + i), as the
+// clusters, tiled's coarse tiles and tiles and the in-range count keep them, and of its
+// summary (bit w % 32 of word w / 32: mask word w is not empty).
+uint lightBatchMaskWords()
+{
+    return (lightBatch.y - lightBatch.x + 31u) / 32u;
+}
+
+uint lightBatchSummaryWords()
+{
+    return (lightBatchMaskWords() + 31u) / 32u;
+}
