@@ -17,10 +17,10 @@
 // coarse tiles the culling of four times the tiles costs less than the shading it saves
 // (courtyard, 4096 lights: frame 231-232 -> 209-211 ms; LearnOpenGL's scene no slower).
 //
-// Loop iterations per invocation: clearing the mask (a batch / 32 / 64 ≤ 4), the culling
-// walk (as many mask words of the coarse tile's, each with its ≤ 32 bits and the frustum's
-// four planes) and the shading walk (one per mask word and one per light of the batch):
-// under the bound of render/LightBatches.h.
+// Loop iterations per invocation: the culling walk (mask words of the coarse tile's, a batch
+// / 32 / 64 ≤ 4, each with its ≤ 32 bits and the frustum's four planes) and the shading walk
+// (one per mask word and one per light of the batch): under the bound of
+// render/LightBatches.h.
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
@@ -47,10 +47,10 @@ void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     bool covered = all(lessThan(pixel, ivec2(frame.viewport.xy))) && texelFetch(sceneDepth, pixel, 0).r < 1.0;
+    // Only the summary is cleared: the shading walks the mask words it marks, each written
+    // whole by the invocation that culled it.
     if (gl_LocalInvocationIndex == 0u)
         clearTileDepthRange();
-    for (uint w = gl_LocalInvocationIndex; w < MASK_WORDS; w += THREADS)
-        tileLightMask[w] = 0u;
     if (gl_LocalInvocationIndex < SUMMARY_WORDS)
         tileMaskSummary[gl_LocalInvocationIndex] = 0u;
     barrier();
