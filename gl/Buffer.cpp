@@ -33,6 +33,15 @@ void Buffer::update(std::size_t offset, std::size_t bytes, const void* data)
         glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
 }
 
+void Buffer::clearToZero(std::size_t bytes)
+{
+    ML_ASSERT(bytes <= size_ && bytes % 4 == 0);
+    const GLuint zero = 0;
+    if (bytes > 0)
+        glClearNamedBufferSubData(id(), GL_R32UI, 0, static_cast<GLsizeiptr>(bytes), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                                  &zero);
+}
+
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
 }  // namespace manylights::gl

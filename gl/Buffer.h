@@ -28,6 +28,9 @@ public:
     }
 
     void update(std::size_t offset, std::size_t bytes, const void* data);
+    // Zeroes the first `bytes` (a multiple of 4) on the GPU (glClearNamedBufferSubData), as a
+    // GL command: shaders of later commands see the zeros.
+    void clearToZero(std::size_t bytes);
     void bindBase(GLenum target, GLuint index) const;
     std::size_t size() const { return size_; }
 

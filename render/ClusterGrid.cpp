@@ -21,10 +21,6 @@ constexpr GLuint kTileGroupSize = 64;  // local_size_x of cluster_tiles.comp
 
 GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupSize - 1) / groupSize; }
 
-std::uint32_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
-
-int tilesAlong(int pixels) { return (pixels + kClusterTileSize - 1) / kClusterTileSize; }
-
 }  // namespace
 
 gl::Defines clusterGridDefines(gl::Defines defines, int slices)
@@ -47,16 +43,17 @@ ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, int slices)
 
 std::uint32_t ClusterGrid::lightsPerBatch(int width, int height, int slices)
 {
-    const std::size_t clusters = static_cast<std::size_t>(tilesAlong(width)) *
-                                 static_cast<std::size_t>(tilesAlong(height)) * static_cast<std::size_t>(slices);
+    const std::size_t clusters = static_cast<std::size_t>(tilesAlong(width, kClusterTileSize)) *
+                                 static_cast<std::size_t>(tilesAlong(height, kClusterTileSize)) *
+                                 static_cast<std::size_t>(slices);
     const std::size_t affordableWords = kClusterMaskBudgetBytes / (sizeof(std::uint32_t) * clusters);
     return static_cast<std::uint32_t>(std::clamp<std::size_t>(affordableWords * 32, 32, kLightsPerBatch));
 }
 
 void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
 {
-    gridWidth_ = tilesAlong(width);
-    gridHeight_ = tilesAlong(height);
+    gridWidth_ = tilesAlong(width, kClusterTileSize);
+    gridHeight_ = tilesAlong(height, kClusterTileSize);
     const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
     clusterCount_ = tiles * static_cast<std::uint32_t>(slices_);
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
@@ -66,9 +63,9 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
-    const std::uint32_t words = std::max(wordsFor(largestBatch), 1u);
+    const std::size_t words = std::max<std::size_t>(maskWordsFor(largestBatch), 1);
     const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * words;
-    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * wordsFor(words);
+    const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * maskWordsFor(words);
     if (!masks_ || masks_.size() < maskBytes)
         masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
     if (!summaries_ || summaries_.size() < summaryBytes)
@@ -122,14 +119,9 @@ void ClusterGrid::assignLights(const LightBatch& batch)
     // build's masks, 1,799 values off forward's in a test of it).
     // Cleared by the GL: on llvmpipe a plain memset of the batch's words beats a compute pass
     // that clears only the occupied clusters' words.
-    const std::uint32_t words = wordsFor(batch.size());
-    const std::uint32_t zero = 0;
-    glClearNamedBufferSubData(masks_.id(), GL_R32UI, 0,
-                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * words), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
-    glClearNamedBufferSubData(summaries_.id(), GL_R32UI, 0,
-                              static_cast<GLsizeiptr>(sizeof(std::uint32_t) * clusterCount_ * wordsFor(words)),
-                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    const std::size_t words = maskWordsFor(batch.size());
+    masks_.clearToZero(sizeof(std::uint32_t) * clusterCount_ * words);
+    summaries_.clearToZero(sizeof(std::uint32_t) * clusterCount_ * maskWordsFor(words));
     // The clears are GL commands before the dispatch: its shaders see them without a barrier.
     bind();
     dispatchLightTiles(assign_, batch, gridWidth_, gridHeight_);

@@ -4,6 +4,8 @@
 // (light, band of tile rows), the invocations sharing out the light's tiles.
 #pragma once
 
+#include <cstddef>
+
 #include "gl/Program.h"
 #include "render/LightBatches.h"
 
@@ -15,6 +17,12 @@ inline constexpr int kLightTileLanes = 8;
 // A band of tile rows has at most this many tiles, so an invocation visits at most 1,024.
 inline constexpr int kTilesPerBand = 1024 * kLightTileLanes;
 inline constexpr int kRowsPerBandLocation = 41;  // lib/light_tiles.glsl's rowsPerBand
+
+// The tiles of `tileSize` pixels across `pixels`, the last one cut at the image's edge.
+constexpr int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize - 1) / tileSize; }
+// The 32-bit words of a bit mask over `lights` lights (shaders/lib/light_batch.glsl's
+// lightBatchMaskWords for a batch of that many); of its summary, maskWordsFor(words).
+constexpr std::size_t maskWordsFor(std::size_t lights) { return (lights + 31) / 32; }
 
 // LIGHT_TILE_LANES and LIGHT_TILE_ROWS_PER_BAND_LOCATION.
 gl::Defines lightTileDefines();

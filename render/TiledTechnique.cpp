@@ -16,10 +16,6 @@ namespace {
 constexpr int kCoarseTileSizeLocation = 42;  // lib/coarse_tiles.glsl's coarseTileSize
 constexpr GLuint kCoarseMasksBinding = bindings::COARSE_TILE_MASKS_BUFFER_BINDING;
 
-std::size_t wordsFor(std::uint32_t bits) { return (bits + 31) / 32; }
-
-int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize - 1) / tileSize; }
-
 gl::Defines coarseTileDefines(gl::Defines defines)
 {
     defines.emplace_back("COARSE_TILE_SIZE_LOCATION", std::to_string(kCoarseTileSizeLocation));
@@ -48,7 +44,7 @@ int coarseTileSizeFor(int width, int height)
     int size = kCoarseTileSize;
     const auto maskBytes = [&] {
         return static_cast<std::size_t>(tilesAlong(width, size)) * static_cast<std::size_t>(tilesAlong(height, size)) *
-               wordsFor(kLightsPerBatch) * sizeof(std::uint32_t);
+               maskWordsFor(kLightsPerBatch) * sizeof(std::uint32_t);
     };
     while (maskBytes() > kCoarseMaskBudgetBytes)
         size *= 2;
@@ -73,15 +69,12 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
     const int coarseY = tilesAlong(targets.height, coarseSize);
     const auto groups = [](int pixels) { return static_cast<GLuint>(tilesAlong(pixels, kTiledTileSize)); };
     for (const LightBatch& batch : batches) {
-        const auto maskBytes =
-            static_cast<GLsizeiptr>(static_cast<std::size_t>(coarseX) * static_cast<std::size_t>(coarseY) *
-                                    wordsFor(batch.size()) * sizeof(std::uint32_t));
+        const std::size_t maskBytes = static_cast<std::size_t>(coarseX) * static_cast<std::size_t>(coarseY) *
+                                      maskWordsFor(batch.size()) * sizeof(std::uint32_t);
         passes.run({.name = "coarse tiles", .storage = Resource::LightGrid, .writes = Resource::LightGrid}, [&] {
-            if (!coarseMasks_ || coarseMasks_.size() < static_cast<std::size_t>(maskBytes))
-                coarseMasks_ = gl::Buffer("tiled coarse tile masks", static_cast<std::size_t>(maskBytes), nullptr, 0);
-            const std::uint32_t zero = 0;
-            glClearNamedBufferSubData(coarseMasks_.id(), GL_R32UI, 0, maskBytes, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                                      &zero);
+            if (!coarseMasks_ || coarseMasks_.size() < maskBytes)
+                coarseMasks_ = gl::Buffer("tiled coarse tile masks", maskBytes, nullptr, 0);
+            coarseMasks_.clearToZero(maskBytes);
             coarseMasks_.bindBase(GL_SHADER_STORAGE_BUFFER, kCoarseMasksBinding);
             coarse_.set(kCoarseTileSizeLocation, static_cast<unsigned>(coarseSize));
             dispatchLightTiles(coarse_, batch, coarseX, coarseY);
