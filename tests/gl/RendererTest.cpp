@@ -2,6 +2,8 @@
 // variants it makes and keeps, and its camera.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "GlContextTest.h"
 #include "core/Error.h"
 #include "gl/Driver.h"
@@ -142,6 +144,45 @@ TEST_F(RendererTest, LightTexelsWindowsAndTheStorageBufferGiveTheSameImage)
             test::expectImagesNear(renderer.readColour(), texels,
                                    sameBatches ? test::Tolerance{} : test::kAgreementTolerance, what);
         }
+    }
+}
+
+// The same at the size users render and past 65,536 lights: 70,000 small lights over a wide
+// floor at 1280x720, nine light batches of the culling techniques, whose light indices run
+// past 16 bits (the coarse tiles of tiled, the cluster masks, tiled-quads' tile points). The
+// texels and the storage buffer give the same image bit for bit, and the three culling
+// techniques give the same image as one another within the agreement tolerance (each keeps
+// the lights of a pixel in its own batches and tile runs, so the sums are grouped
+// differently). Forward, the reference, is out of reach at this size: 70,000 lights for
+// every fragment (TechniqueAgreementTest compares each of them with it on smaller scenes).
+TEST_F(RendererTest, LightSourcesAndCullingTechniquesAgreePastSixtyFiveThousandLights)
+{
+    const Scene scene = parseScene(R"({
+        "camera": {"eye": [0, 70, 55], "look_at": [0, 0, 0], "fov_y": 60, "far": 400},
+        "light_sets": [{"count": 70000, "seed": 11, "type": "point", "min": [-50, 0.2, -50],
+                        "max": [50, 1.5, 50], "range": [0.5, 1.5], "intensity": [0.05, 0.2]}],
+        "objects": [
+            {"mesh": {"primitive": "plane", "size": [100, 100]}},
+            {"mesh": {"primitive": "sphere", "radius": 6}, "transform": {"translate": [5, 6, 0]}}]})",
+                                   "<renderer test>", ".");
+    RendererDesc desc{.width = 1280, .height = 720};
+    Renderer renderer(scene, expandLights(scene), desc);
+    if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
+        GTEST_SKIP() << "the driver has no light texels (render/LightBatches.h)";
+    std::optional<Image> clustered;
+    for (const char* technique : {"clustered", "tiled", "tiled-quads"}) {
+        desc.lightTexels = true;
+        renderer.apply(desc);
+        renderer.renderFrame(technique, ViewMode::Final);
+        const Image texels = renderer.readColour();
+        desc.lightTexels = false;
+        renderer.apply(desc);
+        renderer.renderFrame(technique, ViewMode::Final);
+        test::expectImagesNear(renderer.readColour(), texels, test::Tolerance{}, technique);
+        if (!clustered)
+            clustered = texels;
+        else
+            test::expectImagesNear(*clustered, texels, test::kAgreementTolerance, technique);
     }
 }
 
