@@ -1,7 +1,8 @@
 #include "render/LightTiles.h"
 
-#include <algorithm>
 #include <string>
+
+#include "core/Error.h"
 
 namespace manylights {
 
@@ -13,7 +14,10 @@ gl::Defines lightTileDefines()
 
 void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int gridWidth, int gridHeight)
 {
-    const auto rowsPerBand = static_cast<std::uint32_t>(std::max(1, kTilesPerBand / gridWidth));
+    // A band of whole rows stays within kTilesPerBand tiles, the shaders' loop bound: a row
+    // never has more (32768 pixels are 2,048 tiles of 16).
+    ML_ASSERT(gridWidth >= 1 && gridWidth <= kTilesPerBand);
+    const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / gridWidth);
     const auto bands = (static_cast<std::uint32_t>(gridHeight) + rowsPerBand - 1) / rowsPerBand;
     setLightBatch(program, batch);
     program.set(kRowsPerBandLocation, rowsPerBand);
