@@ -1,4 +1,5 @@
 #version 450 core
+#define FRAME_VALUES_IN  // from volume.vert (lib/frame.glsl says why)
 // One light's contribution at the pixel's surface, added by blending into the lit image.
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"

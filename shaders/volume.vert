@@ -1,4 +1,5 @@
 #version 450 core
+#define FRAME_VALUES_OUT  // for volume.frag (lib/frame.glsl)
 // One instance per light: the bounding sphere or cone (render/LightVolumes.h) placed and
 // scaled from the light buffer, or, for unbounded lights, a triangle covering the screen.
 #include "lib/bindings.glsl"
@@ -26,6 +27,7 @@ void main()
     lightIndex = volumeLights[firstVolumeLight + uint(gl_InstanceID)];
     GpuLight light = lights[lightIndex];
     volumeLight = light;
+    passFrameValues();
     vec3 centre = light.positionRadius.xyz;
     float radius = light.positionRadius.w;
     if (volumeShape == SHAPE_SPHERE) {

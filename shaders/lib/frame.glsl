@@ -22,3 +22,54 @@ float viewDepth(vec3 worldPosition)
 {
     return dot(worldPosition - frame.eye.xyz, frame.viewAxis.xyz);
 }
+
+// The frame's values that shaders read for every pixel: the eye, the scale of the pixel's
+// ray (lib/gbuffer_position.glsl: 1 / viewport size, then the tangents of the half field of
+// view), the view's inverse rotation and the viewer's diffuse and specular switches.
+//
+// The light volumes' fragment shader runs once per (pixel, light) pair, so there their
+// vertex shader passes these on as flat varyings: volume.vert defines FRAME_VALUES_OUT and
+// calls passFrameValues(), volume.frag defines FRAME_VALUES_IN. On llvmpipe a fragment
+// shader loads each value of a uniform block again for every 8 fragments, about 20 times
+// what a flat input costs (docs/performance.md: the 12 values of the ray cost a pass of 128
+// screen-filling volumes 66 ms, 12 flat inputs 3 ms). The varyings are copies of the
+// block's values, so the image is the same bit for bit.
+struct FrameValues {
+    vec3 eye;
+    vec4 pixelRayScale;
+    mat3 inverseViewRotation;
+    vec2 diffuseSpecularSwitches;
+};
+
+// Six locations from here; below them are those of the shaders' own varyings.
+const int FRAME_VALUES_LOCATION = 16;
+
+FrameValues frameValuesFromBlock()
+{
+    // frame.view is a rigid transform, so its inverse rotation is its transpose.
+    return FrameValues(frame.eye.xyz, vec4(frame.viewport.zw, frame.projection.xy), transpose(mat3(frame.view)),
+                       frame.terms.yz);
+}
+
+#ifdef FRAME_VALUES_IN
+layout(location = FRAME_VALUES_LOCATION) flat in FrameValues frameValuesInput;
+
+FrameValues frameValues()
+{
+    return frameValuesInput;
+}
+#else
+FrameValues frameValues()
+{
+    return frameValuesFromBlock();
+}
+#endif
+
+#ifdef FRAME_VALUES_OUT
+layout(location = FRAME_VALUES_LOCATION) flat out FrameValues frameValuesOutput;
+
+void passFrameValues()
+{
+    frameValuesOutput = frameValuesFromBlock();
+}
+#endif

@@ -10,18 +10,18 @@
 layout(binding = GBUFFER_POSITION_UNIT) uniform sampler2D gViewDepth;
 
 // The world-space direction through the centre of `pixel` whose component along the view
-// axis is 1, built from the camera of lib/frame.glsl (frame.view is a rigid transform, so
-// its inverse rotation is its transpose).
+// axis is 1, built from the camera of lib/frame.glsl.
 vec3 pixelRay(ivec2 pixel)
 {
-    vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-    vec3 viewSpace = vec3(ndc * frame.projection.xy, -1.0);
-    return transpose(mat3(frame.view)) * viewSpace;
+    FrameValues values = frameValues();
+    vec2 ndc = (vec2(pixel) + 0.5) * values.pixelRayScale.xy * 2.0 - 1.0;
+    vec3 viewSpace = vec3(ndc * values.pixelRayScale.zw, -1.0);
+    return values.inverseViewRotation * viewSpace;
 }
 
 vec3 gbufferPosition(ivec2 pixel)
 {
-    return frame.eye.xyz + pixelRay(pixel) * texelFetch(gViewDepth, pixel, 0).r;
+    return frameValues().eye + pixelRay(pixel) * texelFetch(gViewDepth, pixel, 0).r;
 }
 #else
 // Seed layout: the position is stored as it is.

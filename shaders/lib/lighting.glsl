@@ -23,8 +23,9 @@ struct Surface {
 
 Surface withTermSwitches(Surface s)
 {
-    s.switchedDiffuse = frame.terms.y * s.diffuse;
-    s.switchedSpecular = frame.terms.z * s.specular;
+    vec2 switches = frameValues().diffuseSpecularSwitches;
+    s.switchedDiffuse = switches.x * s.diffuse;
+    s.switchedSpecular = switches.y * s.specular;
     return s;
 }
 
@@ -131,5 +132,5 @@ void recordLightEvaluations(uint count)
 
 vec3 viewVector(vec3 position)
 {
-    return normalize(frame.eye.xyz - position);
+    return normalize(frameValues().eye - position);
 }
