@@ -572,7 +572,10 @@ MaterialVariant GpuScene::materialVariant(const Material& material, const Materi
         (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
         // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
         (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
-        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) | (isTransparent(material) ? kBlendBit : 0));
+        (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) | (isTransparent(material) ? kBlendBit : 0) |
+        (std::ranges::any_of(material.uvTransforms, [](const glm::mat3& m) { return m != glm::mat3{1.0f}; })
+             ? kUvTransformsBit
+             : 0));
 }
 
 GpuScene::FaceState GpuScene::faceStateOf(const DrawItem& draw)

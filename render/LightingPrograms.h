@@ -80,6 +80,7 @@ inline constexpr MaterialVariant kSpecularTintBit = 128;   // Material::specular
 inline constexpr MaterialVariant kFlipBackFacesBit = 256;  // Sides::BothFlipped
 inline constexpr MaterialVariant kBlendBit = 512;          // AlphaMode::Blend: the coverage is the opacity
 inline constexpr MaterialVariant kOpacityMapBit = 1024;    // Material::opacityMap
+inline constexpr MaterialVariant kUvTransformsBit = 2048;  // a Material::uvTransforms other than the identity
 // The bits that mean a texture is bound per draw (such draws are not instanced).
 inline constexpr MaterialVariant kTextureBits =
     kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit | kOpacityMapBit;

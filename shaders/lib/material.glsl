@@ -12,7 +12,7 @@ layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
 // 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
-// with the reversed normal, 9 blended, 10 opacity map (render/LightingPrograms.h:
+// with the reversed normal, 9 blended, 10 opacity map, 11 uv transforms (render/LightingPrograms.h:
 // MaterialVariant). A missing map leaves
 // the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
 // sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
@@ -59,6 +59,19 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec2 uv;
 layout(location = 3) in vec4 worldTangent;  // xyz tangent, w handedness (scene/Tangents.h)
 
+// The uv a map is sampled at: its transform times (u, v, 1). A material whose transforms are all
+// the identity (variant bit 11 clear) takes uv as it is, which the product would give exactly:
+// on llvmpipe a fragment shader loads a uniform's values again for every 8 fragments, and the
+// two maps' transforms of a typical OBJ material cost the G-buffer pass 2 ms (docs/performance.md).
+vec2 mapUv(mat3x2 transform)
+{
+#if (MATERIAL_VARIANT & 2048) != 0
+    return transform * vec3(uv, 1.0);
+#else
+    return uv;
+#endif
+}
+
 const int kHasDiffuseMap = 1;
 const int kHasSpecularMap = 2;
 const int kHasNormalMap = 4;
@@ -80,7 +93,7 @@ vec3 normalMapped(vec3 N)
         return N;
     T = normalize(T);
     vec3 B = (worldTangent.w < 0.0 ? -1.0 : 1.0) * cross(N, T);
-    vec3 t = texture(normalMap, normalUvTransform * vec3(uv, 1.0)).xyz * 2.0 - 1.0;
+    vec3 t = texture(normalMap, mapUv(normalUvTransform)).xyz * 2.0 - 1.0;
     t.xy *= materialNormalScale;
     vec3 mapped = T * t.x + B * t.y + N * t.z;
     return dot(mapped, mapped) > 0.0 ? normalize(mapped) : N;
@@ -116,12 +129,12 @@ Surface meshSurface()
 #endif
     }
     if ((materialVariant & kHasDiffuseMap) != 0) {
-        vec4 texel = texture(diffuseMap, diffuseUvTransform * vec3(uv, 1.0));
+        vec4 texel = texture(diffuseMap, mapUv(diffuseUvTransform));
         base *= texel.rgb;
         coverage *= texel.a;
     }
     if ((materialVariant & kHasOpacityMap) != 0)
-        coverage *= texture(opacityMap, opacityUvTransform * vec3(uv, 1.0)).r;
+        coverage *= texture(opacityMap, mapUv(opacityUvTransform)).r;
     // glTF alphaMode MASK: fully there at or above the cutoff, absent below it. The same test
     // cuts the shadow casters (shaders/shadow_depth.frag).
 #if (MATERIAL_VARIANT & 32) != 0
@@ -132,14 +145,14 @@ Surface meshSurface()
     s.diffuse = materialDiffuse * base;
     s.specular = materialSpecular;
     if ((materialVariant & kHasSpecularMap) != 0)
-        s.specular *= texture(specularMap, specularUvTransform * vec3(uv, 1.0)).rgb;
+        s.specular *= texture(specularMap, mapUv(specularUvTransform)).rgb;
     if ((materialVariant & kHasSpecularTint) != 0)
         s.specular += materialSpecularTint * base;
     s.shininess = materialShininess;
     if ((materialVariant & kHasMetallicRoughnessMap) != 0) {
         // The loader's mapping (scene/Scene.h Material) per texel: diffuse + tint is the base
         // colour, the factors times the texel are this point's metallic and roughness.
-        vec2 roughnessMetallic = texture(specularMap, specularUvTransform * vec3(uv, 1.0)).gb;
+        vec2 roughnessMetallic = texture(specularMap, mapUv(specularUvTransform)).gb;
         float metallic = materialMetallicRoughness.x * roughnessMetallic.y;
         vec3 baseColour = (materialDiffuse + materialSpecularTint) * base;
         s.diffuse = baseColour * (1.0 - metallic);
@@ -155,6 +168,6 @@ Surface meshSurface()
         s.normal = -s.normal;
     s.emissive = materialEmissive;
     if ((materialVariant & kHasEmissiveMap) != 0)
-        s.emissive *= texture(emissiveMap, emissiveUvTransform * vec3(uv, 1.0)).rgb;
+        s.emissive *= texture(emissiveMap, mapUv(emissiveUvTransform)).rgb;
     return withTermSwitches(s);
 }
