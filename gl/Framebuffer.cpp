@@ -13,7 +13,7 @@ GLuint createFramebuffer()
 }
 }  // namespace
 
-Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth)
+Framebuffer::Framebuffer(std::string_view label, std::span<const Texture2D* const> colour, const Texture2D* depth)
     : GlObject(createFramebuffer())
 {
     setLabel(GL_FRAMEBUFFER, id(), label);
@@ -21,6 +21,10 @@ Framebuffer::Framebuffer(std::string_view label, std::initializer_list<const Tex
     GLenum attachment = GL_COLOR_ATTACHMENT0;
     for (const Texture2D* texture : colour) {
         glNamedFramebufferTexture(id(), attachment, texture->id(), 0);
+        GLint componentType = GL_NONE;
+        glGetNamedFramebufferAttachmentParameteriv(id(), attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
+                                                   &componentType);
+        componentTypes_.push_back(componentType);
         drawBuffers.push_back(attachment++);
     }
     glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
@@ -46,6 +50,27 @@ void Framebuffer::attachDepthLayer(GLuint texture, int layer) const
 void Framebuffer::clearColour(int attachment, const float rgba[4]) const
 {
     glClearNamedFramebufferfv(id(), GL_COLOR, attachment, rgba);
+}
+
+void Framebuffer::clearColourToZero(int attachment) const
+{
+    // Clearing an integer attachment with the float clear is undefined (GL 4.5, 17.4.3.1).
+    switch (componentTypes_.at(static_cast<std::size_t>(attachment))) {
+    case GL_UNSIGNED_INT: {
+        const GLuint zero[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferuiv(id(), GL_COLOR, attachment, zero);
+        break;
+    }
+    case GL_INT: {
+        const GLint zero[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferiv(id(), GL_COLOR, attachment, zero);
+        break;
+    }
+    default: {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        clearColour(attachment, zero);
+    }
+    }
 }
 
 void Framebuffer::clearDepthStencil(float depth, int stencil) const

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -20,7 +21,11 @@ public:
     Framebuffer() = default;
     // Colour attachments in order (GL_COLOR_ATTACHMENT0 + i, all enabled as draw buffers) and
     // an optional depth or depth-stencil texture. Asserts completeness.
-    Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth);
+    Framebuffer(std::string_view label, std::span<const Texture2D* const> colour, const Texture2D* depth);
+    Framebuffer(std::string_view label, std::initializer_list<const Texture2D*> colour, const Texture2D* depth)
+        : Framebuffer(label, std::span<const Texture2D* const>(colour.begin(), colour.size()), depth)
+    {
+    }
     // A depth-only framebuffer whose attachment changes between passes (attachDepthLayer):
     // no colour buffers, nothing attached yet.
     explicit Framebuffer(std::string_view label);
@@ -30,7 +35,14 @@ public:
 
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
     void clearColour(int attachment, const float rgba[4]) const;
+    // Zero in every channel, for attachments of any format: integer formats take the unsigned
+    // integer clear, the others the float clear.
+    void clearColourToZero(int attachment) const;
     void clearDepthStencil(float depth, int stencil) const;
+
+private:
+    // Each colour attachment's GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, for clearColourToZero.
+    std::vector<GLint> componentTypes_;
 };
 
 }  // namespace manylights::gl

@@ -7,14 +7,20 @@
 namespace manylights {
 
 namespace {
-std::array<gl::Texture2D, kSeedGBufferTargets.size()> makeTargets(int width, int height, GBufferLayout layout)
+std::vector<gl::Texture2D> makeTargets(int width, int height, GBufferLayout layout)
 {
-    const auto& layoutTargets = gbufferColourTargets(layout);
-    std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets;
-    for (std::size_t i = 0; i < targets.size(); ++i)
-        targets[i] = gl::Texture2D(std::string("gbuffer ") + std::string(layoutTargets[i].name),
-                                   layoutTargets[i].format, width, height);
+    std::vector<gl::Texture2D> targets;
+    for (const GBufferTarget& target : gbufferColourTargets(layout))
+        targets.emplace_back(std::string("gbuffer ") + std::string(target.name), target.format, width, height);
     return targets;
+}
+
+std::vector<const gl::Texture2D*> addressesOf(const std::vector<gl::Texture2D>& textures)
+{
+    std::vector<const gl::Texture2D*> addresses;
+    for (const gl::Texture2D& texture : textures)
+        addresses.push_back(&texture);
+    return addresses;
 }
 }  // namespace
 
@@ -39,7 +45,7 @@ gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines)
 GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBufferLayout layout)
     : layout_(layout),
       targets_(makeTargets(width, height, layout)),
-      framebuffer_("gbuffer", {&targets_[0], &targets_[1], &targets_[2], &targets_[3], &targets_[4]}, &depthStencil),
+      framebuffer_("gbuffer", addressesOf(targets_), &depthStencil),
       programs_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                 gbufferDefines(layout))
 {
@@ -63,9 +69,8 @@ void GBuffer::fill(const GpuScene& scene) const
 
 void GBuffer::clearAndDraw(const GpuScene& scene) const
 {
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < static_cast<int>(targets_.size()); ++i)
-        framebuffer_.clearColour(i, zero);
+        framebuffer_.clearColourToZero(i);
     framebuffer_.clearDepthStencil(1.0f, 0);
     // The pass evaluates no light: the variants differ only in the material's maps.
     scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
@@ -75,10 +80,9 @@ void GBuffer::clearAndDraw(const GpuScene& scene) const
 
 void GBuffer::bindForReading() const
 {
-    // Units GBUFFER_POSITION_UNIT (0) to GBUFFER_EMISSIVE_UNIT (4), in target order.
-    static_assert(bindings::GBUFFER_POSITION_UNIT == 0 && bindings::GBUFFER_EMISSIVE_UNIT == 4);
+    const std::span<const GBufferTarget> layoutTargets = gbufferColourTargets(layout_);
     for (std::size_t i = 0; i < targets_.size(); ++i)
-        targets_[i].bindUnit(static_cast<GLuint>(bindings::GBUFFER_POSITION_UNIT + static_cast<int>(i)));
+        targets_[i].bindUnit(static_cast<GLuint>(layoutTargets[i].unit));
 }
 
 }  // namespace manylights

@@ -5,11 +5,14 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string_view>
+#include <vector>
 
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "render/Bindings.h"
 #include "render/LightingPrograms.h"
 
 namespace manylights {
@@ -21,6 +24,7 @@ struct GBufferTarget {
     std::string_view name;
     GLenum format;
     int bytesPerPixel;
+    int unit;  // the texture unit the lighting passes read it from (shaders/lib/bindings.glsl)
     std::string_view contents;
 };
 
@@ -44,11 +48,11 @@ gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines = {});
 // error is amplified by specular powers. This explicit layout is for teaching and reference;
 // its bytes per pixel are the price (docs/gbuffer.md).
 inline constexpr std::array<GBufferTarget, 5> kSeedGBufferTargets = {{
-    {"position_shininess", GL_RGBA32F, 16, "world-space position xyz, shininess in w"},
-    {"normal", GL_RGBA32F, 16, "world-space unit normal xyz, w unused"},
-    {"diffuse", GL_RGBA32F, 16, "kd rgb, w unused"},
-    {"specular", GL_RGBA32F, 16, "ks rgb, w unused"},
-    {"emissive", GL_RGBA32F, 16, "ke rgb (may exceed 1), w unused"},
+    {"position_shininess", GL_RGBA32F, 16, bindings::GBUFFER_POSITION_UNIT, "world-space position xyz, shininess in w"},
+    {"normal", GL_RGBA32F, 16, bindings::GBUFFER_NORMAL_UNIT, "world-space unit normal xyz, w unused"},
+    {"diffuse", GL_RGBA32F, 16, bindings::GBUFFER_DIFFUSE_UNIT, "kd rgb, w unused"},
+    {"specular", GL_RGBA32F, 16, bindings::GBUFFER_SPECULAR_UNIT, "ks rgb, w unused"},
+    {"emissive", GL_RGBA32F, 16, bindings::GBUFFER_EMISSIVE_UNIT, "ke rgb (may exceed 1), w unused"},
 }};
 
 // Compact layout (the default; docs/gbuffer.md derives each precision and the test tolerances):
@@ -62,21 +66,28 @@ inline constexpr std::array<GBufferTarget, 5> kSeedGBufferTargets = {{
 //   of log2(s) / 16 split over the two alpha bytes (s in [1, 65536], ≤ 8.5e-5 relative).
 // - ke may exceed 1 (light markers), so it stays floating point: half floats, ≤ 2^-10
 //   relative (llvmpipe truncates). R11G11B10F would save 4 bytes at 2^-5 relative in blue.
-inline constexpr std::array<GBufferTarget, 5> kCompactGBufferTargets = {{
-    {"view_depth", GL_R32F, 4, "view-space depth along the view axis; position = eye + ray · depth"},
-    {"normal", GL_RG16, 4, "octahedral-encoded world-space unit normal"},
-    {"diffuse_shininess_high", GL_RGBA8, 4, "kd rgb; high byte of the 16-bit log2 shininess code"},
-    {"specular_shininess_low", GL_RGBA8, 4, "ks rgb; low byte of the shininess code"},
-    {"emissive", GL_RGBA16F, 8, "ke rgb as half floats (may exceed 1); a unused"},
+// The first four are packed by the geometry pass into one RGBA32UI texel (shaders/gbuffer.frag,
+// with the unorm conversions of GLSL's packUnorm*, which round as a unorm target does): every
+// read of a surface is then one texel fetch instead of four, and the geometry pass writes two
+// targets instead of five, on llvmpipe a cost per target and per fetch rather than per byte
+// (docs/performance.md).
+inline constexpr std::array<GBufferTarget, 2> kCompactGBufferTargets = {{
+    {"surface", GL_RGBA32UI, 16, bindings::GBUFFER_SURFACE_UNIT,
+     "x: view-space depth along the view axis (float bits; position = eye + ray · depth); y: octahedral-encoded "
+     "world-space unit normal (2 x 16-bit unorm); z: kd rgb and the high byte of the 16-bit log2 shininess code "
+     "(4 x 8-bit unorm); w: ks rgb and the code's low byte"},
+    {"emissive", GL_RGBA16F, 8, bindings::GBUFFER_EMISSIVE_UNIT, "ke rgb as half floats (may exceed 1); a unused"},
 }};
 
-constexpr const std::array<GBufferTarget, 5>& gbufferColourTargets(GBufferLayout layout)
+constexpr std::span<const GBufferTarget> gbufferColourTargets(GBufferLayout layout)
 {
-    return layout == GBufferLayout::Seed ? kSeedGBufferTargets : kCompactGBufferTargets;
+    if (layout == GBufferLayout::Seed)
+        return kSeedGBufferTargets;
+    return kCompactGBufferTargets;
 }
 
 // Depth and stencil (the stencil serves the stencil-volume technique); both layouts share it.
-inline constexpr GBufferTarget kDepthStencilTarget = {"depth_stencil", GL_DEPTH24_STENCIL8, 4,
+inline constexpr GBufferTarget kDepthStencilTarget = {"depth_stencil", GL_DEPTH24_STENCIL8, 4, -1,
                                                       "24-bit depth, 8-bit stencil"};
 
 constexpr int gbufferBytesPerPixel(GBufferLayout layout)
@@ -105,7 +116,7 @@ public:
     void fill(const GpuScene& scene) const;
     // The targets no longer hold the current frame: the Renderer calls it as a frame begins.
     void invalidate() { current_ = false; }
-    // Binds the colour targets to texture units 0..4 (shaders/lib/gbuffer.glsl).
+    // Binds each colour target to its texture unit (shaders/lib/gbuffer.glsl).
     void bindForReading() const;
     const gl::Framebuffer& framebuffer() const { return framebuffer_; }
 
@@ -113,7 +124,7 @@ private:
     void clearAndDraw(const GpuScene& scene) const;
 
     GBufferLayout layout_;
-    std::array<gl::Texture2D, kSeedGBufferTargets.size()> targets_;
+    std::vector<gl::Texture2D> targets_;  // the layout's colour targets, in attachment order
     gl::Framebuffer framebuffer_;
     LightingProgram programs_;  // one per set of material maps
     bool current_ = false;      // filled since the last invalidate()

@@ -5,21 +5,22 @@
 #include "lib/material.glsl"
 #include "lib/gbuffer_packing.glsl"
 
-layout(location = 0) out vec4 outPositionShininess;  // compact: view depth in r
+#ifdef GBUFFER_COMPACT
+layout(location = 0) out uvec4 outSurface;
+layout(location = 1) out vec4 outEmissive;
+#else
+layout(location = 0) out vec4 outPositionShininess;
 layout(location = 1) out vec4 outNormal;
 layout(location = 2) out vec4 outDiffuse;
 layout(location = 3) out vec4 outSpecular;
 layout(location = 4) out vec4 outEmissive;
+#endif
 
 void main()
 {
     Surface s = meshSurface();
 #ifdef GBUFFER_COMPACT
-    vec2 shininessBytes = encodeShininess(s.shininess);
-    outPositionShininess = vec4(viewDepth(s.position), 0.0, 0.0, 0.0);
-    outNormal = vec4(octahedralEncode(s.normal), 0.0, 0.0);
-    outDiffuse = vec4(s.diffuse, shininessBytes.x);
-    outSpecular = vec4(s.specular, shininessBytes.y);
+    outSurface = packSurface(viewDepth(s.position), s.normal, s.diffuse, s.specular, s.shininess);
 #else
     outPositionShininess = vec4(s.position, s.shininess);
     outNormal = vec4(s.normal, 0.0);

@@ -27,11 +27,12 @@ const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl Shadow
 const int SSAO_SAMPLES_BUFFER_BINDING = 11;           // ssao.comp SsaoSamples
 const int SHADOW_SLOTS_BUFFER_BINDING = 12;           // lib/shadows.glsl ShadowSlots
 
-// Texture units. 0-4 are the G-buffer's targets in order (render/GBuffer.h).
-const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess / gViewDepth
-const int GBUFFER_NORMAL_UNIT = 1;    // lib/gbuffer.glsl gNormal
-const int GBUFFER_DIFFUSE_UNIT = 2;   // lib/gbuffer.glsl gDiffuse
-const int GBUFFER_SPECULAR_UNIT = 3;  // lib/gbuffer.glsl gSpecular
+// Texture units. 0-4 are the G-buffer's targets (render/GBuffer.h: each target's unit).
+const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
+const int GBUFFER_SURFACE_UNIT = 0;   // lib/gbuffer_position.glsl gSurface (compact layout)
+const int GBUFFER_NORMAL_UNIT = 1;    // lib/gbuffer.glsl gNormal (seed layout)
+const int GBUFFER_DIFFUSE_UNIT = 2;   // lib/gbuffer.glsl gDiffuse (seed layout)
+const int GBUFFER_SPECULAR_UNIT = 3;  // lib/gbuffer.glsl gSpecular (seed layout)
 const int GBUFFER_EMISSIVE_UNIT = 4;  // lib/gbuffer.glsl gEmissive
 const int DISPLAY_SOURCE_UNIT = 0;    // display.frag litImage, lib/fxaa_edge.glsl source, log_luminance.comp litImage
 const int LUMINANCE_DEPTH_UNIT = 1;   // log_luminance.comp sceneDepth

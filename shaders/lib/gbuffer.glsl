@@ -5,23 +5,27 @@
 #include "lib/gbuffer_position.glsl"
 #include "lib/gbuffer_packing.glsl"
 
+#ifndef GBUFFER_COMPACT
 layout(binding = GBUFFER_NORMAL_UNIT) uniform sampler2D gNormal;
 layout(binding = GBUFFER_DIFFUSE_UNIT) uniform sampler2D gDiffuse;
 layout(binding = GBUFFER_SPECULAR_UNIT) uniform sampler2D gSpecular;
+#endif
 layout(binding = GBUFFER_EMISSIVE_UNIT) uniform sampler2D gEmissive;
 
 Surface gbufferSurface(ivec2 pixel)
 {
     Surface s;
-    s.position = gbufferPosition(pixel);
 #ifdef GBUFFER_COMPACT
-    vec4 diffuseShininessHigh = texelFetch(gDiffuse, pixel, 0);
-    vec4 specularShininessLow = texelFetch(gSpecular, pixel, 0);
-    s.normal = octahedralDecode(texelFetch(gNormal, pixel, 0).xy);
-    s.diffuse = diffuseShininessHigh.rgb;
-    s.specular = specularShininessLow.rgb;
-    s.shininess = decodeShininess(diffuseShininessHigh.a, specularShininessLow.a);
+    // One texel fetch for the whole surface: llvmpipe's cost per fetch, not per byte, is what
+    // a light volume's fragment pays for every (pixel, light) pair (docs/gbuffer.md).
+    uvec4 stored = texelFetch(gSurface, pixel, 0);
+    s.position = gbufferPositionAtDepth(pixel, uintBitsToFloat(stored.x));
+    s.normal = octahedralDecode(unpackUnorm2x16(stored.y));
+    s.diffuse = unpackUnorm4x8(stored.z).rgb;
+    s.specular = unpackUnorm4x8(stored.w).rgb;
+    s.shininess = decodeShininess((stored.z >> 24u) << 8u | stored.w >> 24u);
 #else
+    s.position = gbufferPosition(pixel);
     s.normal = texelFetch(gNormal, pixel, 0).xyz;
     s.diffuse = texelFetch(gDiffuse, pixel, 0).rgb;
     s.specular = texelFetch(gSpecular, pixel, 0).rgb;

@@ -3,7 +3,7 @@
 
 // Octahedral normal encoding: the unit sphere projected onto the octahedron |x|+|y|+|z| = 1,
 // whose lower half is folded over the upper, gives a square [-1, 1]²; stored as unorm
-// (0.5·p + 0.5) in RG16. 16-bit steps of 2/65535 in p move the normal by at most ~3e-5 rad.
+// (0.5·p + 0.5) in two 16-bit unorms. 16-bit steps of 2/65535 in p move the normal by at most ~3e-5 rad.
 vec2 signNotZero(vec2 v)
 {
     return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
@@ -25,21 +25,30 @@ vec3 octahedralDecode(vec2 stored)
     return normalize(n);
 }
 
-// Shininess s ≥ 1 as a 16-bit code of log2(s) / 16 (s up to 65536), split into two unorm8
-// bytes (the alpha channels of the diffuse and specular targets). One code step is a factor
+// Shininess s ≥ 1 as a 16-bit code of log2(s) / 16 (s up to 65536), split into two bytes (the
+// top bytes of the surface texel's kd and ks words, where a unorm8 alpha would be). One code step is a factor
 // 2^(16/65535) in s: rounding changes s by ≤ 8.5e-5 relative, which moves (N·H)^s by at most
 // 8.5e-5 / e ≈ 3.1e-5 of ks · intensity (max over x of x^s·|ln x|·Δs is Δs/(e·s)).
 const float kShininessLog2Range = 16.0;
 
-vec2 encodeShininess(float shininess)
+uint encodeShininess(float shininess)
 {
-    float code = round(clamp(log2(max(shininess, 1.0)) / kShininessLog2Range, 0.0, 1.0) * 65535.0);
-    float high = floor(code / 256.0);
-    return vec2(high, code - 256.0 * high) / 255.0;
+    return uint(round(clamp(log2(max(shininess, 1.0)) / kShininessLog2Range, 0.0, 1.0) * 65535.0));
 }
 
-float decodeShininess(float highByte, float lowByte)
+float decodeShininess(uint code)
 {
-    float code = round(highByte * 255.0) * 256.0 + round(lowByte * 255.0);
-    return exp2(code / 65535.0 * kShininessLog2Range);
+    return exp2(float(code) / 65535.0 * kShininessLog2Range);
+}
+
+// The compact layout's surface texel (render/GBuffer.h: kCompactGBufferTargets): the view depth's
+// bits, the octahedral normal as two 16-bit unorms, kd and ks as three 8-bit unorms each with a
+// byte of the shininess code on top. packUnorm* round to nearest, as a unorm target's
+// conversion does.
+uvec4 packSurface(float viewDepth, vec3 normal, vec3 diffuse, vec3 specular, float shininess)
+{
+    uint code = encodeShininess(shininess);
+    return uvec4(floatBitsToUint(viewDepth), packUnorm2x16(octahedralEncode(normal)),
+                 packUnorm4x8(vec4(diffuse, 0.0)) | (code >> 8u) << 24u,
+                 packUnorm4x8(vec4(specular, 0.0)) | (code & 255u) << 24u);
 }

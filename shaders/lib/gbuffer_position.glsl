@@ -4,10 +4,11 @@
 #include "lib/frame.glsl"
 
 #ifdef GBUFFER_COMPACT
-// Compact layout: the view-space depth (distance along the view axis); the position is the
-// point at that depth on the ray through the pixel's centre, where the rasteriser evaluated
-// the forward shader's interpolated position too.
-layout(binding = GBUFFER_POSITION_UNIT) uniform sampler2D gViewDepth;
+// Compact layout: one RGBA32UI texel holds the whole surface (lib/gbuffer.glsl reads the rest
+// of it), its x the bits of the view-space depth (distance along the view axis); the position
+// is the point at that depth on the ray through the pixel's centre, where the rasteriser
+// evaluated the forward shader's interpolated position too.
+layout(binding = GBUFFER_SURFACE_UNIT) uniform usampler2D gSurface;
 
 // The world-space direction through the centre of `pixel` whose component along the view
 // axis is 1, built from the camera of lib/frame.glsl.
@@ -19,9 +20,15 @@ vec3 pixelRay(ivec2 pixel)
     return values.inverseViewRotation * viewSpace;
 }
 
+// The position at `pixel` from the view depth stored there.
+vec3 gbufferPositionAtDepth(ivec2 pixel, float viewDepth)
+{
+    return frameValues().eye + pixelRay(pixel) * viewDepth;
+}
+
 vec3 gbufferPosition(ivec2 pixel)
 {
-    return frameValues().eye + pixelRay(pixel) * texelFetch(gViewDepth, pixel, 0).r;
+    return gbufferPositionAtDepth(pixel, uintBitsToFloat(texelFetch(gSurface, pixel, 0).x));
 }
 #else
 // Seed layout: the position is stored as it is.

@@ -62,7 +62,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::StorageBlock, "SsaoSamples"}, SSAO_SAMPLES_BUFFER_BINDING},
         {{Kind::StorageBlock, "ShadowSlots"}, SHADOW_SLOTS_BUFFER_BINDING},
         {{Kind::Sampler, "gPositionShininess"}, GBUFFER_POSITION_UNIT},
-        {{Kind::Sampler, "gViewDepth"}, GBUFFER_POSITION_UNIT},
+        {{Kind::Sampler, "gSurface"}, GBUFFER_SURFACE_UNIT},
         {{Kind::Sampler, "gNormal"}, GBUFFER_NORMAL_UNIT},
         {{Kind::Sampler, "gDiffuse"}, GBUFFER_DIFFUSE_UNIT},
         {{Kind::Sampler, "gSpecular"}, GBUFFER_SPECULAR_UNIT},
