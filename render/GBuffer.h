@@ -60,17 +60,15 @@ inline constexpr std::array<GBufferTarget, 5> kSeedGBufferTargets = {{
 //   the pixel's ray give it back. The hardware depth (24-bit, non-linear) would lose ~1e-4 of
 //   a unit at 15 units from a 0.1 near plane, far more than float rounding, and a 32-bit float
 //   depth buffer has the same 2^-24 steps near 1; a linear float depth keeps ~1e-7 relative.
-// - The normal is octahedral-encoded in two 16-bit unorm channels (RG16 is colour-renderable
-//   in core GL, RG16_SNORM is not required to be): ≤ ~3e-5 rad of error.
+// - The normal is octahedral-encoded in two 16-bit unorms: ≤ ~3e-5 rad of error.
 // - kd and ks in 8-bit unorm (≤ 0.5/255 absolute per channel); the shininess as a 16-bit code
-//   of log2(s) / 16 split over the two alpha bytes (s in [1, 65536], ≤ 8.5e-5 relative).
+//   of log2(s) / 16, a byte on top of each (s in [1, 65536], ≤ 8.5e-5 relative).
 // - ke may exceed 1 (light markers), so it stays floating point: half floats, ≤ 2^-10
 //   relative (llvmpipe truncates). R11G11B10F would save 4 bytes at 2^-5 relative in blue.
-// The first four are packed by the geometry pass into one RGBA32UI texel (shaders/gbuffer.frag,
-// with the unorm conversions of GLSL's packUnorm*, which round as a unorm target does): every
-// read of a surface is then one texel fetch instead of four, and the geometry pass writes two
-// targets instead of five, on llvmpipe a cost per target and per fetch rather than per byte
-// (docs/performance.md).
+// All but ke are packed into one RGBA32UI texel (packSurface() in shaders/lib/gbuffer_packing.glsl)
+// rather than four targets of their own, with the same bits: every read of a surface is one
+// texel fetch instead of four, and llvmpipe's fetch costs per fetch, not per byte (the light
+// volumes read the surface once per (pixel, light) pair; docs/performance.md).
 inline constexpr std::array<GBufferTarget, 2> kCompactGBufferTargets = {{
     {"surface", GL_RGBA32UI, 16, bindings::GBUFFER_SURFACE_UNIT,
      "x: view-space depth along the view axis (float bits; position = eye + ray · depth); y: octahedral-encoded "

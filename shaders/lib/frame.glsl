@@ -33,7 +33,9 @@ float viewDepth(vec3 worldPosition)
 // shader loads each value of a uniform block again for every 8 fragments, about 20 times
 // what a flat input costs (docs/performance.md: the 12 values of the ray cost a pass of 128
 // screen-filling volumes 66 ms, 12 flat inputs 3 ms). The varyings are copies of the
-// block's values, so the image is the same bit for bit.
+// block's values, so the image is the same bit for bit. Not for the mesh passes: llvmpipe
+// sets up every varying per triangle, and there (small triangles, one fragment shader run
+// per pixel and triangle) the flat inputs cost more than the loads they replace.
 struct FrameValues {
     vec3 eye;
     vec4 pixelRayScale;
