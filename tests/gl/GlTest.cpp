@@ -108,6 +108,31 @@ TEST_F(GlTest, GBufferFramebufferIsCompleteAndBudgetIsKnown)
     EXPECT_LE(2 * gbufferBytesPerPixel(GBufferLayout::Compact), gbufferBytesPerPixel(GBufferLayout::Seed));
 }
 
+// The compact G-buffer's surface target is an unsigned-integer texture, next to a float one:
+// clearColourToZero clears each attachment, whatever its format, to zero. (It picks the clear
+// that matches the format because the float clear leaves an integer attachment undefined; Mesa
+// happens to write zero bits either way, so this test cannot tell the two clears apart there.)
+TEST_F(GlTest, FramebufferClearsIntegerAndFloatAttachmentsToZero)
+{
+    gl::Texture2D integer("integer", GL_RGBA32UI, 4, 4);
+    gl::Texture2D floating("float", GL_RGBA16F, 4, 4);
+    gl::Framebuffer framebuffer("clear test", {&integer, &floating}, nullptr);
+    const GLuint sevens[4] = {7, 7, 7, 7};
+    const float halves[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+    glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, sevens);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, halves);
+    framebuffer.clearColourToZero(0);
+    framebuffer.clearColourToZero(1);
+    std::vector<GLuint> integers(4 * 4 * 4, 1);
+    glGetTextureImage(integer.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                      static_cast<GLsizei>(integers.size() * sizeof(GLuint)), integers.data());
+    std::vector<float> floats(4 * 4 * 4, 1.0f);
+    glGetTextureImage(floating.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(floats.size() * sizeof(float)),
+                      floats.data());
+    EXPECT_EQ(integers, std::vector<GLuint>(integers.size(), 0u));
+    EXPECT_EQ(floats, std::vector<float>(floats.size(), 0.0f));
+}
+
 TEST_F(GlTest, IncludesAreResolvedOnceAndDefinesInjected)
 {
     auto reader = memoryReader({

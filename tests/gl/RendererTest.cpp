@@ -100,6 +100,61 @@ TEST_F(RendererTest, SetCameraMovesTheViewAndTheScenesCameraRestoresIt)
     test::expectImagesNear(renderer.readColour(), first, test::Tolerance{});
 }
 
+// The viewer's switches of the ambient, diffuse and specular terms (RendererDesc::lightingTerms),
+// which the techniques' shaders read in different ways: the light volumes as flat varyings from
+// their vertex shader, the others from the frame's uniform block (lib/frame.glsl). With the
+// terms switched on one at a time, every technique gives deferred's image within the agreement
+// tolerance (the same G-buffer, the same lighting function), and in every technique, forward
+// included, the three images add up to the image with all three on: the emissive term, which no
+// switch turns off, is in each of them, so the image with all three off is taken away twice.
+TEST_F(RendererTest, TermSwitchesAgreeInEveryTechniqueAndAddUp)
+{
+    const Scene scene = parseScene(R"({
+        "camera": {"eye": [0, 4, 6], "look_at": [0, 0, 0], "fov_y": 50},
+        "ambient": [0.1, 0.1, 0.1],
+        "directional": {"direction": [-1, -2, -1], "intensity": [0.3, 0.3, 0.3]},
+        "materials": {"shiny": {"diffuse": [0.6, 0.4, 0.3], "specular": [0.5, 0.5, 0.5], "shininess": 24,
+                                "emissive": [0.02, 0.01, 0.0]}},
+        "lights": [{"type": "point", "pos": [1, 2, 1], "intensity": [3, 2, 1], "range": 8},
+                   {"type": "point", "pos": [-2, 1, 0], "intensity": [1, 2, 3], "range": 6},
+                   {"type": "spot", "pos": [0, 3, 2], "direction": [0, -1, -0.5], "cutoff": 35,
+                    "intensity": [2, 2, 2], "range": 9}],
+        "objects": [
+            {"mesh": {"primitive": "plane", "size": [10, 10]}, "material": "shiny"},
+            {"mesh": {"primitive": "sphere", "radius": 1}, "material": "shiny",
+             "transform": {"translate": [0.5, 1, 0]}}]})",
+                                   "<renderer test>", ".");
+    RendererDesc desc{.width = 96, .height = 64};
+    Renderer renderer(scene, expandLights(scene), desc);
+    const auto render = [&](const std::string& technique, glm::vec3 terms) {
+        desc.lightingTerms = terms;
+        renderer.apply(desc);
+        renderer.renderFrame(technique, ViewMode::Final);
+        return renderer.readColour();
+    };
+    const glm::vec3 ambientOnly{1, 0, 0}, diffuseOnly{0, 1, 0}, specularOnly{0, 0, 1};
+    const Image deferredDiffuse = render("deferred", diffuseOnly);
+    const Image deferredSpecular = render("deferred", specularOnly);
+    for (const std::string& technique : techniqueNames()) {
+        const Image all = render(technique, {1, 1, 1});
+        const Image none = render(technique, {0, 0, 0});
+        const Image ambient = render(technique, ambientOnly);
+        const Image diffuse = render(technique, diffuseOnly);
+        const Image specular = render(technique, specularOnly);
+        Image sum = all;
+        for (std::size_t i = 0; i < sum.rgb.size(); ++i)
+            sum.rgb[i] = ambient.rgb[i] + diffuse.rgb[i] + specular.rgb[i] - 2.0f * none.rgb[i];
+        test::expectImagesNear(all, sum, test::kAgreementTolerance, technique + ": the terms add up");
+        if (technique != "forward") {
+            test::expectImagesNear(deferredDiffuse, diffuse, test::kAgreementTolerance, technique + ": diffuse only");
+            test::expectImagesNear(deferredSpecular, specular, test::kAgreementTolerance,
+                                   technique + ": specular only");
+        }
+    }
+    // The switches do something: each term alone is a different image.
+    EXPECT_FALSE(test::imagesNear(deferredDiffuse, deferredSpecular, test::kAgreementTolerance));
+}
+
 // The light texels hold the light buffer's bytes: a light read through them, through the
 // storage buffer or through a uniform window is the same floats, so the image is the same bit
 // for bit (Tolerance{} is zero) where the batches are the same, in every technique that reads lights in the fragment or
