@@ -113,4 +113,10 @@ LightVolumeGroups groupLightVolumes(const std::vector<GpuLight>& lights)
     return groups;
 }
 
+bool eyeInsideSphereVolume(const GpuLight& light, const glm::vec3& eye)
+{
+    const float radius = light.positionRadius.w;
+    return glm::distance(glm::vec3(light.positionRadius), eye) < radius * (1.0f - 1e-3f);
+}
+
 }  // namespace manylights

@@ -47,4 +47,10 @@ struct LightVolumeGroups {
 
 LightVolumeGroups groupLightVolumes(const std::vector<GpuLight>& lights);
 
+// Whether `eye` lies inside light `light`'s sphere, well enough inside (1e-3 of the radius) that
+// rounding cannot put it outside the bounding mesh, which contains the sphere. From there every
+// face of the convex mesh faces away from the eye: there is no front face on screen, and each
+// pixel's ray leaves the volume through exactly one back face.
+bool eyeInsideSphereVolume(const GpuLight& light, const glm::vec3& eye);
+
 }  // namespace manylights

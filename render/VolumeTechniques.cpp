@@ -1,6 +1,7 @@
 #include "render/VolumeTechniques.h"
 
 #include "render/GpuScene.h"
+#include "render/LightVolumes.h"
 #include "render/ScreenPasses.h"
 
 namespace manylights {
@@ -76,15 +77,32 @@ StencilTechnique::StencilTechnique(const TechniqueOptions& options)
 {
 }
 
-void StencilTechnique::render(const GpuScene&, FrameTargets&, FramePasses& passes)
+void StencilTechnique::render(const GpuScene& scene, FrameTargets&, FramePasses& passes)
 {
     shadeGlobalTermsAndUnboundedLights(passes, drawer_);
     const auto shadeLight = [&](VolumeShape shape, std::size_t index) {
         passes.run(kMarkInsideVolume, [&] { drawer_.drawVolumes(shape, index, 1, stencilOnly_); });
         passes.run(kShadeMarked, [&] { drawer_.drawVolumes(shape, index, 1); });
     };
-    for (std::size_t i = 0; i < drawer_.groups().spheres.size(); ++i)
-        shadeLight(VolumeShape::Sphere, i);
+    // A sphere around the eye has no front face on screen: the stencil pass would mark exactly
+    // the pixels whose surface lies in front of its back face, which the back faces drawn with
+    // the reversed depth test (volumes' pass) shade directly, without the stencil pass. Runs
+    // of such spheres are drawn as one instanced draw, in light order, so every pixel adds its
+    // lights in the same order as with a stencil pass per light: the same image bit for bit.
+    const std::vector<std::uint32_t>& spheres = drawer_.groups().spheres;
+    const glm::vec3 eye(scene.frameUniforms().eye);
+    const auto aroundEye = [&](std::size_t i) { return eyeInsideSphereVolume(scene.packedLights()[spheres[i]], eye); };
+    for (std::size_t i = 0; i < spheres.size();) {
+        std::size_t end = i;
+        while (end < spheres.size() && aroundEye(end))
+            ++end;
+        if (end == i) {
+            shadeLight(VolumeShape::Sphere, i++);
+            continue;
+        }
+        passes.run(kBackFaceVolumes, [&] { drawer_.drawVolumes(VolumeShape::Sphere, i, end - i); });
+        i = end;
+    }
     for (std::size_t i = 0; i < drawer_.groups().cones.size(); ++i)
         shadeLight(VolumeShape::Cone, i);
 }

@@ -78,5 +78,32 @@ TEST(LightVolumes, LightsAreGroupedByShape)
     EXPECT_EQ(groups.fullScreen, (std::vector<std::uint32_t>{3}));
 }
 
+// The stencil technique skips its stencil pass for spheres around the eye (render/
+// VolumeTechniques.cpp), which is exact only where the eye is inside the bounding mesh: every
+// eye the test accepts, at distances up to its margin, lies inside the icosahedron drawn for a
+// light of that radius, and the eye on the sphere or beyond is refused.
+TEST(LightVolumes, EyeInsideSphereVolumeOnlyWellInsideTheMesh)
+{
+    GpuLight light{};
+    light.positionRadius = glm::vec4(1.0f, 2.0f, -3.0f, 4.0f);
+    const glm::vec3 centre(light.positionRadius);
+    const float radius = light.positionRadius.w;
+    const Mesh sphere = makeBoundingSphere();
+    for (int i = 0; i < 500; ++i) {
+        const float z = 1.0f - 2.0f * (static_cast<float>(i) + 0.5f) / 500.0f;
+        const float phi = static_cast<float>(i) * 2.39996323f;
+        const float r = std::sqrt(1.0f - z * z);
+        const glm::vec3 direction(r * std::cos(phi), r * std::sin(phi), z);
+        for (const float fraction : {0.0f, 0.5f, 0.998f}) {
+            const glm::vec3 eye = centre + fraction * radius * direction;
+            ASSERT_TRUE(eyeInsideSphereVolume(light, eye)) << fraction;
+            // The mesh of the light's instance: the unit mesh scaled by the radius, moved to the light.
+            EXPECT_LT(largestFaceDistance(sphere, (eye - centre) / radius), 0.0f);
+        }
+        for (const float fraction : {1.0f, 1.5f})
+            EXPECT_FALSE(eyeInsideSphereVolume(light, centre + fraction * radius * direction)) << fraction;
+    }
+}
+
 }  // namespace
 }  // namespace manylights
