@@ -2,8 +2,8 @@
 // geometry pass that writes them and gbufferSurface() that reads them.
 
 // Octahedral normal encoding: the unit sphere projected onto the octahedron |x|+|y|+|z| = 1,
-// whose lower half is folded over the upper, gives a square [-1, 1]²; stored as unorm
-// (0.5·p + 0.5) in two 16-bit unorms. 16-bit steps of 2/65535 in p move the normal by at most ~3e-5 rad.
+// whose lower half is folded over the upper, gives a square [-1, 1]²; stored as 0.5·p + 0.5
+// in two 16-bit unorms. Steps of 2/65535 in p move the normal by at most ~3e-5 rad.
 vec2 signNotZero(vec2 v)
 {
     return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
@@ -26,9 +26,9 @@ vec3 octahedralDecode(vec2 stored)
 }
 
 // Shininess s ≥ 1 as a 16-bit code of log2(s) / 16 (s up to 65536), split into two bytes (the
-// top bytes of the surface texel's kd and ks words, where a unorm8 alpha would be). One code step is a factor
-// 2^(16/65535) in s: rounding changes s by ≤ 8.5e-5 relative, which moves (N·H)^s by at most
-// 8.5e-5 / e ≈ 3.1e-5 of ks · intensity (max over x of x^s·|ln x|·Δs is Δs/(e·s)).
+// top bytes of the surface texel's kd and ks words). One code step is a factor 2^(16/65535) in
+// s: rounding changes s by ≤ 8.5e-5 relative, which moves (N·H)^s by at most 8.5e-5 / e ≈
+// 3.1e-5 of ks · intensity (max over x of x^s·|ln x|·Δs is Δs/(e·s)).
 const float kShininessLog2Range = 16.0;
 
 uint encodeShininess(float shininess)
