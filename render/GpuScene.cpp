@@ -181,6 +181,10 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     }
     if (scene.lightMarkerRadius)
         addLightMarkers(*scene.lightMarkerRadius);
+    std::vector<const Material*> drawnMaterials;
+    for (const DrawItem& draw : draws_)
+        drawnMaterials.push_back(draw.material);
+    lightingFeatures_.specularExponent = specularExponentOf(drawnMaterials);
     groupDrawsIntoBatches();
     instances_.resize(draws_.size());
     instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance),

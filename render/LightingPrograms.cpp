@@ -1,6 +1,7 @@
 #include "render/LightingPrograms.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/LightBatches.h"
 
@@ -19,6 +20,23 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
     };
 }
 
+std::uint16_t specularExponentOf(const std::vector<const Material*>& materials)
+{
+    std::optional<float> shininess;
+    for (const Material* material : materials) {
+        if (!material->metallicRoughnessMap.empty())
+            return 0;
+        if (material->specular == glm::vec3{0.0f} && material->specularTint == glm::vec3{0.0f})
+            continue;
+        if (shininess && *shininess != material->shininess)
+            return 0;
+        shininess = material->shininess;
+    }
+    if (!shininess || *shininess < 1.0f || *shininess > kMaxSpecularExponent || std::floor(*shininess) != *shininess)
+        return 0;
+    return static_cast<std::uint16_t>(*shininess);
+}
+
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines)
 {
     if (!features.spotLights)
@@ -34,6 +52,8 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
     if (!features.ambientOcclusion)
         defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
+    if (features.specularExponent != 0)
+        defines.emplace_back("SPECULAR_EXPONENT", std::to_string(features.specularExponent));
     return defines;
 }
 

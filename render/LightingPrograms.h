@@ -34,6 +34,11 @@ struct LightingFeatures {
     // pass on the courtyard (docs/performance.md).
     bool directionalShadow = true;
     bool ambientOcclusion = true;
+    // 0, or the one shininess n (an integer in [1, kMaxSpecularExponent]) of every surface the
+    // scene draws with a specular term (specularExponentOf): the lighting function then raises
+    // N·H to the n-th power by multiplications instead of pow(), which costs a fifth of a
+    // lighting pass on llvmpipe (docs/performance.md).
+    std::uint16_t specularExponent = 0;
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
@@ -43,8 +48,19 @@ struct LightingFeatures {
 LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
                                     const std::optional<DirectionalLight>& directional);
 
+// The largest shininess the multiplying specular power takes (shaders/lib/lighting.glsl
+// specularPower; also the glTF exponent's clamp, shaders/lib/material.glsl).
+inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
+
+// The shininess every material in `materials` with a specular term has, when that is one
+// integer in [1, kMaxSpecularExponent]; else 0. A material without a specular term (its
+// specular colour and tint zero, as a light marker's) is shaded the same by any exponent and
+// does not count; one with a metallic-roughness map has a shininess per texel and rules it out.
+std::uint16_t specularExponentOf(const std::vector<const Material*>& materials);
+
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW and NO_AMBIENT_OCCLUSION as `features` allow.
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT as
+// `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).

@@ -29,6 +29,29 @@ Surface withTermSwitches(Surface s)
     return s;
 }
 
+// x^shininess for x in [0, 1]. A program built with SPECULAR_EXPONENT n (an integer in [1,
+// 2048]: every surface of the scene with a specular term has shininess n, LightingFeatures)
+// multiplies instead: x, x², x⁴, ... and the product of the powers n's bits select. The loop's
+// bounds and n are constants, so the compiler unrolls it and keeps only the multiplications n
+// needs (at most 21); pow() is exp2(n · log2(x)), whose two polynomials cost a fifth of a
+// lighting pass on llvmpipe (docs/performance.md). Both are exact to a few ulps.
+float specularPower(float x, float shininess)
+{
+#ifdef SPECULAR_EXPONENT
+    const uint exponent = uint(SPECULAR_EXPONENT);
+    float power = 1.0;
+    float square = x;  // x^(2^bit)
+    for (uint bit = 0u; bit < 12u; ++bit) {
+        if ((exponent & (1u << bit)) != 0u)
+            power *= square;
+        square *= square;
+    }
+    return power;
+#else
+    return pow(x, shininess);
+#endif
+}
+
 // brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
 // Written without branches: llvmpipe runs 8 or 16 pixels in lock step and would execute a
 // branch's body under a lane mask anyway, paying for the mask on top (docs/performance.md).
@@ -37,7 +60,7 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
 {
     float NdotL = dot(s.normal, L);
     vec3 H = normalize(L + V);
-    vec3 brdf = s.switchedDiffuse * NdotL + s.switchedSpecular * pow(max(dot(s.normal, H), 0.0), s.shininess);
+    vec3 brdf = s.switchedDiffuse * NdotL + s.switchedSpecular * specularPower(max(dot(s.normal, H), 0.0), s.shininess);
     return NdotL > 0.0 ? brdf : vec3(0.0);
 }
 

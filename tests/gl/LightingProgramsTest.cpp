@@ -10,9 +10,12 @@
 
 #include "GlContextTest.h"
 #include "core/Error.h"
+#include "render/GpuScene.h"
 #include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
 #include "render/Technique.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
 
 namespace manylights {
 namespace {
@@ -66,7 +69,71 @@ TEST(LightingFeatures, DefinesLeaveOutOnlyWhatIsAbsent)
     EXPECT_FALSE(hasDefine(spots, "NO_DIRECTIONAL_LIGHT"));
 }
 
+TEST(LightingFeatures, SpecularExponentIsTheOneIntegerShininessOfTheSpecularMaterials)
+{
+    const auto materialOf = [](float shininess, glm::vec3 specular) {
+        Material material;
+        material.shininess = shininess;
+        material.specular = specular;
+        return material;
+    };
+    const Material shiny16 = materialOf(16.0f, glm::vec3{0.5f});
+    const Material alsoShiny16 = materialOf(16.0f, glm::vec3{0.1f, 0.0f, 0.0f});
+    const Material matte = materialOf(5.0f, glm::vec3{0.0f});  // no specular term: any exponent shades it the same
+    EXPECT_EQ(specularExponentOf({&shiny16, &alsoShiny16, &matte}), 16);
+    EXPECT_EQ(specularExponentOf({&matte}), 0);  // nothing specular: no variant needed
+    EXPECT_EQ(specularExponentOf({}), 0);
+
+    const Material shiny24 = materialOf(24.0f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&shiny16, &shiny24}), 0);  // two exponents: pow() per pixel
+    const Material fractional = materialOf(12.5f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&fractional}), 0);
+    const Material below = materialOf(0.5f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&below}), 0);
+    const Material smallest = materialOf(1.0f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&smallest}), 1);
+    const Material largest = materialOf(kMaxSpecularExponent, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&largest}), kMaxSpecularExponent);
+    const Material tooLarge = materialOf(kMaxSpecularExponent + 1.0f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentOf({&tooLarge}), 0);
+
+    // A metal's specular colour is its tint alone; a metallic-roughness map varies the exponent
+    // per texel, even where the material's own specular is zero.
+    Material metal = materialOf(16.0f, glm::vec3{0.0f});
+    metal.specularTint = glm::vec3{0.9f};
+    EXPECT_EQ(specularExponentOf({&metal}), 16);
+    Material mapped = materialOf(16.0f, glm::vec3{0.0f});
+    mapped.metallicRoughnessMap = "roughness.png";
+    EXPECT_EQ(specularExponentOf({&shiny16, &mapped}), 0);
+
+    LightingFeatures features;
+    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT"));
+    features.specularExponent = 13;
+    const gl::Defines defines = lightingFeatureDefines(features, {});
+    EXPECT_TRUE(std::find(defines.begin(), defines.end(),
+                          std::pair<std::string, std::string>("SPECULAR_EXPONENT", "13")) != defines.end());
+}
+
 class LightingProgramTest : public GlContextTest {};
+
+TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentOfWhatItDraws)
+{
+    const auto exponentOf = [](const std::string& materials, const std::string& objects) {
+        const Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
+            "light_markers": {"radius": 0.1}, "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 5}],
+            "materials": )" + materials + R"(, "objects": )" +
+                                           objects + "}",
+                                       "<specular exponent test>", ".");
+        return GpuScene(scene, expandLights(scene, std::nullopt)).lightingFeatures().specularExponent;
+    };
+    const std::string materials = R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16},
+                                      "b": {"specular": [0.5, 0.5, 0.5], "shininess": 40}})";
+    // The markers (no specular term) do not count, nor does a material no object uses.
+    EXPECT_EQ(exponentOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])"), 16);
+    EXPECT_EQ(exponentOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"},
+                                        {"mesh": {"primitive": "sphere", "radius": 1}, "material": "b"}])"),
+              0);
+}
 
 TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
 {

@@ -170,14 +170,16 @@ TEST_P(Analytic, SpotLightConeEdge)
     EXPECT_GT(outside, 300);
 }
 
-TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
+// Range falloff r = 6: A(d) = 1/max(d, 0.06)² − 1/36 for d < 6, else 0, and a specular term
+// ks · max(N·H, 0)^shininess with H = normalize(L + V), V towards the eye at (0, 10, 0).
+void checkRangeFalloffWithSpecularHighlight(const std::string& shininess)
 {
-    // Range falloff r = 6: A(d) = 1/max(d, 0.06)² − 1/36 for d < 6, else 0, and a specular
-    // term ks · max(N·H, 0)^16 with H = normalize(L + V), V towards the eye at (0, 10, 0).
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "lights": [{"type": "point", "pos": [1, 1.5, 0.5], "intensity": [0.8, 0.6, 0.4], "range": 6}],
-        "materials": {"m": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": 16}},
+        "materials": {"m": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": )" +
+                              shininess + R"(}},
         "objects": [{"mesh": {"primitive": "plane", "size": [20, 20]}, "material": "m"}]})";
+    const double exponent = std::stod(shininess);
     const glm::dvec3 light(1, 1.5, 0.5);
     const glm::dvec3 intensity(0.8, 0.6, 0.4);
     const glm::dvec3 eye(0, 10, 0);
@@ -193,11 +195,22 @@ TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
         const glm::dvec3 l = (light - p) / d;
         const glm::dvec3 v = glm::normalize(eye - p);
         const glm::dvec3 h = glm::normalize(l + v);
-        const double brdf = 0.5 * glm::dot(n, l) + 0.5 * std::pow(std::max(glm::dot(n, h), 0.0), 16.0);
+        const double brdf = 0.5 * glm::dot(n, l) + 0.5 * std::pow(std::max(glm::dot(n, h), 0.0), exponent);
         return intensity * brdf * attenuation;
     };
     checkEveryPixel(scene, expected);
     EXPECT_GT(unlit, 100);  // the corners lie beyond the range and must be exactly black
+}
+
+TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
+{
+    // One integer shininess in the scene: the programs raise N·H to it by multiplications
+    // (render/LightingPrograms.h, specularExponent), 16 by squarings alone, 13 (binary 1101) by
+    // squarings and products; a fractional one takes pow().
+    for (const std::string shininess : {"16", "13", "12.5"}) {
+        SCOPED_TRACE("shininess " + shininess);
+        checkRangeFalloffWithSpecularHighlight(shininess);
+    }
 }
 
 TEST_P(Analytic, ClassicLightIsCutAtItsThresholdRadius)
