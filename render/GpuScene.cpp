@@ -184,7 +184,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     std::vector<const Material*> drawnMaterials;
     for (const DrawItem& draw : draws_)
         drawnMaterials.push_back(draw.material);
-    lightingFeatures_.specularExponent = specularExponentOf(drawnMaterials);
+    lightingFeatures_.specularExponents = specularExponentsOf(drawnMaterials);
     groupDrawsIntoBatches();
     instances_.resize(draws_.size());
     instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "render/LightBatches.h"
 
@@ -20,21 +21,27 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
     };
 }
 
-std::uint16_t specularExponentOf(const std::vector<const Material*>& materials)
+SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials)
 {
-    std::optional<float> shininess;
+    std::set<float> shininesses;
     for (const Material* material : materials) {
         if (!material->metallicRoughnessMap.empty())
-            return 0;
-        if (material->specular == glm::vec3{0.0f} && material->specularTint == glm::vec3{0.0f})
-            continue;
-        if (shininess && *shininess != material->shininess)
-            return 0;
-        shininess = material->shininess;
+            return {};
+        if (material->specular != glm::vec3{0.0f} || material->specularTint != glm::vec3{0.0f})
+            shininesses.insert(material->shininess);
     }
-    if (!shininess || *shininess < 1.0f || *shininess > kMaxSpecularExponent || std::floor(*shininess) != *shininess)
-        return 0;
-    return static_cast<std::uint16_t>(*shininess);
+    if (shininesses.size() > kMaxSpecularExponents)
+        return {};
+    SpecularExponents exponents{};
+    std::size_t count = 0;
+    int multiplications = 0;
+    for (const float shininess : shininesses) {  // ascending
+        if (shininess < 1.0f || shininess > kMaxSpecularExponent || std::floor(shininess) != shininess)
+            return {};
+        exponents[count] = static_cast<std::uint16_t>(shininess);
+        multiplications += integerPowerMultiplications(exponents[count++]);
+    }
+    return multiplications <= kSpecularMultiplicationBudget ? exponents : SpecularExponents{};
 }
 
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines)
@@ -52,8 +59,15 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
     if (!features.ambientOcclusion)
         defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
-    if (features.specularExponent != 0)
-        defines.emplace_back("SPECULAR_EXPONENT", std::to_string(features.specularExponent));
+    const auto exponents =
+        static_cast<std::size_t>(std::count_if(features.specularExponents.begin(), features.specularExponents.end(),
+                                               [](std::uint16_t exponent) { return exponent != 0; }));
+    if (exponents != 0) {
+        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(exponents));
+        for (std::size_t i = 0; i < exponents; ++i)
+            defines.emplace_back("SPECULAR_EXPONENT_" + std::to_string(i),
+                                 std::to_string(features.specularExponents[i]));
+    }
     return defines;
 }
 

@@ -9,7 +9,10 @@
 // The same variants also choose where the lights are read from (LightSource).
 #pragma once
 
+#include <array>
+#include <bit>
 #include <compare>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -23,6 +26,22 @@
 
 namespace manylights {
 
+// The largest shininess, and the most distinct ones in a scene, that the lighting function
+// raises to by multiplications (shaders/lib/lighting.glsl specularPower; 2048 is also the glTF
+// exponent's clamp, shaders/lib/material.glsl), and the most multiplications all of a scene's
+// together may take: on llvmpipe one pow() costs about as much as 50 (docs/performance.md).
+inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
+inline constexpr std::size_t kMaxSpecularExponents = 4;
+inline constexpr int kSpecularMultiplicationBudget = 32;
+using SpecularExponents = std::array<std::uint16_t, kMaxSpecularExponents>;
+
+// The multiplications x^n takes by squaring (shaders/lib/lighting.glsl integerPower): one per
+// bit below n's highest, one more per set bit after the first.
+constexpr int integerPowerMultiplications(std::uint16_t n)
+{
+    return n == 0 ? 0 : std::bit_width(n) - 1 + std::popcount(n) - 1;
+}
+
 struct LightingFeatures {
     bool spotLights = true;
     bool classicFalloff = true;
@@ -34,11 +53,12 @@ struct LightingFeatures {
     // pass on the courtyard (docs/performance.md).
     bool directionalShadow = true;
     bool ambientOcclusion = true;
-    // 0, or the one shininess n (an integer in [1, kMaxSpecularExponent]) of every surface the
-    // scene draws with a specular term (specularExponentOf): the lighting function then raises
-    // N·H to the n-th power by multiplications instead of pow(), which costs a fifth of a
-    // lighting pass on llvmpipe (docs/performance.md).
-    std::uint16_t specularExponent = 0;
+    // The shininesses of every surface the scene draws with a specular term, when they are at
+    // most kMaxSpecularExponents integers in [1, kMaxSpecularExponent] (specularExponentsOf),
+    // ascending, then zeros; all zeros otherwise. The lighting function then raises N·H to them
+    // by multiplications instead of pow(), which costs a quarter of a lighting pass on llvmpipe
+    // (docs/performance.md).
+    SpecularExponents specularExponents{};
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
@@ -48,18 +68,16 @@ struct LightingFeatures {
 LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
                                     const std::optional<DirectionalLight>& directional);
 
-// The largest shininess the multiplying specular power takes (shaders/lib/lighting.glsl
-// specularPower; also the glTF exponent's clamp, shaders/lib/material.glsl).
-inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
-
-// The shininess every material in `materials` with a specular term has, when that is one
-// integer in [1, kMaxSpecularExponent]; else 0. A material without a specular term (its
-// specular colour and tint zero, as a light marker's) is shaded the same by any exponent and
-// does not count; one with a metallic-roughness map has a shininess per texel and rules it out.
-std::uint16_t specularExponentOf(const std::vector<const Material*>& materials);
+// The distinct shininesses of the materials in `materials` with a specular term, ascending,
+// when there are at most kMaxSpecularExponents, each is an integer in [1, kMaxSpecularExponent]
+// and their integerPowerMultiplications sum to at most kSpecularMultiplicationBudget; else all
+// zeros. A material without a specular term (its specular colour and tint zero, as a light
+// marker's) is shaded the same by any exponent and does not count; one with a
+// metallic-roughness map has a shininess per texel and rules them out.
+SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT as
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT_* as
 // `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 

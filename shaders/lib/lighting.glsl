@@ -29,23 +29,52 @@ Surface withTermSwitches(Surface s)
     return s;
 }
 
-// x^shininess for x in [0, 1]. A program built with SPECULAR_EXPONENT n (an integer in [1,
-// 2048]: every surface of the scene with a specular term has shininess n, LightingFeatures)
-// multiplies instead: x, x², x⁴, ... and the product of the powers n's bits select. The loop's
-// bounds and n are constants, so the compiler unrolls it and keeps only the multiplications n
-// needs (at most 21); pow() is exp2(n · log2(x)), whose two polynomials cost a fifth of a
-// lighting pass on llvmpipe (docs/performance.md). Both are exact to a few ulps.
-float specularPower(float x, float shininess)
+// x^n for x in [0, 1] and a constant integer n in [1, 4095] by multiplications: x, x², x⁴, ...
+// and the product of the powers n's bits select. The loop's bounds and n are constants, so the
+// compiler unrolls it and keeps only the multiplications n needs (render/LightingPrograms.h
+// integerPowerMultiplications). Exact to a few ulps, as pow(), except that a power below 2^-126
+// (a subnormal float, 1.2e-38) is 0: x is flushed where x^n would be, so that every value in the
+// chain, all at least x^n, stays normal. A multiplication that reads or makes a subnormal takes a
+// microcode assist of about a hundred cycles on x86, and llvmpipe does not set flush-to-zero:
+// without the flush, shininess 255 cost more than pow() (docs/performance.md).
+float integerPower(float x, uint n)
 {
-#ifdef SPECULAR_EXPONENT
-    const uint exponent = uint(SPECULAR_EXPONENT);
     float power = 1.0;
-    float square = x;  // x^(2^bit)
+    float square = x < exp2(-126.0 / float(n)) ? 0.0 : x;  // x^(2^bit)
     for (uint bit = 0u; bit < 12u; ++bit) {
-        if ((exponent & (1u << bit)) != 0u)
+        if ((n & (1u << bit)) != 0u)
             power *= square;
         square *= square;
     }
+    return power;
+}
+
+// x^shininess for x in [0, 1]. pow() is exp2(shininess · log2(x)), whose two polynomials cost
+// a quarter of a lighting pass on llvmpipe (docs/performance.md). A program built with
+// SPECULAR_EXPONENT_COUNT k (1 to 4) and SPECULAR_EXPONENT_0 < ... < SPECULAR_EXPONENT_<k-1>
+// (render/LightingPrograms.h: the integer shininesses of every surface of the scene with a
+// specular term, where their multiplications are few) multiplies instead: each power is
+// computed and the surface's shininess picks its own by the midpoints between them, which a
+// compact G-buffer's decoded shininess (within 0.01% of the material's) never crosses.
+float specularPower(float x, float shininess)
+{
+#ifdef SPECULAR_EXPONENT_COUNT
+    float power = integerPower(x, uint(SPECULAR_EXPONENT_0));
+#if SPECULAR_EXPONENT_COUNT > 1
+    power = shininess > 0.5 * float(SPECULAR_EXPONENT_0 + SPECULAR_EXPONENT_1)
+                ? integerPower(x, uint(SPECULAR_EXPONENT_1))
+                : power;
+#endif
+#if SPECULAR_EXPONENT_COUNT > 2
+    power = shininess > 0.5 * float(SPECULAR_EXPONENT_1 + SPECULAR_EXPONENT_2)
+                ? integerPower(x, uint(SPECULAR_EXPONENT_2))
+                : power;
+#endif
+#if SPECULAR_EXPONENT_COUNT > 3
+    power = shininess > 0.5 * float(SPECULAR_EXPONENT_2 + SPECULAR_EXPONENT_3)
+                ? integerPower(x, uint(SPECULAR_EXPONENT_3))
+                : power;
+#endif
     return power;
 #else
     return pow(x, shininess);

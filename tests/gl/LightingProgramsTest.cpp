@@ -69,7 +69,7 @@ TEST(LightingFeatures, DefinesLeaveOutOnlyWhatIsAbsent)
     EXPECT_FALSE(hasDefine(spots, "NO_DIRECTIONAL_LIGHT"));
 }
 
-TEST(LightingFeatures, SpecularExponentIsTheOneIntegerShininessOfTheSpecularMaterials)
+TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpecularMaterials)
 {
     const auto materialOf = [](float shininess, glm::vec3 specular) {
         Material material;
@@ -77,62 +77,87 @@ TEST(LightingFeatures, SpecularExponentIsTheOneIntegerShininessOfTheSpecularMate
         material.specular = specular;
         return material;
     };
+    const SpecularExponents none{};
     const Material shiny16 = materialOf(16.0f, glm::vec3{0.5f});
     const Material alsoShiny16 = materialOf(16.0f, glm::vec3{0.1f, 0.0f, 0.0f});
     const Material matte = materialOf(5.0f, glm::vec3{0.0f});  // no specular term: any exponent shades it the same
-    EXPECT_EQ(specularExponentOf({&shiny16, &alsoShiny16, &matte}), 16);
-    EXPECT_EQ(specularExponentOf({&matte}), 0);  // nothing specular: no variant needed
-    EXPECT_EQ(specularExponentOf({}), 0);
+    EXPECT_EQ(specularExponentsOf({&shiny16, &alsoShiny16, &matte}), (SpecularExponents{16, 0, 0, 0}));
+    EXPECT_EQ(specularExponentsOf({&matte}), none);  // nothing specular: nothing to raise
+    EXPECT_EQ(specularExponentsOf({}), none);
 
+    // Distinct ones ascending, up to kMaxSpecularExponents of them.
+    const Material shiny64 = materialOf(64.0f, glm::vec3{0.5f});
+    const Material shiny13 = materialOf(13.0f, glm::vec3{0.5f});
+    const Material shiny48 = materialOf(48.0f, glm::vec3{0.5f});
     const Material shiny24 = materialOf(24.0f, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&shiny16, &shiny24}), 0);  // two exponents: pow() per pixel
+    EXPECT_EQ(specularExponentsOf({&shiny64, &shiny16, &shiny13, &alsoShiny16, &shiny48}),
+              (SpecularExponents{13, 16, 48, 64}));
+    EXPECT_EQ(specularExponentsOf({&shiny64, &shiny16, &shiny13, &shiny48, &shiny24}), none);  // five: pow()
+
+    // Where their multiplications would cost more than pow(): 12 + 13 + 13 + 14 of them.
+    const Material shiny127 = materialOf(127.0f, glm::vec3{0.5f});
+    const Material shiny191 = materialOf(191.0f, glm::vec3{0.5f});
+    const Material shiny223 = materialOf(223.0f, glm::vec3{0.5f});
+    const Material shiny255 = materialOf(255.0f, glm::vec3{0.5f});
+    EXPECT_EQ(specularExponentsOf({&shiny127, &shiny191, &shiny223, &shiny255}), none);
+    EXPECT_EQ(specularExponentsOf({&shiny255, &shiny16}), (SpecularExponents{16, 255, 0, 0}));
+    EXPECT_EQ(integerPowerMultiplications(1), 0);
+    EXPECT_EQ(integerPowerMultiplications(16), 4);     // four squarings
+    EXPECT_EQ(integerPowerMultiplications(13), 5);     // 1101: three squarings, two products
+    EXPECT_EQ(integerPowerMultiplications(2047), 20);  // the most one exponent takes
+    EXPECT_LE(integerPowerMultiplications(2047), kSpecularMultiplicationBudget);
+
     const Material fractional = materialOf(12.5f, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&fractional}), 0);
+    EXPECT_EQ(specularExponentsOf({&shiny16, &fractional}), none);
     const Material below = materialOf(0.5f, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&below}), 0);
+    EXPECT_EQ(specularExponentsOf({&below}), none);
     const Material smallest = materialOf(1.0f, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&smallest}), 1);
     const Material largest = materialOf(kMaxSpecularExponent, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&largest}), kMaxSpecularExponent);
+    EXPECT_EQ(specularExponentsOf({&largest, &smallest}), (SpecularExponents{1, kMaxSpecularExponent, 0, 0}));
     const Material tooLarge = materialOf(kMaxSpecularExponent + 1.0f, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentOf({&tooLarge}), 0);
+    EXPECT_EQ(specularExponentsOf({&tooLarge}), none);
 
     // A metal's specular colour is its tint alone; a metallic-roughness map varies the exponent
     // per texel, even where the material's own specular is zero.
     Material metal = materialOf(16.0f, glm::vec3{0.0f});
     metal.specularTint = glm::vec3{0.9f};
-    EXPECT_EQ(specularExponentOf({&metal}), 16);
+    EXPECT_EQ(specularExponentsOf({&metal}), (SpecularExponents{16, 0, 0, 0}));
     Material mapped = materialOf(16.0f, glm::vec3{0.0f});
     mapped.metallicRoughnessMap = "roughness.png";
-    EXPECT_EQ(specularExponentOf({&shiny16, &mapped}), 0);
+    EXPECT_EQ(specularExponentsOf({&shiny16, &mapped}), none);
 
     LightingFeatures features;
-    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT"));
-    features.specularExponent = 13;
+    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
+    features.specularExponents = {13, 40, 0, 0};
     const gl::Defines defines = lightingFeatureDefines(features, {});
-    EXPECT_TRUE(std::find(defines.begin(), defines.end(),
-                          std::pair<std::string, std::string>("SPECULAR_EXPONENT", "13")) != defines.end());
+    const gl::Defines expected = {
+        {"SPECULAR_EXPONENT_COUNT", "2"}, {"SPECULAR_EXPONENT_0", "13"}, {"SPECULAR_EXPONENT_1", "40"}};
+    EXPECT_EQ(defines, expected);
 }
 
 class LightingProgramTest : public GlContextTest {};
 
-TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentOfWhatItDraws)
+TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentsOfWhatItDraws)
 {
-    const auto exponentOf = [](const std::string& materials, const std::string& objects) {
+    const auto exponentsOf = [](const std::string& materials, const std::string& objects) {
         const Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
             "light_markers": {"radius": 0.1}, "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 5}],
             "materials": )" + materials + R"(, "objects": )" +
                                            objects + "}",
                                        "<specular exponent test>", ".");
-        return GpuScene(scene, expandLights(scene, std::nullopt)).lightingFeatures().specularExponent;
+        return GpuScene(scene, expandLights(scene, std::nullopt)).lightingFeatures().specularExponents;
     };
     const std::string materials = R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16},
-                                      "b": {"specular": [0.5, 0.5, 0.5], "shininess": 40}})";
+                                      "b": {"specular": [0.5, 0.5, 0.5], "shininess": 40},
+                                      "c": {"specular": [0.5, 0.5, 0.5], "shininess": 40.5}})";
     // The markers (no specular term) do not count, nor does a material no object uses.
-    EXPECT_EQ(exponentOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])"), 16);
-    EXPECT_EQ(exponentOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"},
-                                        {"mesh": {"primitive": "sphere", "radius": 1}, "material": "b"}])"),
-              0);
+    EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])"),
+              (SpecularExponents{16, 0, 0, 0}));
+    EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "b"},
+                                        {"mesh": {"primitive": "sphere", "radius": 1}, "material": "a"}])"),
+              (SpecularExponents{16, 40, 0, 0}));
+    EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "c"}])"),
+              SpecularExponents{});
 }
 
 TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)

@@ -171,21 +171,31 @@ TEST_P(Analytic, SpotLightConeEdge)
 }
 
 // Range falloff r = 6: A(d) = 1/max(d, 0.06)² − 1/36 for d < 6, else 0, and a specular term
-// ks · max(N·H, 0)^shininess with H = normalize(L + V), V towards the eye at (0, 10, 0).
-void checkRangeFalloffWithSpecularHighlight(const std::string& shininess)
+// ks · max(N·H, 0)^s with H = normalize(L + V), V towards the eye at (0, 10, 0), on a floor
+// whose halves x < 0 and x > 0 have shininess `left` and `right`.
+void checkRangeFalloffWithSpecularHighlight(const std::string& left, const std::string& right)
 {
     const std::string scene = std::string("{") + kTopCamera + R"(,
         "lights": [{"type": "point", "pos": [1, 1.5, 0.5], "intensity": [0.8, 0.6, 0.4], "range": 6}],
-        "materials": {"m": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": )" +
-                              shininess + R"(}},
-        "objects": [{"mesh": {"primitive": "plane", "size": [20, 20]}, "material": "m"}]})";
-    const double exponent = std::stod(shininess);
+        "materials": {"left": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": )" +
+                              left + R"(},
+                      "right": {"diffuse": [0.5, 0.5, 0.5], "specular": [0.5, 0.5, 0.5], "shininess": )" +
+                              right + R"(}},
+        "objects": [{"mesh": {"primitive": "plane", "size": [10, 20]}, "material": "left",
+                     "transform": {"translate": [-5, 0, 0]}},
+                    {"mesh": {"primitive": "plane", "size": [10, 20]}, "material": "right",
+                     "transform": {"translate": [5, 0, 0]}}]})";
+    const double leftExponent = std::stod(left);
+    const double rightExponent = std::stod(right);
     const glm::dvec3 light(1, 1.5, 0.5);
     const glm::dvec3 intensity(0.8, 0.6, 0.4);
     const glm::dvec3 eye(0, 10, 0);
     const glm::dvec3 n(0, 1, 0);
     int unlit = 0;
-    const auto expected = [&](const glm::dvec3& p) {
+    int highlighted[2] = {0, 0};  // pixels where the specular term is visible, per half
+    const auto expected = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+        if (std::abs(p.x) < 1e-4)
+            return std::nullopt;  // the seam, where either half may be drawn
         const double d = glm::length(p - light);
         if (d >= 6.0) {
             ++unlit;
@@ -195,21 +205,24 @@ void checkRangeFalloffWithSpecularHighlight(const std::string& shininess)
         const glm::dvec3 l = (light - p) / d;
         const glm::dvec3 v = glm::normalize(eye - p);
         const glm::dvec3 h = glm::normalize(l + v);
-        const double brdf = 0.5 * glm::dot(n, l) + 0.5 * std::pow(std::max(glm::dot(n, h), 0.0), exponent);
-        return intensity * brdf * attenuation;
+        const double specular = 0.5 * std::pow(std::max(glm::dot(n, h), 0.0), p.x < 0.0 ? leftExponent : rightExponent);
+        highlighted[p.x < 0.0 ? 0 : 1] += specular > 1e-3 ? 1 : 0;
+        return intensity * (0.5 * glm::dot(n, l) + specular) * attenuation;
     };
     checkEveryPixel(scene, expected);
     EXPECT_GT(unlit, 100);  // the corners lie beyond the range and must be exactly black
+    EXPECT_GT(highlighted[0], 10);
+    EXPECT_GT(highlighted[1], 10);
 }
 
 TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
 {
-    // One integer shininess in the scene: the programs raise N·H to it by multiplications
-    // (render/LightingPrograms.h, specularExponent), 16 by squarings alone, 13 (binary 1101) by
-    // squarings and products; a fractional one takes pow().
-    for (const std::string shininess : {"16", "13", "12.5"}) {
-        SCOPED_TRACE("shininess " + shininess);
-        checkRangeFalloffWithSpecularHighlight(shininess);
+    // A few integer shininesses in the scene: the programs raise N·H to them by multiplications
+    // (render/LightingPrograms.h, specularExponents), 16 by squarings alone, 13 (binary 1101) and
+    // 40 (101000) by squarings and products, picked per surface. A fractional one takes pow().
+    for (const auto& [left, right] : {std::pair<std::string, std::string>{"16", "16"}, {"13", "40"}, {"16", "12.5"}}) {
+        SCOPED_TRACE("shininess " + left + " and " + right);
+        checkRangeFalloffWithSpecularHighlight(left, right);
     }
 }
 
