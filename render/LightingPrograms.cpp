@@ -63,10 +63,11 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         static_cast<std::size_t>(std::count_if(features.specularExponents.begin(), features.specularExponents.end(),
                                                [](std::uint16_t exponent) { return exponent != 0; }));
     if (exponents != 0) {
-        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(exponents));
+        std::string list;
         for (std::size_t i = 0; i < exponents; ++i)
-            defines.emplace_back("SPECULAR_EXPONENT_" + std::to_string(i),
-                                 std::to_string(features.specularExponents[i]));
+            list += (i == 0 ? "" : ", ") + std::to_string(features.specularExponents[i]) + "u";
+        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(exponents));
+        defines.emplace_back("SPECULAR_EXPONENTS", list);
     }
     return defines;
 }

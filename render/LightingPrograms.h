@@ -31,7 +31,7 @@ namespace manylights {
 // exponent's clamp, shaders/lib/material.glsl), and the most multiplications all of a scene's
 // together may take: on llvmpipe one pow() costs about as much as 50 (docs/performance.md).
 inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
-inline constexpr std::size_t kMaxSpecularExponents = 4;
+inline constexpr std::size_t kMaxSpecularExponents = 6;
 inline constexpr int kSpecularMultiplicationBudget = 32;
 using SpecularExponents = std::array<std::uint16_t, kMaxSpecularExponents>;
 
@@ -77,8 +77,8 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT_* as
-// `features` allow.
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT_COUNT with SPECULAR_EXPONENTS
+// as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).

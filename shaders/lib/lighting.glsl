@@ -51,30 +51,23 @@ float integerPower(float x, uint n)
 
 // x^shininess for x in [0, 1]. pow() is exp2(shininess · log2(x)), whose two polynomials cost
 // a quarter of a lighting pass on llvmpipe (docs/performance.md). A program built with
-// SPECULAR_EXPONENT_COUNT k (1 to 4) and SPECULAR_EXPONENT_0 < ... < SPECULAR_EXPONENT_<k-1>
-// (render/LightingPrograms.h: the integer shininesses of every surface of the scene with a
-// specular term, where their multiplications are few) multiplies instead: each power is
-// computed and the surface's shininess picks its own by the midpoints between them, which a
-// compact G-buffer's decoded shininess (within 0.01% of the material's) never crosses.
+// SPECULAR_EXPONENT_COUNT k and SPECULAR_EXPONENTS, k ascending integers (render/LightingPrograms.h:
+// the shininesses of every surface of the scene with a specular term, where their
+// multiplications are few), multiplies instead: each power is computed, and the surface's
+// shininess picks its own by the midpoints between them, which a compact G-buffer's decoded
+// shininess (within 0.01% of the material's) never crosses. The loop's bounds are constants:
+// it unrolls, and the exponents become constants of each integerPower.
+#ifdef SPECULAR_EXPONENT_COUNT
+const uint kSpecularExponents[SPECULAR_EXPONENT_COUNT] = uint[](SPECULAR_EXPONENTS);
+#endif
 float specularPower(float x, float shininess)
 {
 #ifdef SPECULAR_EXPONENT_COUNT
-    float power = integerPower(x, uint(SPECULAR_EXPONENT_0));
-#if SPECULAR_EXPONENT_COUNT > 1
-    power = shininess > 0.5 * float(SPECULAR_EXPONENT_0 + SPECULAR_EXPONENT_1)
-                ? integerPower(x, uint(SPECULAR_EXPONENT_1))
-                : power;
-#endif
-#if SPECULAR_EXPONENT_COUNT > 2
-    power = shininess > 0.5 * float(SPECULAR_EXPONENT_1 + SPECULAR_EXPONENT_2)
-                ? integerPower(x, uint(SPECULAR_EXPONENT_2))
-                : power;
-#endif
-#if SPECULAR_EXPONENT_COUNT > 3
-    power = shininess > 0.5 * float(SPECULAR_EXPONENT_2 + SPECULAR_EXPONENT_3)
-                ? integerPower(x, uint(SPECULAR_EXPONENT_3))
-                : power;
-#endif
+    float power = integerPower(x, kSpecularExponents[0]);
+    for (int i = 1; i < SPECULAR_EXPONENT_COUNT; ++i) {
+        float next = integerPower(x, kSpecularExponents[i]);
+        power = shininess > 0.5 * float(kSpecularExponents[i - 1] + kSpecularExponents[i]) ? next : power;
+    }
     return power;
 #else
     return pow(x, shininess);
