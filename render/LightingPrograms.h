@@ -1,11 +1,14 @@
-// Lighting programs specialised for the kinds of light a scene has.
+// Lighting programs specialised for the kinds of light a scene has and its materials'
+// shininesses.
 //
 // On llvmpipe a shader runs 8 or 16 pixels in lock step and executes both sides of every
 // branch under a lane mask, so code for a kind of light the scene lacks still costs every
 // (pixel, light) pair: a spot factor's pow, the other falloff. Each lighting program is
 // therefore compiled per LightingFeatures, on first use, with the #defines of
-// shaders/lib/lighting.glsl that leave out what the scene cannot need (docs/performance.md).
-// A program built without them (gl::Program with shaderDefines alone) handles every scene.
+// shaders/lib/lighting.glsl that leave out what the scene cannot need, and with its few
+// integer shininesses as constants, whose powers are cheaper as multiplications than as pow()
+// (docs/performance.md). A program built without them (gl::Program with shaderDefines alone)
+// handles every scene.
 // The same variants also choose where the lights are read from (LightSource).
 #pragma once
 
@@ -77,8 +80,8 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION and SPECULAR_EXPONENT_COUNT with SPECULAR_EXPONENTS
-// as `features` allow.
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, and SPECULAR_EXPONENT_COUNT
+// with SPECULAR_EXPONENTS, as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).
