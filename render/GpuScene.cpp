@@ -181,10 +181,15 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     }
     if (scene.lightMarkerRadius)
         addLightMarkers(*scene.lightMarkerRadius);
-    std::vector<const Material*> drawnMaterials;
-    for (const DrawItem& draw : draws_)
-        drawnMaterials.push_back(draw.material);
-    lightingFeatures_.specularExponents = specularExponentsOf(drawnMaterials);
+    // The specular powers as multiplications were measured on llvmpipe only. A GPU computes
+    // pow() with two special-function instructions (log2, exp2), where several chains of
+    // multiplications may well be slower: there it stays (no GPU was lent to measure it).
+    if (softwareRenderer_) {
+        std::vector<const Material*> drawnMaterials;
+        for (const DrawItem& draw : draws_)
+            drawnMaterials.push_back(draw.material);
+        lightingFeatures_.specularExponents = specularExponentsOf(drawnMaterials);
+    }
     groupDrawsIntoBatches();
     instances_.resize(draws_.size());
     instanceBuffer_ = gl::Buffer("instances", std::max<std::size_t>(1, instances_.size()) * sizeof(GpuInstance),
