@@ -32,14 +32,13 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
     }
     if (shininesses.size() > kMaxSpecularExponents)
         return {};
-    SpecularExponents exponents{};
-    std::size_t count = 0;
+    SpecularExponents exponents;
     int multiplications = 0;
     for (const float shininess : shininesses) {  // ascending
         if (shininess < 1.0f || shininess > kMaxSpecularExponent || std::floor(shininess) != shininess)
             return {};
-        exponents[count] = static_cast<std::uint16_t>(shininess);
-        multiplications += integerPowerMultiplications(exponents[count++]);
+        exponents.push_back(static_cast<std::uint16_t>(shininess));
+        multiplications += integerPowerMultiplications(exponents.back());
     }
     return multiplications <= kSpecularMultiplicationBudget ? exponents : SpecularExponents{};
 }
@@ -59,14 +58,11 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
     if (!features.ambientOcclusion)
         defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
-    const auto exponents =
-        static_cast<std::size_t>(std::count_if(features.specularExponents.begin(), features.specularExponents.end(),
-                                               [](std::uint16_t exponent) { return exponent != 0; }));
-    if (exponents != 0) {
+    if (!features.specularExponents.empty()) {
         std::string list;
-        for (std::size_t i = 0; i < exponents; ++i)
-            list += (i == 0 ? "" : ", ") + std::to_string(features.specularExponents[i]) + "u";
-        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(exponents));
+        for (const std::uint16_t exponent : features.specularExponents)
+            list += (list.empty() ? "" : ", ") + std::to_string(exponent) + "u";
+        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(features.specularExponents.size()));
         defines.emplace_back("SPECULAR_EXPONENTS", list);
     }
     return defines;

@@ -12,7 +12,6 @@
 // The same variants also choose where the lights are read from (LightSource).
 #pragma once
 
-#include <array>
 #include <bit>
 #include <compare>
 #include <cstddef>
@@ -30,20 +29,18 @@
 namespace manylights {
 
 // The largest shininess, and the most distinct ones in a scene, that the lighting function
-// raises to by multiplications (shaders/lib/lighting.glsl specularPower; 2048 is also the glTF
+// raises to by multiplications (shaders/lib/specular_power.glsl; 2048 is also the glTF
 // exponent's clamp, shaders/lib/material.glsl), and the most multiplications all of a scene's
 // together may take: on llvmpipe one pow() costs about as much as 50 (docs/performance.md).
 inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
 inline constexpr std::size_t kMaxSpecularExponents = 6;
 inline constexpr int kSpecularMultiplicationBudget = 32;
-using SpecularExponents = std::array<std::uint16_t, kMaxSpecularExponents>;
+// Distinct integer shininesses, ascending; empty where the lighting function takes pow().
+using SpecularExponents = std::vector<std::uint16_t>;
 
-// The multiplications x^n takes by squaring (shaders/lib/lighting.glsl integerPower): one per
-// bit below n's highest, one more per set bit after the first.
-constexpr int integerPowerMultiplications(std::uint16_t n)
-{
-    return n == 0 ? 0 : std::bit_width(n) - 1 + std::popcount(n) - 1;
-}
+// The multiplications x^n takes by squaring, n ≥ 1 (shaders/lib/specular_power.glsl
+// integerPower): one per bit below n's highest, one more per set bit after the first.
+constexpr int integerPowerMultiplications(std::uint16_t n) { return std::bit_width(n) - 1 + std::popcount(n) - 1; }
 
 struct LightingFeatures {
     bool spotLights = true;
@@ -56,11 +53,9 @@ struct LightingFeatures {
     // pass on the courtyard (docs/performance.md).
     bool directionalShadow = true;
     bool ambientOcclusion = true;
-    // The shininesses of every surface the scene draws with a specular term, when they are at
-    // most kMaxSpecularExponents integers in [1, kMaxSpecularExponent] (specularExponentsOf),
-    // ascending, then zeros; all zeros otherwise. The lighting function then raises N·H to them
-    // by multiplications instead of pow(), which costs a quarter of a lighting pass on llvmpipe
-    // (docs/performance.md).
+    // The shininesses of every surface the scene draws with a specular term where few enough
+    // integers to raise N·H to by multiplications (specularExponentsOf), else empty: pow() costs
+    // a quarter of a lighting pass on llvmpipe (docs/performance.md).
     SpecularExponents specularExponents{};
 
     auto operator<=>(const LightingFeatures&) const = default;
@@ -73,8 +68,8 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
 
 // The distinct shininesses of the materials in `materials` with a specular term, ascending,
 // when there are at most kMaxSpecularExponents, each is an integer in [1, kMaxSpecularExponent]
-// and their integerPowerMultiplications sum to at most kSpecularMultiplicationBudget; else all
-// zeros. A material without a specular term (its specular colour and tint zero, as a light
+// and their integerPowerMultiplications sum to at most kSpecularMultiplicationBudget; else none.
+// A material without a specular term (its specular colour and tint zero, as a light
 // marker's) is shaded the same by any exponent and does not count; one with a
 // metallic-roughness map has a shininess per texel and rules them out.
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);

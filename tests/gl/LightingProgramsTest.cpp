@@ -82,7 +82,7 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
     const Material shiny16 = materialOf(16.0f, glm::vec3{0.5f});
     const Material alsoShiny16 = materialOf(16.0f, glm::vec3{0.1f, 0.0f, 0.0f});
     const Material matte = materialOf(5.0f, glm::vec3{0.0f});  // no specular term: any exponent shades it the same
-    EXPECT_EQ(specularExponentsOf({&shiny16, &alsoShiny16, &matte}), (SpecularExponents{16, 0, 0, 0}));
+    EXPECT_EQ(specularExponentsOf({&shiny16, &alsoShiny16, &matte}), (SpecularExponents{16}));
     EXPECT_EQ(specularExponentsOf({&matte}), none);  // nothing specular: nothing to raise
     EXPECT_EQ(specularExponentsOf({}), none);
 
@@ -106,7 +106,7 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
     const Material shiny223 = materialOf(223.0f, glm::vec3{0.5f});
     const Material shiny255 = materialOf(255.0f, glm::vec3{0.5f});
     EXPECT_EQ(specularExponentsOf({&shiny127, &shiny191, &shiny223, &shiny255}), none);
-    EXPECT_EQ(specularExponentsOf({&shiny255, &shiny16}), (SpecularExponents{16, 255, 0, 0}));
+    EXPECT_EQ(specularExponentsOf({&shiny255, &shiny16}), (SpecularExponents{16, 255}));
     EXPECT_EQ(integerPowerMultiplications(1), 0);
     EXPECT_EQ(integerPowerMultiplications(16), 4);     // four squarings
     EXPECT_EQ(integerPowerMultiplications(13), 5);     // 1101: three squarings, two products
@@ -119,7 +119,7 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
     EXPECT_EQ(specularExponentsOf({&below}), none);
     const Material smallest = materialOf(1.0f, glm::vec3{0.5f});
     const Material largest = materialOf(kMaxSpecularExponent, glm::vec3{0.5f});
-    EXPECT_EQ(specularExponentsOf({&largest, &smallest}), (SpecularExponents{1, kMaxSpecularExponent, 0, 0}));
+    EXPECT_EQ(specularExponentsOf({&largest, &smallest}), (SpecularExponents{1, kMaxSpecularExponent}));
     const Material tooLarge = materialOf(kMaxSpecularExponent + 1.0f, glm::vec3{0.5f});
     EXPECT_EQ(specularExponentsOf({&tooLarge}), none);
 
@@ -127,14 +127,14 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
     // per texel, even where the material's own specular is zero.
     Material metal = materialOf(16.0f, glm::vec3{0.0f});
     metal.specularTint = glm::vec3{0.9f};
-    EXPECT_EQ(specularExponentsOf({&metal}), (SpecularExponents{16, 0, 0, 0}));
+    EXPECT_EQ(specularExponentsOf({&metal}), (SpecularExponents{16}));
     Material mapped = materialOf(16.0f, glm::vec3{0.0f});
     mapped.metallicRoughnessMap = "roughness.png";
     EXPECT_EQ(specularExponentsOf({&shiny16, &mapped}), none);
 
     LightingFeatures features;
     EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
-    features.specularExponents = {13, 40, 0, 0};
+    features.specularExponents = {13, 40};
     const gl::Defines defines = lightingFeatureDefines(features, {});
     const gl::Defines expected = {{"SPECULAR_EXPONENT_COUNT", "2"}, {"SPECULAR_EXPONENTS", "13u, 40u"}};
     EXPECT_EQ(defines, expected);
@@ -164,10 +164,10 @@ TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentsOfWhatItDraws)
                                       "c": {"specular": [0.5, 0.5, 0.5], "shininess": 40.5}})";
     // The markers (no specular term) do not count, nor does a material no object uses.
     EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])"),
-              (SpecularExponents{16, 0, 0, 0}));
+              (SpecularExponents{16}));
     EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "b"},
                                         {"mesh": {"primitive": "sphere", "radius": 1}, "material": "a"}])"),
-              (SpecularExponents{16, 40, 0, 0}));
+              (SpecularExponents{16, 40}));
     EXPECT_EQ(exponentsOf(materials, R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "c"}])"),
               SpecularExponents{});
 }
