@@ -19,11 +19,11 @@ Surface gbufferSurface(ivec2 pixel)
     // One texel fetch for the whole surface: llvmpipe's cost per fetch, not per byte, is what
     // a light volume's fragment pays for every (pixel, light) pair (docs/gbuffer.md).
     uvec4 stored = texelFetch(gSurface, pixel, 0);
-    s.position = gbufferPositionAtDepth(pixel, uintBitsToFloat(stored.x));
-    s.normal = octahedralDecode(unpackUnorm2x16(stored.y));
-    s.diffuse = unpackUnorm4x8(stored.z).rgb;
-    s.specular = unpackUnorm4x8(stored.w).rgb;
-    s.shininess = decodeShininess((stored.z >> 24u) << 8u | stored.w >> 24u);
+    s.position = gbufferPositionAtDepth(pixel, surfaceViewDepth(stored));
+    s.normal = surfaceNormal(stored);
+    s.diffuse = surfaceDiffuse(stored);
+    s.specular = surfaceSpecular(stored);
+    s.shininess = surfaceShininess(stored);
 #else
     s.position = gbufferPosition(pixel);
     s.normal = texelFetch(gNormal, pixel, 0).xyz;

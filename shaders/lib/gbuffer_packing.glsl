@@ -52,3 +52,30 @@ uvec4 packSurface(float viewDepth, vec3 normal, vec3 diffuse, vec3 specular, flo
                  packUnorm4x8(vec4(diffuse, 0.0)) | (code >> 8u) << 24u,
                  packUnorm4x8(vec4(specular, 0.0)) | (code & 255u) << 24u);
 }
+
+// The parts of a surface texel: packSurface()'s inverse, up to the rounding of the unorms and of
+// the shininess code.
+float surfaceViewDepth(uvec4 texel)
+{
+    return uintBitsToFloat(texel.x);
+}
+
+vec3 surfaceNormal(uvec4 texel)
+{
+    return octahedralDecode(unpackUnorm2x16(texel.y));
+}
+
+vec3 surfaceDiffuse(uvec4 texel)
+{
+    return unpackUnorm4x8(texel.z).rgb;
+}
+
+vec3 surfaceSpecular(uvec4 texel)
+{
+    return unpackUnorm4x8(texel.w).rgb;
+}
+
+float surfaceShininess(uvec4 texel)
+{
+    return decodeShininess((texel.z >> 24u) << 8u | texel.w >> 24u);
+}

@@ -2,6 +2,7 @@
 // the only G-buffer value the culling compute shaders need. Needs lib/frame.glsl.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"
+#include "lib/gbuffer_packing.glsl"
 
 #ifdef GBUFFER_COMPACT
 // Compact layout: one RGBA32UI texel holds the whole surface (lib/gbuffer.glsl reads the rest
@@ -28,7 +29,7 @@ vec3 gbufferPositionAtDepth(ivec2 pixel, float viewDepth)
 
 vec3 gbufferPosition(ivec2 pixel)
 {
-    return gbufferPositionAtDepth(pixel, uintBitsToFloat(texelFetch(gSurface, pixel, 0).x));
+    return gbufferPositionAtDepth(pixel, surfaceViewDepth(texelFetch(gSurface, pixel, 0)));
 }
 #else
 // Seed layout: the position is stored as it is.
