@@ -4,7 +4,8 @@
 # the kit's light counts, where every light reaches every covered pixel, then (frame without the
 # geometry pass at B − at A) / (in-range pairs at B − at A) in nanoseconds of wall time per
 # (pixel, light) pair. The geometry pass and the per-pixel work cancel out. With OLD= another
-# build runs interleaved with this one (old, new per technique and count) and both are printed.
+# build runs interleaved with this one (old, new per technique and count) and both are printed,
+# and then how far apart the two builds' images are at the larger count (PFM, in 1/255 steps).
 # Prints the machine and its load first; read the figures as ratios within one run.
 #
 #   scripts/measure-kit-pair-cost.sh
@@ -57,4 +58,26 @@ for technique in techniques:
         (frame_a, shade_a), (frame_b, shade_b) = shading(build, a, technique), shading(build, b, technique)
         ns = (shade_b - shade_a) * 1e6 / (pairs[b] - pairs[a])
         print(f"{technique:<12} {build:<5} {frame_a:11.1f} -> {frame_b:9.1f} {shade_a:9.1f} -> {shade_b:9.1f} {ns:12.2f}")
+PY
+[ -z "${OLD:-}" ] && exit 0
+for technique in ${techniques//,/ }; do
+  for build in old new; do
+    LIBGL_ALWAYS_SOFTWARE=1 LP_NUM_THREADS=${LP_NUM_THREADS:-2} "$(binary_of "$build")" render \
+      "$kit/manylights-nanosuits-${counts#*,}.json" -o "$out/$build-$technique.pfm" --size 800x600 \
+      --technique "$technique" >/dev/null
+  done
+done
+python3 - "$out" "$techniques" "${counts#*,}" <<'PY'
+import struct, sys
+out, techniques, lights = sys.argv[1], sys.argv[2].split(","), sys.argv[3]
+def floats(path):
+    data = open(path, "rb").read()
+    header = data.split(b"\n", 3)
+    width, height = map(int, header[1].split())
+    return struct.unpack(f"<{3 * width * height}f", header[3][: 12 * width * height])
+print(f"old against new image at {lights} lights (PFM): largest difference in 1/255 steps, channels that differ")
+for technique in techniques:
+    old, new = floats(f"{out}/old-{technique}.pfm"), floats(f"{out}/new-{technique}.pfm")
+    differences = [abs(a - b) for a, b in zip(old, new)]
+    print(f"{technique:<12} {255 * max(differences):10.4f} {sum(d > 0 for d in differences):>10,} of {len(differences):,}")
 PY
