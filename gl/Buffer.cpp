@@ -44,4 +44,18 @@ void Buffer::clearToZero(std::size_t bytes)
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
+void Buffer::copyTo(const Buffer& to, std::size_t bytes) const
+{
+    ML_ASSERT(bytes <= size_ && bytes <= to.size_);
+    if (bytes > 0)
+        glCopyNamedBufferSubData(id(), to.id(), 0, 0, static_cast<GLsizeiptr>(bytes));
+}
+
+void Buffer::read(std::size_t offset, std::size_t bytes, void* data) const
+{
+    ML_ASSERT(offset + bytes <= size_);
+    if (bytes > 0)
+        glGetNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
 }  // namespace manylights::gl

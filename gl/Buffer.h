@@ -32,6 +32,12 @@ public:
     // GL command: shaders of later commands see the zeros.
     void clearToZero(std::size_t bytes);
     void bindBase(GLenum target, GLuint index) const;
+    // Copies the first `bytes` into `to` on the GPU (glCopyNamedBufferSubData).
+    void copyTo(const Buffer& to, std::size_t bytes) const;
+    // Reads `bytes` from `offset` back to the CPU, waiting for the commands that write them.
+    void read(std::size_t offset, std::size_t bytes, void* data) const;
+    // Makes this the buffer glDispatchComputeIndirect reads its workgroup counts from.
+    void bindAsDispatchIndirect() const { glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, id()); }
     std::size_t size() const { return size_; }
 
 private:

@@ -23,21 +23,25 @@ GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupS
 
 }  // namespace
 
-gl::Defines clusterGridDefines(gl::Defines defines, int slices)
+gl::Defines clusterGridDefines(gl::Defines defines, const ClusterGridShape& shape)
 {
     addLightBatchDefines(defines);
-    defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(kClusterTileSize));
-    ML_ASSERT(slices >= 1 && slices <= 32);
-    defines.emplace_back("CLUSTER_SLICES", std::to_string(slices));
+    ML_ASSERT(shape.tileSize >= 4 && shape.tileSize <= 32);
+    defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(shape.tileSize));
+    ML_ASSERT(shape.slices >= 1 && shape.slices <= 32);
+    defines.emplace_back("CLUSTER_SLICES", std::to_string(shape.slices));
+    if (shape.surfaceBounds)
+        defines.emplace_back("CLUSTER_SURFACE_BOUNDS", "1");
     return defines;
 }
 
-ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, int slices)
-    : slices_(slices),
+ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, const ClusterGridShape& shape)
+    : shape_(shape),
       tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
-             clusterGridDefines(gbufferDefines(gbufferLayout), slices)),
+             clusterGridDefines(gbufferDefines(gbufferLayout), shape)),
+      // The masks are the transparency grid's, whose boxes are the frustum's sections.
       assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}},
-              clusterGridDefines(lightTileDefines(), slices))
+              clusterGridDefines(lightTileDefines(), {.tileSize = shape.tileSize, .slices = shape.slices}))
 {
 }
 
@@ -52,10 +56,10 @@ std::uint32_t ClusterGrid::lightsPerBatch(int width, int height, int slices)
 
 void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
 {
-    gridWidth_ = tilesAlong(width, kClusterTileSize);
-    gridHeight_ = tilesAlong(height, kClusterTileSize);
+    gridWidth_ = tilesAlong(width, shape_.tileSize);
+    gridHeight_ = tilesAlong(height, shape_.tileSize);
     const auto tiles = static_cast<std::uint32_t>(gridWidth_ * gridHeight_);
-    clusterCount_ = tiles * static_cast<std::uint32_t>(slices_);
+    clusterCount_ = tiles * static_cast<std::uint32_t>(shape_.slices);
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
     if (!tileSlices_ || tileSlices_.size() != tileBytes) {
         // Dynamic: coverDepthRanges writes them from the CPU.
@@ -70,6 +74,9 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
         masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
     if (!summaries_ || summaries_.size() < summaryBytes)
         summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
+    const std::size_t boundsBytes = 2 * 4 * sizeof(float) * (clusterCount_ + tiles);
+    if (shape_.surfaceBounds && (!bounds_ || bounds_.size() != boundsBytes))
+        bounds_ = gl::Buffer("cluster surface bounds", boundsBytes, nullptr, 0);
 }
 
 void ClusterGrid::bind() const
@@ -78,6 +85,8 @@ void ClusterGrid::bind() const
     tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
     masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
     summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+    if (bounds_)
+        bounds_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_BOUNDS_BUFFER_BINDING);
 }
 
 Pass ClusterGrid::fitPass()
@@ -103,7 +112,7 @@ void ClusterGrid::fitToSurfaces()
 void ClusterGrid::coverDepthRanges(const std::vector<glm::vec2>& ranges)
 {
     ML_ASSERT(ranges.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
-    const std::uint32_t allSlices = slices_ == 32 ? ~0u : (1u << slices_) - 1u;
+    const std::uint32_t allSlices = shape_.slices == 32 ? ~0u : (1u << shape_.slices) - 1u;
     std::vector<std::uint32_t> slices(ranges.size());
     for (std::size_t tile = 0; tile < ranges.size(); ++tile)
         slices[tile] = ranges[tile].x < ranges[tile].y ? allSlices : 0u;

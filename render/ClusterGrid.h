@@ -31,16 +31,25 @@ inline constexpr int kClusterSlices = 8;
 // kLightsPerBatch lights would need more, the batches get smaller (in whole mask words).
 inline constexpr std::size_t kClusterMaskBudgetBytes = std::size_t{64} << 20;
 
-// `defines` plus the light batch's and the grid's (its slices per tile, at most 32: one bit each
-// in lib/clusters.glsl's tileOccupiedSlices), for programs that include lib/clusters.glsl.
-gl::Defines clusterGridDefines(gl::Defines defines, int slices = kClusterSlices);
+// The shape of a grid: its tiles' size in pixels, its slices per tile (at most 32: one bit each
+// in lib/clusters.glsl's tileOccupiedSlices), and whether fitting it to the surfaces keeps
+// the box around each cluster's surfaces (the light lists test lights against those).
+struct ClusterGridShape {
+    int tileSize = kClusterTileSize;
+    int slices = kClusterSlices;
+    bool surfaceBounds = false;
+};
+
+// `defines` plus the light batch's and the grid's, for programs that include lib/clusters.glsl.
+gl::Defines clusterGridDefines(gl::Defines defines, const ClusterGridShape& shape = {});
 
 class ClusterGrid {
 public:
-    // `slices` per tile: the programs that read the grid are compiled for the same number.
-    explicit ClusterGrid(GBufferLayout gbufferLayout, int slices = kClusterSlices);
+    // The programs that read the grid are compiled for the same shape (clusterGridDefines).
+    explicit ClusterGrid(GBufferLayout gbufferLayout, const ClusterGridShape& shape = {});
 
-    // The most lights one batch takes for an image of this size (a multiple of 32).
+    // The most lights one batch of masks takes for an image of this size (a multiple of 32), in
+    // a grid of kClusterTileSize tiles.
     static std::uint32_t lightsPerBatch(int width, int height, int slices = kClusterSlices);
 
     // Sizes the buffers for the image and the frame's largest light batch.
@@ -65,12 +74,18 @@ public:
     void assignLights(const LightBatch& batch);
 
     std::uint32_t clusterCount() const { return clusterCount_; }
+    // The GPU memory of its buffers.
+    std::size_t memoryBytes() const
+    {
+        return tileDepthRanges_.size() + tileSlices_.size() + masks_.size() + summaries_.size() + bounds_.size();
+    }
+    const ClusterGridShape& shape() const { return shape_; }
     // The tiles across and down, after resize.
     int gridWidth() const { return gridWidth_; }
     int gridHeight() const { return gridHeight_; }
 
 private:
-    int slices_;
+    ClusterGridShape shape_;
     gl::Program tiles_;
     gl::Program assign_;
     int gridWidth_ = 0;
@@ -80,6 +95,7 @@ private:
     gl::Buffer tileSlices_;
     gl::Buffer masks_;
     gl::Buffer summaries_;
+    gl::Buffer bounds_;  // with surfaceBounds: lib/clusters.glsl's clusterBounds
 };
 
 }  // namespace manylights

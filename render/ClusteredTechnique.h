@@ -1,18 +1,18 @@
 // clustered (Olsson, Billeter, Assarsson, HPG 2012): the view frustum cut into clusters:
 // screen tiles times depth slices. Each frame, a compute pass finds each tile's depth range
 // and the slices of it that hold surfaces (the slices adapt to each tile: Olsson et al.'s
-// compaction to occupied clusters, and Harada's 2.5D culling, in one); then, per light
-// batch, a compute pass sets each light's bit in the mask of every occupied cluster it
-// reaches, and the lighting pass shades each pixel with the lights of its cluster's mask.
-// The masks have a fixed size (a bit per light of the batch), so no light can be dropped,
-// nothing is read back and no pass loops more than a bounded number of times
-// (docs/techniques.md says why bit masks and not lists).
+// compaction to occupied clusters, and Harada's 2.5D culling, in one); then the light lists
+// of the occupied clusters are built on the GPU (render/ClusterLists.h: pairs counted,
+// written and sorted by cluster), and one lighting pass shades each pixel with its cluster's
+// list, testing each light against the pixel's surface before shading it. Lists longer than
+// one invocation may walk are finished by passes over their tiles only. Nothing is read back
+// during the frame, and no light is dropped at any count (docs/techniques.md).
 #pragma once
 
 #include <cstdint>
 
 #include "render/ClusterGrid.h"
-#include "render/LightBatches.h"
+#include "render/ClusterLists.h"
 #include "render/LightingPrograms.h"
 #include "render/Technique.h"
 
@@ -23,17 +23,17 @@ public:
     explicit ClusteredTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "clustered"; }
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
+    bool frameFitted() override { return lists_.fitted(); }
 
-    // clusters (the grid's size) and light_batches (passes of the last frame).
+    // clusters (the grid's size), cluster_pairs and longest_cluster_list (of the last frame),
+    // cluster_rebuilds (frames redone so far) and gpu_memory_bytes (lists and grid).
     std::vector<TechniqueCounter> counters() const override;
 
 private:
     ClusterGrid grid_;
-    // Compiled per light source: a frame of one batch that fits a uniform window reads it where
-    // the scene reads windows (GpuScene::readsLightWindows); other frames read the light texels
-    // and keep batches as large as the mask budget allows.
-    LightingProgram lighting_;
-    std::uint32_t batchCount_ = 0;  // of the last frame
+    ClusterLists lists_;
+    LightingProgram lighting_;      // part 0 of every list: the one pass over the image
+    LightingProgram longLighting_;  // the later parts of long lists, over their tiles
 };
 
 }  // namespace manylights

@@ -10,7 +10,8 @@ namespace {
 // The barrier bits each kind of access needs after incoherent writes.
 constexpr GLbitfield kAllAccess = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+                                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                                  GL_COMMAND_BARRIER_BIT;
 
 template <typename Visit>
 void forEachResource(Resource set, Visit&& visit)
@@ -50,6 +51,8 @@ GLbitfield FramePasses::barrierFor(const Pass& pass) const
     // A compute pass on storage buffers may start by clearing them.
     need(pass.storage, GL_SHADER_STORAGE_BARRIER_BIT, GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     need(pass.target, GL_FRAMEBUFFER_BARRIER_BIT, GL_FRAMEBUFFER_BARRIER_BIT);
+    need(pass.transfers, GL_BUFFER_UPDATE_BARRIER_BIT, GL_BUFFER_UPDATE_BARRIER_BIT);
+    need(pass.indirect, GL_COMMAND_BARRIER_BIT, GL_COMMAND_BARRIER_BIT);
     return bits;
 }
 

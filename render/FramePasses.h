@@ -56,6 +56,10 @@ struct Pass {
     Resource images = Resource::None;
     // Read or written as storage buffers (the pass binds its own buffers).
     Resource storage = Resource::None;
+    // Read by buffer commands: copied from, or read back.
+    Resource transfers = Resource::None;
+    // Read as the parameters of an indirect draw or dispatch.
+    Resource indirect = Resource::None;
     // Of the images and storage buffers, those the pass writes (stores, atomics, clears):
     // the next pass that uses them waits for the writes.
     Resource writes = Resource::None;

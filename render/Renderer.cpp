@@ -99,6 +99,21 @@ Technique& Renderer::technique(std::string_view name)
 
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 {
+    // A technique whose storage, planned from the frame before, was too small for this one has
+    // planned anew, and the frame is rendered again (render/ClusterLists.h). Twice at most: a
+    // frame whose lists overflowed their storage may have hidden how long the longest is.
+    constexpr int kAttempts = 3;
+    for (int attempt = 1;; ++attempt) {
+        FrameSample sample = renderFrameOnce(technique, view);
+        if (technique.frameFitted())
+            return sample;
+        if (attempt == kAttempts)
+            throw Error("the " + std::string(technique.name()) + " technique's storage cannot hold this frame's work");
+    }
+}
+
+FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
+{
     glViewport(0, 0, targets_->width, targets_->height);
     ML_ASSERT(desc_.countWork || view != ViewMode::LightCount);
     // The technique's shaders read this renderer's G-buffer and, when counting, write the

@@ -138,6 +138,8 @@ public:
     int height() const { return targets_->height; }
 
 private:
+    // renderFrame without the redo of a frame the technique's storage did not fit.
+    FrameSample renderFrameOnce(Technique& technique, ViewMode view);
     // What the settings ask of the techniques' shaders.
     TechniqueOptions techniqueOptions() const;
     // The targets for desc_'s size and layout, and what was made for the old layout dropped.

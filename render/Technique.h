@@ -59,6 +59,11 @@ public:
     // Renders the frame into targets.lit (already cleared to the background colour) and
     // leaves the scene's depth in targets.depthStencil.
     virtual void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) = 0;
+    // After a frame the renderer has waited for: false when the storage the technique planned
+    // for it (from the frame before) could not hold the frame's work, in which case the
+    // technique has planned for it and the renderer renders the frame again
+    // (render/ClusterLists.h).
+    virtual bool frameFitted() { return true; }
 
 private:
     TechniqueOptions options_;

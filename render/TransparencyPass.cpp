@@ -106,7 +106,7 @@ std::vector<glm::vec2> tileDepthRanges(const std::vector<ItemInView>& items, con
 TransparencyPass::TransparencyPass(const TechniqueOptions& options)
     : options_(options),
       gridProgram_("transparency", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
-                   clusterGridDefines(shaderDefines(options), kTransparentGridSlices)),
+                   clusterGridDefines(shaderDefines(options), {.slices = kTransparentGridSlices})),
       everyLightProgram_("transparency (every light)",
                          {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
                          everyLightDefines(shaderDefines(options))),
@@ -135,7 +135,7 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
     if (!everyLight)
         passes.run(gridPass, [&] {
             if (!grid_)
-                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, kTransparentGridSlices);
+                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, ClusterGridShape{.slices = kTransparentGridSlices});
             grid_->resize(targets.width, targets.height, batches.front().size());
             grid_->coverDepthRanges(tileDepthRanges(items, frame, grid_->gridWidth(), grid_->gridHeight()));
             if (!gridPerLayer)

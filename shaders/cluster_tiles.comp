@@ -1,11 +1,15 @@
 #version 450 core
 // Clustered, once per frame: one invocation per tile finds the nearest and farthest surface
 // seen through the tile (its slices divide that range), then marks the slices that hold a
-// pixel's surface. Only those get lights. A thread per tile walking its pixels, rather than
-// a workgroup per tile meeting at barriers: llvmpipe runs barriers by switching between
-// the workgroup's invocations, which cost more than the walk. The first walk keeps each
-// pixel's depth for the second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
-// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels, 2 · (256 + 17) for 16-pixel tiles.
+// pixel's surface. Only those get lights. With CLUSTER_SURFACE_BOUNDS it also keeps, per
+// occupied cluster and per tile, the view-space box around their surfaces (lib/clusters.glsl),
+// which the light lists test lights against (lib/cluster_culling.glsl).
+// A thread per tile walking its pixels, rather than a workgroup per tile meeting at
+// barriers: llvmpipe runs barriers by switching between the workgroup's invocations, which
+// cost more than the walk. The first walk keeps each pixel's view-space position for the
+// second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
+// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels and three of the slices:
+// 2 · (256 + 17) + 3 · 32 at most.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 #include "lib/light_batch.glsl"
@@ -15,13 +19,15 @@
 layout(local_size_x = 64) in;
 layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
 
-// The view depth of the surface at `pixel`, or 0 where there is none. Surfaces lie beyond
-// the near plane; the floor keeps the slice logs finite whatever the rounding.
-float surfaceDepth(ivec2 pixel)
+// The view-space position of the surface at `pixel` (xyz) and its view depth as the lighting
+// pass computes it (w), or w = 0 where there is none. Surfaces lie beyond the near plane; the
+// floor keeps the slice logs finite whatever the rounding.
+vec4 surfaceAt(ivec2 pixel)
 {
     if (texelFetch(sceneDepth, pixel, 0).r >= 1.0)
-        return 0.0;
-    return max(viewDepth(gbufferPosition(pixel)), frame.projection.z * 0.5);
+        return vec4(0.0);
+    vec3 world = gbufferPosition(pixel);
+    return vec4((frame.view * vec4(world, 1.0)).xyz, max(viewDepth(world), frame.projection.z * 0.5));
 }
 
 void main()
@@ -37,14 +43,14 @@ void main()
     ivec2 end = ivec2(tileHi);
     float nearest = 3.0e38;
     float farthest = 0.0;
-    float depths[CLUSTER_TILE_SIZE * CLUSTER_TILE_SIZE];
+    vec4 surfaces[CLUSTER_TILE_SIZE * CLUSTER_TILE_SIZE];
     for (int y = first.y; y < end.y; ++y)
         for (int x = first.x; x < end.x; ++x) {
-            float depth = surfaceDepth(ivec2(x, y));
-            depths[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x] = depth;
-            if (depth > 0.0) {
-                nearest = min(nearest, depth);
-                farthest = max(farthest, depth);
+            vec4 surface = surfaceAt(ivec2(x, y));
+            surfaces[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x] = surface;
+            if (surface.w != 0.0) {
+                nearest = min(nearest, surface.w);
+                farthest = max(farthest, surface.w);
             }
         }
     if (farthest == 0.0) {
@@ -56,19 +62,52 @@ void main()
     // slice logs are defined even for a tile facing the camera square on.
     vec2 range = vec2(nearest * 0.999, farthest * 1.001);
     uint occupied = 0u;
+#ifdef CLUSTER_SURFACE_BOUNDS
+    vec3 lo[CLUSTER_SLICES];
+    vec3 hi[CLUSTER_SLICES];
+    for (int k = 0; k < CLUSTER_SLICES; ++k) {
+        lo[k] = vec3(3.0e38);
+        hi[k] = vec3(-3.0e38);
+    }
+#endif
     for (int y = first.y; y < end.y; ++y)
         for (int x = first.x; x < end.x; ++x) {
-            float depth = depths[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x];
-            if (depth > 0.0) {
+            vec4 surface = surfaces[(y - first.y) * CLUSTER_TILE_SIZE + x - first.x];
+            if (surface.w != 0.0) {
                 // The lighting pass computes the slice again in another program, whose
                 // rounding may differ: a surface within a hundredth of a slice of a boundary
-                // marks both sides.
-                float coordinate = sliceCoordinate(depth, range);
+                // counts on both sides (it is in both slices' boxes).
+                float coordinate = sliceCoordinate(surface.w, range);
                 uint below = uint(clamp(floor(coordinate - 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 uint above = uint(clamp(floor(coordinate + 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 occupied |= (1u << below) | (1u << above);
+#ifdef CLUSTER_SURFACE_BOUNDS
+                lo[below] = min(lo[below], surface.xyz);
+                hi[below] = max(hi[below], surface.xyz);
+                lo[above] = min(lo[above], surface.xyz);
+                hi[above] = max(hi[above], surface.xyz);
+#endif
             }
         }
     tileDepthRange[tile] = range;
     tileOccupiedSlices[tile] = occupied;
+#ifdef CLUSTER_SURFACE_BOUNDS
+    // Grown by a little more than a view-space coordinate's rounding, so that a surface the
+    // lighting pass finds in reach (in world space) is inside its cluster's box too.
+    vec3 tileLoBound = vec3(3.0e38);
+    vec3 tileHiBound = vec3(-3.0e38);
+    uint clusterBase = tile * uint(CLUSTER_SLICES);
+    for (int k = 0; k < CLUSTER_SLICES; ++k) {
+        if ((occupied & (1u << uint(k))) == 0u)
+            continue;
+        vec3 margin = vec3(1e-5) + 1e-5 * max(abs(lo[k]), abs(hi[k]));
+        clusterBounds[2u * (clusterBase + uint(k))] = vec4(lo[k] - margin, 0.0);
+        clusterBounds[2u * (clusterBase + uint(k)) + 1u] = vec4(hi[k] + margin, 0.0);
+        tileLoBound = min(tileLoBound, lo[k] - margin);
+        tileHiBound = max(tileHiBound, hi[k] + margin);
+    }
+    uint tileBase = 2u * (grid.x * grid.y * uint(CLUSTER_SLICES) + tile);
+    clusterBounds[tileBase] = vec4(tileLoBound, 0.0);
+    clusterBounds[tileBase + 1u] = vec4(tileHiBound, 0.0);
+#endif
 }

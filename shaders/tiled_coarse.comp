@@ -11,6 +11,7 @@
 #include "lib/lights.glsl"
 #include "lib/light_batch.glsl"
 #include "lib/coarse_tiles.glsl"
+#include "lib/culling.glsl"
 #include "lib/light_tiles.glsl"
 
 void main()

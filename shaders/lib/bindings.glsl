@@ -26,6 +26,21 @@ const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag Trans
 const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl ShadowSlotOfLight
 const int SSAO_SAMPLES_BUFFER_BINDING = 11;           // ssao.comp SsaoSamples
 const int SHADOW_SLOTS_BUFFER_BINDING = 12;           // lib/shadows.glsl ShadowSlots
+// The clustered technique's light lists (render/ClusterLists.h).
+const int CLUSTER_LIST_COUNTS_BUFFER_BINDING = 13;   // lib/cluster_lists.glsl, cluster_pairs.comp
+const int CLUSTER_LIST_LIGHTS_BUFFER_BINDING = 14;   // lib/cluster_lists.glsl; pair_sort.comp PairLightsIn
+const int PAIR_KEYS_IN_BUFFER_BINDING = 15;          // cluster_pairs.comp, pair_sort.comp
+const int PAIR_KEYS_OUT_BUFFER_BINDING = 16;         // pair_sort.comp
+const int PAIR_LIGHTS_OUT_BUFFER_BINDING = 17;       // pair_sort.comp
+const int LIGHT_PAIR_OFFSETS_BUFFER_BINDING = 18;    // cluster_pairs.comp
+const int LIGHT_PAIR_CURSORS_BUFFER_BINDING = 19;    // cluster_pairs.comp
+const int CLUSTER_LIST_STATUS_BUFFER_BINDING = 20;   // lib/cluster_list_status.glsl
+const int SCAN_DATA_BUFFER_BINDING = 21;             // scan.comp; pair_sort.comp Histogram
+const int SCAN_PARTIALS_BUFFER_BINDING = 22;         // scan.comp
+const int CLUSTER_LIST_FIRSTS_BUFFER_BINDING = 23;   // lib/cluster_lists.glsl
+const int CLUSTER_LONG_TILES_BUFFER_BINDING = 24;    // cluster_long_lists.comp, clustered_long.comp
+const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
+const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 
 // Texture units. 0-4 are the G-buffer's targets (render/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)

@@ -91,3 +91,31 @@ bool lightMayReachTile(GpuLight light, TileFrustum tile)
     return coneTouchesSphere(centre, axis, light.spotAxisCosCutoff.w, tile.boxCentre, tile.boxRadius);
 #endif
 }
+
+// The rectangle of tiles (first.xy, last.xy inclusive, in a grid of `grid` tiles of
+// `tileSize` pixels) that a sphere in view space covers on screen. A sphere wholly beyond the
+// near plane projects inside the projection of its bounding box's corners; one reaching the
+// eye plane may cover any tile. False when it is off screen.
+bool sphereTileRect(vec3 centre, float radius, uint tileSize, uvec2 grid, out uvec2 first, out uvec2 last)
+{
+    first = uvec2(0u);
+    last = grid - 1u;
+    if (-centre.z - radius <= frame.projection.z)
+        return true;
+    vec2 ndcLo = vec2(1e30);
+    vec2 ndcHi = vec2(-1e30);
+    for (int corner = 0; corner < 8; ++corner) {
+        vec3 p = centre + radius * vec3((corner & 1) != 0 ? 1.0 : -1.0, (corner & 2) != 0 ? 1.0 : -1.0,
+                                        (corner & 4) != 0 ? 1.0 : -1.0);
+        vec2 ndc = p.xy / (-p.z * frame.projection.xy);
+        ndcLo = min(ndcLo, ndc);
+        ndcHi = max(ndcHi, ndc);
+    }
+    if (any(greaterThan(ndcLo, vec2(1.0))) || any(lessThan(ndcHi, vec2(-1.0))))
+        return false;
+    vec2 pixelLo = (clamp(ndcLo, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
+    vec2 pixelHi = (clamp(ndcHi, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
+    first = min(uvec2(pixelLo) / tileSize, grid - 1u);
+    last = min(uvec2(pixelHi) / tileSize, grid - 1u);
+    return true;
+}

@@ -9,37 +9,9 @@
 // 1280x720, the cluster assignment: 23 -> 15 ms, docs/performance.md). Bands bound the walk:
 // a band has rowsPerBand rows, at most kTilesPerBand tiles (render/LightTiles.h), so each
 // invocation visits at most kTilesPerBand / LIGHT_TILE_LANES = 1,024 tiles, whatever the
-// image size. Needs lib/frame.glsl first.
+// image size. Needs lib/frame.glsl and lib/culling.glsl (sphereTileRect) first.
 layout(local_size_x = LIGHT_TILE_LANES) in;
 layout(location = LIGHT_TILE_ROWS_PER_BAND_LOCATION) uniform uint rowsPerBand;
-
-// The rectangle of tiles (first.xy, last.xy inclusive, in a grid of `grid` tiles of
-// `tileSize` pixels) that a sphere in view space covers on screen. A sphere wholly beyond the
-// near plane projects inside the projection of its bounding box's corners; one reaching the
-// eye plane may cover any tile. False when it is off screen.
-bool sphereTileRect(vec3 centre, float radius, uint tileSize, uvec2 grid, out uvec2 first, out uvec2 last)
-{
-    first = uvec2(0u);
-    last = grid - 1u;
-    if (-centre.z - radius <= frame.projection.z)
-        return true;
-    vec2 ndcLo = vec2(1e30);
-    vec2 ndcHi = vec2(-1e30);
-    for (int corner = 0; corner < 8; ++corner) {
-        vec3 p = centre + radius * vec3((corner & 1) != 0 ? 1.0 : -1.0, (corner & 2) != 0 ? 1.0 : -1.0,
-                                        (corner & 4) != 0 ? 1.0 : -1.0);
-        vec2 ndc = p.xy / (-p.z * frame.projection.xy);
-        ndcLo = min(ndcLo, ndc);
-        ndcHi = max(ndcHi, ndc);
-    }
-    if (any(greaterThan(ndcLo, vec2(1.0))) || any(lessThan(ndcHi, vec2(-1.0))))
-        return false;
-    vec2 pixelLo = (clamp(ndcLo, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
-    vec2 pixelHi = (clamp(ndcHi, -1.0, 1.0) * 0.5 + 0.5) * frame.viewport.xy;
-    first = min(uvec2(pixelLo) / tileSize, grid - 1u);
-    last = min(uvec2(pixelHi) / tileSize, grid - 1u);
-    return true;
-}
 
 // The tiles of this workgroup's band that a light covers, row by row as one run.
 struct LightTileRun {

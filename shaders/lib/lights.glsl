@@ -26,6 +26,11 @@ GpuLight batchLight(uint lightIndex)
 {
     return windowLights[lightIndex - lightBatch.x];
 }
+
+vec4 lightPositionRadius(uint lightIndex)
+{
+    return windowLights[lightIndex - lightBatch.x].positionRadius;
+}
 #elif defined(LIGHT_TEXELS)
 // The same buffer as four RGBA32F texels per light (render/LightBatches.h: light texels), for
 // passes whose pixels read different lights, and for every pass on a software rasteriser:
@@ -43,9 +48,19 @@ GpuLight batchLight(uint lightIndex)
     light.spotAxisCosCutoff = texelFetch(lightTexels, first + 3);
     return light;
 }
+
+vec4 lightPositionRadius(uint lightIndex)
+{
+    return texelFetch(lightTexels, int(lightIndex) * 4);
+}
 #else
 GpuLight batchLight(uint lightIndex)
 {
     return lights[lightIndex];
+}
+
+vec4 lightPositionRadius(uint lightIndex)
+{
+    return lights[lightIndex].positionRadius;
 }
 #endif

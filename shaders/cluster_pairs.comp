@@ -1,0 +1,145 @@
+#version 450 core
+// Clustered, once per frame (render/ClusterLists.h): the (cluster, light) pairs, in two runs of
+// the same program: the first (emitPairs 0) counts each light's pairs, which a scan turns into
+// each light's first slot; the second (emitPairs 1) writes them there, the cluster as the sort
+// key and the light as the value, and counts each cluster's. One program for both, so that
+// both runs make the same decisions to the last bit. The lights are shared out two ways, a
+// program each:
+// - without WIDE_LIGHTS, an invocation per light walks the tiles its sphere covers on screen,
+//   when they are at most CLUSTER_PAIR_NARROW_TILES; the counting pass lists the others as
+//   wide lights. Most lights of a large scene are small: an invocation each, not a workgroup
+//   (at a million lights a workgroup per light cost 0.6 us of llvmpipe's dispatch alone);
+// - with WIDE_LIGHTS, a workgroup per wide light and band of tile rows (an indirect dispatch
+//   over the list), its LIGHT_TILE_LANES invocations sharing out the tiles
+//   (lib/light_tiles.glsl): 8 lanes in lock step each walking a light of hundreds of tiles
+//   would wait for the largest.
+// A light's pairs may be written in any order (a wide light's slots are handed out by an
+// atomic), since no two of them share a cluster: sorted by cluster, each cluster's lights
+// follow the lights' order, whatever order the invocations ran in.
+//
+// Loop iterations per invocation: CLUSTER_PAIR_NARROW_TILES tiles, or at most 1,024 (the bands
+// of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
+// about 9,200 at most, within render/LightBatches.h's bound.
+#include "lib/bindings.glsl"
+#include "lib/falloff.glsl"
+#include "lib/frame.glsl"
+#include "lib/lights.glsl"
+#include "lib/clusters.glsl"
+#include "lib/culling.glsl"
+#include "lib/cluster_culling.glsl"
+#include "lib/cluster_list_status.glsl"
+#ifdef WIDE_LIGHTS
+#include "lib/light_tiles.glsl"
+#else
+layout(local_size_x = 64) in;
+#endif
+
+layout(location = CLUSTER_PAIR_EMIT_LOCATION) uniform uint emitPairs;
+#ifndef WIDE_LIGHTS
+layout(location = CLUSTER_PAIR_LIGHT_COUNT_LOCATION) uniform uint lightCount;
+#endif
+layout(std430, binding = LIGHT_PAIR_OFFSETS_BUFFER_BINDING) buffer LightPairOffsets {
+    uint lightPairOffset[];  // counting: each light's pairs; writing: its first slot
+};
+layout(std430, binding = WIDE_LIGHTS_BUFFER_BINDING) buffer WideLights {
+    uint wideLight[];  // the lights the narrow pass left to the wide one
+};
+layout(location = CLUSTER_PAIR_CAPACITY_LOCATION) uniform uint pairCapacity;
+layout(std430, binding = LIGHT_PAIR_CURSORS_BUFFER_BINDING) buffer LightPairCursors {
+    uint lightPairCursor[];  // a wide light's slots handed out so far, from WIDE_LIGHT_MARK
+};
+// The counting run marks the wide lights' cursors, so that the writing run leaves them to the
+// wide program whatever its own sums would say.
+const uint WIDE_LIGHT_MARK = 0x80000000u;
+layout(std430, binding = PAIR_KEYS_IN_BUFFER_BINDING) writeonly buffer PairKeys {
+    uint pairKey[];  // the cluster
+};
+layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) writeonly buffer PairLights {
+    uint pairLight[];  // the light
+};
+layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) buffer ClusterListCounts {
+    uint clusterPairCount[];  // each cluster's pairs (its list's length)
+};
+
+void emitPair(uint slot, uint cluster, uint lightIndex)
+{
+    // Past the storage the frame was planned with: the scan has counted every pair in
+    // pairsNeeded, so the CPU sees the overflow and redoes the frame.
+    if (slot < pairCapacity) {
+        pairKey[slot] = cluster;
+        pairLight[slot] = lightIndex;
+        atomicAdd(clusterPairCount[cluster], 1u);
+    }
+}
+
+// The pairs of `tile` for the light: counted, or written from `slot` on (a narrow light's
+// next slot; a wide light's come from its cursor). Returns the count.
+uint tilePairs(ViewLight light, uint lightIndex, uint tile, uint slot)
+{
+    uint slices = lightSlicesOfTile(light, tile);
+    uint pairs = uint(bitCount(slices));
+    if (emitPairs == 0u)
+        return pairs;
+    while (slices != 0u) {
+        uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
+        slices &= slices - 1u;
+#ifdef WIDE_LIGHTS
+        slot = lightPairOffset[lightIndex] + (atomicAdd(lightPairCursor[lightIndex], 1u) - WIDE_LIGHT_MARK);
+#endif
+        emitPair(slot++, cluster, lightIndex);
+    }
+    return pairs;
+}
+
+void main()
+{
+    uvec2 grid = clusterTileGrid();
+#ifdef WIDE_LIGHTS
+    uint lightIndex = wideLight[gl_WorkGroupID.x];
+    ViewLight light = viewLight(lights[lightIndex]);
+    LightTileRun run;
+    if (!lightTileRun(light.centre, light.radius, light.unbounded, uint(CLUSTER_TILE_SIZE), grid, run))
+        return;
+    uint pairs = 0u;
+    for (uint i = gl_LocalInvocationID.x; i < run.tiles; i += uint(LIGHT_TILE_LANES))
+        pairs += tilePairs(light, lightIndex, tileOfRun(run, i, grid.x), 0u);
+    if (emitPairs == 0u && pairs != 0u)
+        atomicAdd(lightPairOffset[lightIndex], pairs);
+#else
+    // Lights along x and z (a dispatch has at most 65,535 workgroups along x).
+    uint lightIndex = (gl_WorkGroupID.z * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x +
+                      gl_LocalInvocationID.x;
+    if (lightIndex >= lightCount)
+        return;
+    // The writing run skips the lights the counting run found no pair for (most lights of a
+    // large scene reach no surface): their slots end where they begin.
+    if (emitPairs != 0u &&
+        (lightIndex + 1u < lightCount ? lightPairOffset[lightIndex + 1u] : pairsNeeded) == lightPairOffset[lightIndex])
+        return;
+    ViewLight light = viewLight(lights[lightIndex]);
+    if (light.radius <= 0.0)
+        return;
+    uvec2 first = uvec2(0u);
+    uvec2 last = grid - 1u;
+    if (!light.unbounded && (-light.centre.z + light.radius < frame.projection.z ||
+                             !sphereTileRect(light.centre, light.radius, uint(CLUSTER_TILE_SIZE), grid, first, last)))
+        return;
+    uvec2 size = last - first + 1u;
+    if (emitPairs == 0u) {
+        if (light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
+            lightPairCursor[lightIndex] = WIDE_LIGHT_MARK;
+            wideLight[atomicAdd(wideLightGroups[0], 1u)] = lightIndex;
+            return;
+        }
+    } else if (lightPairCursor[lightIndex] == WIDE_LIGHT_MARK) {
+        return;
+    }
+    uint slot = emitPairs != 0u ? lightPairOffset[lightIndex] : 0u;
+    uint pairs = 0u;
+    for (uint y = first.y; y <= last.y; ++y)
+        for (uint x = first.x; x <= last.x; ++x)
+            pairs += tilePairs(light, lightIndex, y * grid.x + x, slot + pairs);
+    if (emitPairs == 0u && pairs != 0u)
+        lightPairOffset[lightIndex] = pairs;
+#endif
+}

@@ -1,0 +1,51 @@
+// The clustered technique's light lists (render/ClusterLists.h), read by its lighting passes:
+// per cluster of lib/clusters.glsl's grid, the lights that may reach it, in the order of the
+// lights (sorted by cluster, stably). A list is walked in parts of CLUSTER_LIST_PART lights,
+// the most one invocation may walk within render/LightBatches.h's bound: part 0 by the
+// lighting pass over the whole image, the later parts of long lists by passes over their
+// tiles only (clustered_long.comp).
+//
+// Each listed light gets a finer test per pixel before it is shaded: whether the pixel's
+// surface lies in the light's sphere, the same test as lib/lighting.glsl's lightReach (so it
+// only skips pairs whose A · S is zero). A cluster is a tile of pixels by a depth slice; a
+// light far smaller than that (the courtyard at a million lights: ranges of 0.1 to 0.2 m, a
+// few pixels) reaches few of its pixels, and the test costs one texel fetch and a length
+// where shading costs four fetches and the BRDF. Only the lights that pass are counted as
+// evaluated (--count-work); the entries walked are counted too, as cluster_list_visits.
+// Needs lib/lighting.glsl and lib/clusters.glsl first.
+
+#ifdef COUNT_WORK
+#include "lib/cluster_list_status.glsl"
+#endif
+layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) readonly buffer ClusterListCounts {
+    uint clusterListCount[];
+};
+layout(std430, binding = CLUSTER_LIST_FIRSTS_BUFFER_BINDING) readonly buffer ClusterListFirsts {
+    uint clusterListFirst[];
+};
+layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) readonly buffer ClusterListLights {
+    uint clusterListLight[];
+};
+
+// Part `part` of the cluster's list, shaded at a surface. Loop iterations: CLUSTER_LIST_PART.
+vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint evaluated)
+{
+    uint count = clusterListCount[cluster];
+    uint first = clusterListFirst[cluster];
+    uint begin = part * uint(CLUSTER_LIST_PART);
+    uint end = min(count, begin + uint(CLUSTER_LIST_PART));
+    vec3 color = vec3(0.0);
+#ifdef COUNT_WORK
+    if (end > begin)
+        atomicAdd(listVisits, end - begin);
+#endif
+    for (uint i = begin; i < end; ++i) {
+        uint lightIndex = clusterListLight[first + i];
+        vec4 positionRadius = lightPositionRadius(lightIndex);
+        if (length(positionRadius.xyz - s.position) < positionRadius.w) {
+            color += shadeLocal(lightIndex, s, V);
+            ++evaluated;
+        }
+    }
+    return color;
+}
