@@ -15,14 +15,16 @@ constexpr GLint kExposureScaleLocation = 0;
 
 }  // namespace
 
-const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb, int supersample)
+const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb, int supersample, bool copy)
 {
-    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb, supersample});
+    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb, supersample, copy});
     if (inserted) {
         gl::Defines defines{{"TONE_CURVE", std::to_string(static_cast<int>(curve))},
                             {"SUPERSAMPLE", std::to_string(supersample)}};
         if (srgb)
             defines.emplace_back("SRGB_ENCODE", "1");
+        if (copy)
+            defines.emplace_back("COPY_OUTPUT", "1");
         found->second =
             gl::Program("display transform",
                         {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}, defines);
@@ -35,6 +37,7 @@ void DisplayPass::resize(int width, int height)
     if (transformed_.width() == width && transformed_.height() == height)
         return;
     antialiasedFramebuffer_ = gl::Framebuffer();
+    transformedAndCopyFramebuffer_ = gl::Framebuffer();
     antialiasedOutput_ = gl::Texture2D();
     edgeStencil_ = gl::Texture2D();
     transformedFramebuffer_ = gl::Framebuffer();
@@ -48,6 +51,8 @@ void DisplayPass::resize(int width, int height)
     antialiasedOutput_ = gl::Texture2D("display anti-aliased", GL_RGBA8, width, height);
     edgeStencil_ = gl::Texture2D("display edges", GL_DEPTH24_STENCIL8, width, height);
     antialiasedFramebuffer_ = gl::Framebuffer("display anti-aliased", {&antialiasedOutput_}, &edgeStencil_);
+    transformedAndCopyFramebuffer_ =
+        gl::Framebuffer("display and its copy", {&transformed_, &antialiasedOutput_}, nullptr);
 }
 
 void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample,
@@ -58,19 +63,19 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
     const int width = lit.width() / supersample;
     const int height = lit.height() / supersample;
     resize(width, height);
+    antialiased_ = settings.antialiasing == Antialiasing::Fxaa;
     {
         auto pass = profiler.pass("display");
-        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb, supersample);
+        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb, supersample, antialiased_);
         program.set(kExposureScaleLocation, std::exp2(settings.exposure));
         lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
-        transformedFramebuffer_.bind();
+        (antialiased_ ? transformedAndCopyFramebuffer_ : transformedFramebuffer_).bind();
         glViewport(0, 0, width, height);
         emptyVertexArray_.bind();
         applyPipelineState(kEveryPixel);
         program.use();
         glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
     }
-    antialiased_ = settings.antialiasing == Antialiasing::Fxaa;
     if (antialiased_) {
         auto pass = profiler.pass("fxaa");
         if (!fxaaProgram_) {
@@ -79,11 +84,10 @@ void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings,
             fxaaProgram_ =
                 gl::Program("fxaa", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa.frag"}});
         }
-        // Most pixels are not on an edge and keep their colour: copied as they are, then the
-        // edge test marks the others in the stencil buffer and the filter runs on those only
-        // (llvmpipe skips stencil-failed pixels before shading, not pixels that return early).
-        glCopyImageSubData(transformed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, antialiasedOutput_.id(), GL_TEXTURE_2D, 0, 0,
-                           0, 0, width, height, 1);
+        // Most pixels are not on an edge and keep their colour, which the display pass wrote
+        // to the output as well; the edge test marks the others in the stencil buffer and the
+        // filter runs on those only (llvmpipe skips stencil-failed pixels before shading, not
+        // pixels that return early).
         antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
         transformed_.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
         antialiasedFramebuffer_.bind();

@@ -37,15 +37,20 @@ public:
     float logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth);
 
 private:
-    const gl::Program& transformProgram(ToneCurve curve, bool srgb, int supersample);
+    // `copy`: the variant that also writes its picture to the second target (FXAA's output).
+    const gl::Program& transformProgram(ToneCurve curve, bool srgb, int supersample, bool copy);
     void resize(int width, int height);
 
-    std::map<std::tuple<ToneCurve, bool, int>, gl::Program> transformPrograms_;  // made on first use
-    gl::Program fxaaEdgesProgram_;                                               // made on first use, with fxaaProgram_
+    std::map<std::tuple<ToneCurve, bool, int, bool>, gl::Program> transformPrograms_;  // made on first use
+    gl::Program fxaaEdgesProgram_;  // made on first use, with fxaaProgram_
     gl::Program fxaaProgram_;
     gl::VertexArray emptyVertexArray_{"display pass"};  // the full-screen triangle needs no attributes
     gl::Texture2D transformed_;
     gl::Framebuffer transformedFramebuffer_;
+    // transformed_ and antialiasedOutput_ together: with FXAA the display pass writes its
+    // picture to both, so that FXAA rewrites only the edge pixels of a copy made for free
+    // (a glCopyImageSubData of the whole picture cost a pass of its own).
+    gl::Framebuffer transformedAndCopyFramebuffer_;
     gl::Texture2D antialiasedOutput_;
     gl::Texture2D edgeStencil_;  // FXAA's edge pixels (shaders/fxaa_edges.frag)
     gl::Framebuffer antialiasedFramebuffer_;

@@ -1,8 +1,10 @@
 // How the linear colour of docs/lighting.md becomes a displayable picture (docs/display.md):
 // exposure, a tone curve, sRGB encoding and anti-aliasing, applied after lighting by one
 // display pass (render/DisplayPass.h) that every technique shares. The scene file's
-// `display` block sets them; the command line overrides it. The defaults change nothing:
-// a PNG is then round(255 · clamp(colour, 0, 1)), the plain look the contract fixes.
+// `display` block sets them; the command line overrides it. The defaults below are the one
+// place the default look is set: AgX, then sRGB (SPEC.md §3, since 2026-11-25), so that a PNG
+// and the window look right on a screen; `--tonemap none --no-srgb` (`--classic`) gives the
+// classic round(255 · clamp(colour, 0, 1)).
 #pragma once
 
 #include <optional>
@@ -31,11 +33,12 @@ inline constexpr int kMaxSupersample = 8;
 
 struct DisplaySettings {
     float exposure = 0.0f;  // EV: the linear colour is multiplied by 2^exposure
-    ToneCurve toneCurve = ToneCurve::None;
-    bool srgb = false;  // encode 8-bit outputs with the sRGB curve (IEC 61966-2-1)
+    // Blender's default view (docs/display.md: why AgX)
+    ToneCurve toneCurve = ToneCurve::Agx;
+    bool srgb = true;  // encode 8-bit outputs with the sRGB curve (IEC 61966-2-1)
     Antialiasing antialiasing = Antialiasing::None;
 
-    // Whether the display pass leaves every value as it is (the contract's default).
+    // Whether the display pass leaves every value as it is (the classic look: no pass runs).
     bool isIdentity() const
     {
         return exposure == 0.0f && toneCurve == ToneCurve::None && !srgb && antialiasing == Antialiasing::None;

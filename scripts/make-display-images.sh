@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The images of docs/display.md, made with the project's own commands (scripts/make-doc-images.sh
-# runs this too): the same frames with the plain look the contract fixes as the default and
-# with the display path's options, and crops that show the edges.
+# runs this too): the same frames in the classic look (`--tonemap none --no-srgb`) and with the
+# display path's options (AgX and sRGB being the default look), and crops that show the edges.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 make build >/dev/null

@@ -12,6 +12,10 @@
 layout(binding = DISPLAY_SOURCE_UNIT) uniform sampler2D litImage;
 layout(location = 0) uniform float exposureScale;  // 2^EV
 layout(location = 0) out vec4 displayed;
+#ifdef COPY_OUTPUT
+// With FXAA: the same picture into FXAA's output, whose non-edge pixels it keeps.
+layout(location = 1) out vec4 displayedCopy;
+#endif
 
 void main()
 {
@@ -29,4 +33,7 @@ void main()
     vec3 colour = displayTransform(linear, exposureScale);
     // Alpha: the luma FXAA finds edges by (shaders/fxaa.frag), of the displayed values.
     displayed = vec4(colour, dot(clamp(colour, 0.0, 1.0), vec3(0.299, 0.587, 0.114)));
+#ifdef COPY_OUTPUT
+    displayedCopy = displayed;
+#endif
 }

@@ -125,8 +125,8 @@ int runCli(int argc, const char* const* argv)
         return usageError("the output must end in .png, .pfm or .exr, got '" + render.output + "'");
     const DisplayOptions& display = render.display;
     if (!eightBit && (display.exposure || display.toneCurve || display.srgb || display.antialiasing))
-        return usageError("--exposure, --tonemap, --srgb, --no-srgb and --aa apply to .png outputs; .pfm and .exr "
-                          "stay linear");
+        return usageError("--exposure, --tonemap, --srgb, --no-srgb, --classic and --aa apply to .png outputs; .pfm "
+                          "and .exr stay linear");
     if (!exr && (render.exrFloat || render.aovs))
         return usageError("--exr-float and --aovs apply to .exr outputs");
     if (!render.statsPath.empty() && sameFile(render.output, render.statsPath))

@@ -146,16 +146,26 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& options)
             "--exposure", [&options](double stops) { options.exposure = static_cast<float>(stops); },
             "Exposure in stops: the linear colour times 2^EV before the tone curve (default: the scene's, else 0)")
         ->check(numberIn(-kMaxExposureStops, kMaxExposureStops));
-    command
-        .add_option_function<std::string>(
-            "--tonemap", [&options](const std::string& name) { options.toneCurve = parseToneCurve(name); },
-            "Tone curve of 8-bit outputs and the window (default: the scene's, else none)")
-        ->check(CLI::IsMember(toneCurveNames()));
+    CLI::Option* tonemap =
+        command
+            .add_option_function<std::string>(
+                "--tonemap", [&options](const std::string& name) { options.toneCurve = parseToneCurve(name); },
+                "Tone curve of 8-bit outputs and the window (default: the scene's, else agx)")
+            ->check(CLI::IsMember(toneCurveNames()));
     CLI::Option* srgb = command.add_flag_callback(
-        "--srgb", [&options] { options.srgb = true; }, "Encode 8-bit outputs and the window with the sRGB curve");
+        "--srgb", [&options] { options.srgb = true; },
+        "Encode 8-bit outputs and the window with the sRGB curve (default: the scene's, else on)");
     CLI::Option* noSrgb = command.add_flag_callback(
         "--no-srgb", [&options] { options.srgb = false; }, "Write 8-bit outputs linear, without the sRGB curve");
     srgb->excludes(noSrgb);
+    CLI::Option* classic = command.add_flag_callback(
+        "--classic",
+        [&options] {
+            options.toneCurve = ToneCurve::None;
+            options.srgb = false;
+        },
+        "The classic look, round(255 * clamp(colour, 0, 1)): short for --tonemap none --no-srgb");
+    classic->excludes(tonemap)->excludes(srgb)->excludes(noSrgb);
     command
         .add_option_function<std::string>(
             "--aa", [&options](const std::string& name) { options.antialiasing = parseAntialiasing(name); },

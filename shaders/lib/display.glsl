@@ -19,10 +19,9 @@ vec3 acesCurve(vec3 x)
 
 // Sobotka's AgX (github.com/sobotka/AgX) as fitted by Wrensch, "Minimal AgX Implementation"
 // (2023): an inset matrix, log2 encoding between −12.47393 and +4.026069 stops around 0.18,
-// the default contrast sigmoid as a 6th-order polynomial, the outset matrix. The result is
-// display-encoded for a 2.2 power display; raising it to 2.2 returns linear display light, so
-// that the sRGB encoding below (or none) applies to every curve alike.
-vec3 agxCurve(vec3 x)
+// the default contrast sigmoid as a 6th-order polynomial, the outset matrix. The result, in
+// [0, 1], is display-encoded for a 2.2 power display.
+vec3 agxEncoded(vec3 x)
 {
     const mat3 inset = mat3(0.842479062253094, 0.0423282422610123, 0.0423756549057051,
                             0.0784335999999992, 0.878468636469772, 0.0784336,
@@ -38,8 +37,14 @@ vec3 agxCurve(vec3 x)
     vec3 v2 = v * v;
     vec3 v4 = v2 * v2;
     v = 15.5 * v4 * v2 - 40.14 * v4 * v + 31.96 * v4 - 6.868 * v2 * v + 0.4298 * v2 + 0.1191 * v - 0.00232;
-    v = outset * v;
-    return pow(clamp(v, 0.0, 1.0), vec3(2.2));
+    return clamp(outset * v, 0.0, 1.0);
+}
+
+// AgX as linear display light: raising Wrensch's output to 2.2 undoes the 2.2 power display's
+// encoding, so that the sRGB encoding below (or none) applies to every curve alike.
+vec3 agxCurve(vec3 x)
+{
+    return pow(agxEncoded(x), vec3(2.2));
 }
 
 vec3 toneCurve(vec3 x)
@@ -64,11 +69,29 @@ vec3 srgbEncode(vec3 c)
     return mix(high, low, lessThanEqual(c, vec3(0.0031308)));
 }
 
+// AgX, then the sRGB encoding, with one log2 where agxCurve and srgbEncode take two (each pow
+// is a log2 and an exp2): sRGB of c^2.2 is 12.92 c^2.2 up to c^2.2 = 0.0031308, that is up to
+// c = 0.0031308^(1/2.2) = 0.072721, and 1.055 c^(2.2/2.4) − 0.055 above. The same function,
+// not an approximation of it: the default look (scene/DisplaySettings.h) runs on every frame,
+// and on llvmpipe the transcendental functions are most of its arithmetic (docs/display.md).
+vec3 agxSrgbEncoded(vec3 x)
+{
+    vec3 c = agxEncoded(x);
+    vec3 stops = log2(max(c, vec3(1e-10)));  // log2(0) is undefined; 1e-10 gives 0 in 8 bits
+    vec3 low = 12.92 * exp2(2.2 * stops);
+    vec3 high = 1.055 * exp2((2.2 / 2.4) * stops) - 0.055;
+    return mix(high, low, lessThanEqual(c, vec3(0.072721)));
+}
+
 vec3 displayTransform(vec3 linear, float exposureScale)
 {
+#if TONE_CURVE == 3 && defined(SRGB_ENCODE)
+    return agxSrgbEncoded(linear * exposureScale);
+#else
     vec3 c = toneCurve(linear * exposureScale);
 #ifdef SRGB_ENCODE
     c = srgbEncode(c);
 #endif
     return c;
+#endif
 }

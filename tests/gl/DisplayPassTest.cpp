@@ -1,7 +1,8 @@
 // The display pass (render/DisplayPass.h) on textures of known values: each tone curve and
 // the sRGB encoding against the published formulas (typed here from the papers, not from
-// shaders/lib/display.glsl), the box filter of supersampling against the CPU's, and FXAA on
-// flat regions (unchanged) and on an analytic edge (closer to the true coverage).
+// shaders/lib/display.glsl), the default settings as AgX then sRGB, the box filter of
+// supersampling against the CPU's, and FXAA on flat regions (unchanged) and on an analytic
+// edge (closer to the true coverage).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,6 +62,11 @@ Image greyRow(const std::vector<float>& values)
     return image;
 }
 
+// The classic look (8-bit values linear and clamped), which the box filter and FXAA tests
+// compare with exact coverages; the default look has its own test.
+const DisplaySettings kClassic{.toneCurve = ToneCurve::None, .srgb = false};
+const DisplaySettings kClassicFxaa{.toneCurve = ToneCurve::None, .srgb = false, .antialiasing = Antialiasing::Fxaa};
+
 const std::vector<float> kInputs{0.0f,  0.001f, 0.0031308f, 0.01f, 0.05f, 0.18f, 0.25f, 0.5f,
                                  0.75f, 1.0f,   1.5f,       2.0f,  4.0f,  16.0f, 100.0f};
 
@@ -84,16 +90,18 @@ void expectCurve(const DisplaySettings& settings, const std::function<double(dou
 
 TEST_F(DisplayPassTest, ExposureScalesByPowersOfTwo)
 {
-    expectCurve({.exposure = 2.0f}, [](double x) { return 4.0 * x; });
-    expectCurve({.exposure = -1.5f}, [](double x) { return x * std::pow(2.0, -1.5); });
+    expectCurve({.exposure = 2.0f, .toneCurve = ToneCurve::None, .srgb = false}, [](double x) { return 4.0 * x; });
+    expectCurve({.exposure = -1.5f, .toneCurve = ToneCurve::None, .srgb = false},
+                [](double x) { return x * std::pow(2.0, -1.5); });
 }
 
 TEST_F(DisplayPassTest, SrgbEncodingAtTheStandardsBreakpoints)
 {
     // IEC 61966-2-1: the linear segment up to 0.0031308 (12.92 c), the power segment above.
-    expectCurve({.srgb = true}, srgbEncode);
+    expectCurve({.toneCurve = ToneCurve::None, .srgb = true}, srgbEncode);
     // Spot values of the standard's table: 0.0031308 -> 0.040449936, 0.18 -> 0.46135612.
-    const std::vector<unsigned char> out = runDisplay(greyRow({0.0031308f, 0.18f, 1.0f}), {.srgb = true});
+    const std::vector<unsigned char> out =
+        runDisplay(greyRow({0.0031308f, 0.18f, 1.0f}), {.toneCurve = ToneCurve::None, .srgb = true});
     EXPECT_EQ(out[0], 10);   // 255 · 0.04045 = 10.31
     EXPECT_EQ(out[3], 118);  // 255 · 0.46136 = 117.65
     EXPECT_EQ(out[6], 255);
@@ -101,35 +109,42 @@ TEST_F(DisplayPassTest, SrgbEncodingAtTheStandardsBreakpoints)
 
 TEST_F(DisplayPassTest, ReinhardIsXOverOnePlusX)
 {
-    expectCurve({.toneCurve = ToneCurve::Reinhard}, [](double x) { return x / (1.0 + x); });
+    expectCurve({.toneCurve = ToneCurve::Reinhard, .srgb = false}, [](double x) { return x / (1.0 + x); });
     expectCurve({.toneCurve = ToneCurve::Reinhard, .srgb = true}, [](double x) { return srgbEncode(x / (1.0 + x)); });
 }
 
 TEST_F(DisplayPassTest, AcesIsNarkowiczsFit)
 {
     const auto aces = [](double x) { return x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14); };
-    expectCurve({.toneCurve = ToneCurve::Aces}, aces);
+    expectCurve({.toneCurve = ToneCurve::Aces, .srgb = false}, aces);
     expectCurve({.exposure = 1.0f, .toneCurve = ToneCurve::Aces, .srgb = true},
                 [&](double x) { return srgbEncode(aces(2.0 * x)); });
 }
 
-TEST_F(DisplayPassTest, AgxIsWrenschsMinimalFit)
+// AgX on a grey, typed from Wrensch's post: the inset matrix's rows sum to 1 - 0.0008 or so,
+// so a grey stays grey through it, and the outset matrix's rows sum to 1.091...
+double agx(double x)
 {
-    // Grey in, grey out: the inset matrix's rows sum to 1 - 0.0008 or so, so a grey stays
-    // grey through it, and the outset matrix's rows sum to 1.091...; typed from the post.
-    const auto agx = [](double x) {
-        const double inset = 0.842479062253094 + 0.0784335999999992 + 0.0792237451477643;
-        const double minStops = -12.47393;
-        const double maxStops = 4.026069;
-        double v = std::max(x, 0.0) * inset;
-        v = (std::clamp(std::log2(std::max(v, 1e-10)), minStops, maxStops) - minStops) / (maxStops - minStops);
-        const double v2 = v * v;
-        const double v4 = v2 * v2;
-        v = 15.5 * v4 * v2 - 40.14 * v4 * v + 31.96 * v4 - 6.868 * v2 * v + 0.4298 * v2 + 0.1191 * v - 0.00232;
-        const double outset = 1.19687900512017 - 0.0980208811401368 - 0.0990297440797205;
-        return std::pow(std::clamp(v * outset, 0.0, 1.0), 2.2);
-    };
-    expectCurve({.toneCurve = ToneCurve::Agx}, agx);
+    const double inset = 0.842479062253094 + 0.0784335999999992 + 0.0792237451477643;
+    const double minStops = -12.47393;
+    const double maxStops = 4.026069;
+    double v = std::max(x, 0.0) * inset;
+    v = (std::clamp(std::log2(std::max(v, 1e-10)), minStops, maxStops) - minStops) / (maxStops - minStops);
+    const double v2 = v * v;
+    const double v4 = v2 * v2;
+    v = 15.5 * v4 * v2 - 40.14 * v4 * v + 31.96 * v4 - 6.868 * v2 * v + 0.4298 * v2 + 0.1191 * v - 0.00232;
+    const double outset = 1.19687900512017 - 0.0980208811401368 - 0.0990297440797205;
+    return std::pow(std::clamp(v * outset, 0.0, 1.0), 2.2);
+}
+
+TEST_F(DisplayPassTest, AgxIsWrenschsMinimalFit) { expectCurve({.toneCurve = ToneCurve::Agx, .srgb = false}, agx); }
+
+TEST_F(DisplayPassTest, DefaultSettingsAreAgxThenSrgb)
+{
+    // The default look (SPEC.md §3 since 2026-11-25): every input of kInputs through AgX,
+    // then the sRGB encoding, within the same 0.75 level as each curve alone.
+    expectCurve({}, [](double x) { return srgbEncode(agx(x)); });
+    expectCurve({.exposure = -1.0f}, [](double x) { return srgbEncode(agx(0.5 * x)); });
 }
 
 TEST_F(DisplayPassTest, CurvesAreMonotonicAndKeepBlackBlack)
@@ -148,7 +163,7 @@ TEST_F(DisplayPassTest, SupersamplingIsTheBoxFilterInLinearLight)
     for (int i = 0; i < 16 * 8 * 3; ++i)
         input.rgb.push_back(static_cast<float>((i * 37) % 101) / 100.0f);
     for (int factor : {2, 4}) {
-        const std::vector<unsigned char> out = runDisplay(input, {}, factor);
+        const std::vector<unsigned char> out = runDisplay(input, kClassic, factor);
         const Image expected = boxDownsample(input, factor);
         ASSERT_EQ(out.size(), expected.rgb.size());
         for (std::size_t i = 0; i < out.size(); ++i)
@@ -202,14 +217,14 @@ TEST_F(DisplayPassTest, FxaaLeavesFlatAndSmoothRegionsUnchanged)
                                                      0.5f - 0.003f * static_cast<float>(x), 0.4f});
         }
     for (const Image& input : {flat, gradient})
-        EXPECT_EQ(runDisplay(input, {}), runDisplay(input, {.antialiasing = Antialiasing::Fxaa}));
+        EXPECT_EQ(runDisplay(input, kClassic), runDisplay(input, kClassicFxaa));
 }
 
 TEST_F(DisplayPassTest, FxaaBringsAnAliasedEdgeCloserToItsCoverage)
 {
     const Edge edge = shallowEdge();
-    const std::vector<unsigned char> aliased = runDisplay(edge.aliased, {});
-    const std::vector<unsigned char> antialiased = runDisplay(edge.aliased, {.antialiasing = Antialiasing::Fxaa});
+    const std::vector<unsigned char> aliased = runDisplay(edge.aliased, kClassic);
+    const std::vector<unsigned char> antialiased = runDisplay(edge.aliased, kClassicFxaa);
     const double before = meanError(aliased, edge.coverage);
     const double after = meanError(antialiased, edge.coverage);
     // The measured figures, for docs/display.md.

@@ -120,6 +120,8 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"unknown_tone_curve", "", {"--tonemap", "filmic"}, 2, {"--tonemap", "filmic"}},
         FailureCase{"unknown_antialiasing", "", {"--aa", "msaa"}, 2, {"--aa", "msaa"}},
         FailureCase{"srgb_and_no_srgb", "", {"--srgb", "--no-srgb"}, 2, {"--srgb", "--no-srgb"}},
+        FailureCase{"classic_and_tonemap", "", {"--classic", "--tonemap", "agx"}, 2, {"--classic", "--tonemap"}},
+        FailureCase{"classic_and_srgb", "", {"--classic", "--srgb"}, 2, {"--classic", "--srgb"}},
         FailureCase{"supersample_beyond_range", "", {"--supersample", "9"}, 2, {"--supersample"}},
         FailureCase{"supersample_of_a_gbuffer_view",
                     "",
@@ -221,9 +223,13 @@ TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
     EXPECT_GT(median, 0.0);
     EXPECT_LE(stats["frame_ms"]["min"].get<double>(), median);
     EXPECT_GE(stats["frame_ms"]["max"].get<double>(), median);
-    ASSERT_EQ(stats["passes"].size(), 2u);
+    // A PNG in the default look ends with the display pass (AgX and sRGB), timed as its own.
+    ASSERT_EQ(stats["passes"].size(), 3u);
     EXPECT_EQ(stats["passes"][0]["name"], "geometry");
     EXPECT_EQ(stats["passes"][1]["name"], "lighting");
+    EXPECT_EQ(stats["passes"][2]["name"], "display");
+    EXPECT_EQ(stats["display"]["tonemap"], "agx");
+    EXPECT_EQ(stats["display"]["srgb"], true);
     // --anisotropy auto: none on a software rasteriser, 8 on a GPU (within the driver's maximum).
     const double anisotropy = stats["anisotropy"];
     if (stats["device"].get<std::string>().find("llvmpipe") != std::string::npos) {

@@ -1,5 +1,6 @@
 // The display path and the scene-referred outputs through the command line
-// (docs/display.md): the default PNG stays the contract's plain clamp; tone mapping, sRGB
+// (docs/display.md): the default PNG is AgX then sRGB of the PFM's values, and
+// `--tonemap none --no-srgb` (`--classic`) the contract's plain clamp; tone mapping, sRGB
 // and FXAA change only 8-bit outputs, after lighting, so every technique still matches
 // forward there; --supersample box-filters in linear light; EXR files hold the PFM's values
 // (bit-exact as float, within half precision as half) and, with --aovs, every G-buffer view
@@ -8,6 +9,7 @@
 
 #include <stb/stb_image.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -45,6 +47,8 @@ std::vector<unsigned char> readPng(const std::filesystem::path& path)
 // every technique quickly.
 const std::string kScene = MANYLIGHTS_SOURCE_DIR "/tests/scenes/spots_and_points.json";
 const std::vector<std::string> kSmall{"--size", "96x64"};
+// The classic look, round(255 · clamp(v, 0, 1)): SPEC.md §3's flags for it.
+const std::vector<std::string> kClassic{"--tonemap", "none", "--no-srgb"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more)
 {
@@ -52,11 +56,11 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
     return args;
 }
 
-TEST(DisplayOutput, DefaultPngIsThePlainClampOfTheLinearColour)
+TEST(DisplayOutput, ClassicPngIsThePlainClampOfTheLinearColour)
 {
     const auto dir = scratchDirectory();
     const Image linear = renderPfm(kScene, dir / "linear.pfm", kSmall);
-    runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
+    runCliOrFail(with(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall), kClassic));
     const std::vector<unsigned char> png = readPng(dir / "plain.png");
     ASSERT_EQ(png.size(), linear.rgb.size());
     int above = 0;
@@ -65,12 +69,75 @@ TEST(DisplayOutput, DefaultPngIsThePlainClampOfTheLinearColour)
         above += linear.rgb[i] > 1.0f;
     }
     EXPECT_GT(above, 0) << "the scene must have values the tone curves compress";
+    // --classic is the same two flags.
+    runCliOrFail(with({"render", kScene, "-o", (dir / "classic.png").string(), "--classic"}, kSmall));
+    EXPECT_EQ(readPng(dir / "classic.png"), png);
+}
+
+// Sobotka's AgX as Wrensch's minimal fit (2023), typed from the post (column-major, as GLSL's
+// mat3 constructor takes them), then IEC 61966-2-1's sRGB encoding: one pixel's linear RGB to
+// its display-encoded RGB.
+std::array<double, 3> agxThenSrgb(const float* linear)
+{
+    const double inset[3][3] = {{0.842479062253094, 0.0423282422610123, 0.0423756549057051},
+                                {0.0784335999999992, 0.878468636469772, 0.0784336},
+                                {0.0792237451477643, 0.0791661274605434, 0.879142973793104}};
+    const double outset[3][3] = {{1.19687900512017, -0.0528968517574562, -0.0529716355144438},
+                                 {-0.0980208811401368, 1.15190312990417, -0.0980434501171241},
+                                 {-0.0990297440797205, -0.0989611768448433, 1.15107367264116}};
+    const double minStops = -12.47393;
+    const double maxStops = 4.026069;
+    std::array<double, 3> curve{};
+    for (int row = 0; row < 3; ++row) {
+        double v = 0.0;
+        for (int column = 0; column < 3; ++column)
+            v += inset[column][row] * std::max(static_cast<double>(linear[column]), 0.0);
+        v = (std::clamp(std::log2(std::max(v, 1e-10)), minStops, maxStops) - minStops) / (maxStops - minStops);
+        const double v2 = v * v;
+        const double v4 = v2 * v2;
+        curve[row] = 15.5 * v4 * v2 - 40.14 * v4 * v + 31.96 * v4 - 6.868 * v2 * v + 0.4298 * v2 + 0.1191 * v - 0.00232;
+    }
+    std::array<double, 3> encoded{};
+    for (int row = 0; row < 3; ++row) {
+        double v = 0.0;
+        for (int column = 0; column < 3; ++column)
+            v += outset[column][row] * curve[column];
+        const double display = std::pow(std::clamp(v, 0.0, 1.0), 2.2);  // the 2.2-power display's light
+        encoded[row] = display <= 0.0031308 ? 12.92 * display : 1.055 * std::pow(display, 1.0 / 2.4) - 0.055;
+    }
+    return encoded;
+}
+
+TEST(DisplayOutput, DefaultPngIsAgxThenSrgbOfThePfm)
+{
+    // Pixel by pixel, the default PNG is the PFM's colour through AgX and the sRGB encoding:
+    // within half a level of quantisation plus a quarter for the GPU's log2 and pow (as
+    // tests/gl/DisplayPassTest.cpp, whose grey inputs pin the curve down at 15 points).
+    const auto dir = scratchDirectory();
+    const Image linear = renderPfm(kScene, dir / "linear.pfm", kSmall);
+    runCliOrFail(with({"render", kScene, "-o", (dir / "default.png").string()}, kSmall));
+    const std::vector<unsigned char> png = readPng(dir / "default.png");
+    ASSERT_EQ(png.size(), linear.rgb.size());
+    for (std::size_t i = 0; i < png.size(); i += 3) {
+        const std::array<double, 3> expected = agxThenSrgb(&linear.rgb[i]);
+        for (std::size_t c = 0; c < 3; ++c)
+            ASSERT_NEAR(png[i + c], 255.0 * expected[c], 0.75) << "value " << i + c;
+    }
+    // An analytic pixel: middle grey, 0.18, AgX's pivot, worked by hand: log2(0.18 · 0.9999)
+    // = -2.4737 stops, 0.6061 of the way up AgX's 16.5; the polynomial gives 0.4968, the
+    // outset matrix 0.4967, the 2.2 power 0.2145 as display light, and sRGB encodes that as
+    // 0.5005: 127.62 of 255. The formula above must agree to 0.01 level.
+    const float grey[3] = {0.18f, 0.18f, 0.18f};
+    EXPECT_NEAR(255.0 * agxThenSrgb(grey)[0], 127.62, 0.01);
+    // And not the classic look.
+    runCliOrFail(with(with({"render", kScene, "-o", (dir / "classic.png").string()}, kSmall), kClassic));
+    EXPECT_NE(readPng(dir / "classic.png"), png);
 }
 
 TEST(DisplayOutput, AcesPngIsTheFormulaOfThePfm)
 {
     const auto dir = scratchDirectory();
-    runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
+    runCliOrFail(with(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall), kClassic));
     runCliOrFail(
         with({"render", kScene, "-o", (dir / "aces.png").string(), "--tonemap", "aces", "--srgb", "--exposure", "-1"},
              kSmall));
@@ -106,8 +173,14 @@ TEST(DisplayOutput, SceneDisplayBlockAndCommandLineOverride)
     runCliOrFail(with(
         {"render", path, "-o", (dir / "overridden.png").string(), "--tonemap", "none", "--no-srgb", "--exposure", "0"},
         kSmall));
-    runCliOrFail(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall));
+    runCliOrFail(with(with({"render", kScene, "-o", (dir / "plain.png").string()}, kSmall), kClassic));
     EXPECT_EQ(readPng(dir / "overridden.png"), readPng(dir / "plain.png"));
+    // A block that sets the exposure alone keeps the default curve and encoding.
+    scene["display"] = {{"exposure", 1}};
+    test::writeFile(dir / "exposure.json", scene.dump());
+    runCliOrFail(with({"render", (dir / "exposure.json").string(), "-o", (dir / "exposure.png").string()}, kSmall));
+    runCliOrFail(with({"render", kScene, "-o", (dir / "default-at-1.png").string(), "--exposure", "1"}, kSmall));
+    EXPECT_EQ(readPng(dir / "exposure.png"), readPng(dir / "default-at-1.png"));
 }
 
 class DisplayedTechnique : public ::testing::TestWithParam<std::string> {};
@@ -145,7 +218,8 @@ TEST(DisplayOutput, SupersampledPfmIsTheBoxFilteredLargerFrame)
     ASSERT_EQ(supersampled.rgb, expected.rgb);
     // And the PNG of it goes through the GPU's box filter: the same values within rounding.
     runCliOrFail(
-        {"render", kScene, "-o", (dir / "supersampled.png").string(), "--size", "96x64", "--supersample", "2"});
+        with({"render", kScene, "-o", (dir / "supersampled.png").string(), "--size", "96x64", "--supersample", "2"},
+             kClassic));
     const std::vector<unsigned char> png = readPng(dir / "supersampled.png");
     ASSERT_EQ(png.size(), expected.rgb.size());
     for (std::size_t i = 0; i < png.size(); ++i)

@@ -94,11 +94,16 @@ TEST_P(Golden, MatchesStoredImage)
 
 INSTANTIATE_TEST_SUITE_P(
     Images, Golden,
-    ::testing::Values(GoldenCase{"default_deferred_320x180", {"--size", "320x180", "--technique", "deferred"}},
+    // The final views in the classic look (--tonemap none --no-srgb), which these goldens have
+    // held since before the default became AgX and sRGB; default_agx_deferred_320x180 is the
+    // default look itself.
+    ::testing::Values(GoldenCase{"default_deferred_320x180",
+                                 {"--size", "320x180", "--technique", "deferred", "--tonemap", "none", "--no-srgb"}},
+                      GoldenCase{"default_agx_deferred_320x180", {"--size", "320x180", "--technique", "deferred"}},
                       GoldenCase{"default_normal_320x180", {"--size", "320x180", "--view", "normal"}},
                       GoldenCase{"spots_and_points_forward_240x160",
                                  {MANYLIGHTS_SOURCE_DIR "/tests/scenes/spots_and_points.json", "--size", "240x160",
-                                  "--technique", "forward"}}),
+                                  "--technique", "forward", "--tonemap", "none", "--no-srgb"}}),
     [](const ::testing::TestParamInfo<GoldenCase>& param) { return param.param.name; });
 
 }  // namespace

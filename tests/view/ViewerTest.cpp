@@ -295,8 +295,9 @@ TEST(Viewer, DisplayOptionsShowWhatRenderWrites)
         << readText(dir / "viewer.log");
     const Png shown = readPng(dir / "shown.png");
     expectEqualWithinOneLevel(shown, renderAtWindowSize(dir / "reference.png", display), "shown.png");
-    // And it is not the plain picture.
-    EXPECT_NE(shown.rgb, renderAtWindowSize(dir / "plain.png", "").rgb);
+    // And it is neither the classic picture nor the default one.
+    EXPECT_NE(shown.rgb, renderAtWindowSize(dir / "plain.png", "--tonemap none --no-srgb").rgb);
+    EXPECT_NE(shown.rgb, renderAtWindowSize(dir / "default.png", "").rgb);
 }
 
 double meanValue(const Png& png)
@@ -344,7 +345,8 @@ TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
     }
     const std::string command = "cd '" + dir.string() +
                                 "' && xvfb-run -a -s '-screen 0 1024x768x24' '" MANYLIGHTS_EXE
-                                "' view --size 160x90 --shader-dir shaders --script script.txt >viewer.log 2>&1; "
+                                "' view --size 160x90 --shader-dir shaders --script script.txt --classic >viewer.log "
+                                "2>&1; "
                                 "echo $? > status.txt";
     ASSERT_EQ(run("(" + command + ") &"), 0);
     ASSERT_TRUE(eventually([&] { return fs::exists(dir / "before.png"); })) << readText(dir / "viewer.log");
@@ -359,7 +361,8 @@ TEST(Viewer, ShaderHotReloadKeepsTheOldProgramOnErrorsAndTakesTheFix)
     EXPECT_NE(readText(dir / "viewer.log").find("forward.frag:"), std::string::npos) << readText(dir / "viewer.log");
     run("touch '" + (dir / "step1").string() + "'");
 
-    // The fix, which also paints every object one flat colour, (51, 153, 255) in 8 bits: taken.
+    // The fix, which also paints every object one flat colour, (51, 153, 255) in 8 bits in the
+    // classic look (--classic above: no tone curve, no sRGB): taken.
     {
         std::ofstream out(forward);
         std::string painted = original;
