@@ -46,6 +46,18 @@ void addAnisotropyOption(CLI::App& command, int& level)
         ->default_str("auto");
 }
 
+void addDriverOptions(CLI::App& command, DriverOptions& options)
+{
+    command
+        .add_option_function<std::string>(
+            "--driver-profile", [&options](const std::string& name) { options.profile = *parseDriverProfile(name); },
+            "Make the choices of a software rasteriser or of a GPU driver (auto: by the driver in use)")
+        ->check(CLI::IsMember({"auto", "software", "gpu"}))
+        ->default_str("auto");
+    command.add_option("--device", options.device, "Render on EGL device N (manylights devices lists them)")
+        ->check(CLI::NonNegativeNumber);
+}
+
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
 
 FrameSummary summarizeFrames(const std::vector<FrameSample>& frames)
