@@ -51,10 +51,11 @@ const char* stageExtension(GLenum type)
     }
 }
 
-// MANYLIGHTS_SHADER_DUMP=DIR: every stage as compiled (includes and defines expanded) is
-// written to DIR once per distinct text, named after its file, so that a reference compiler
-// can check what the renderer builds (scripts/check-shaders.sh, issue 30). Each file is
-// written atomically: the test processes that share a dump folder run at once.
+// MANYLIGHTS_SHADER_DUMP=DIR: every stage the driver compiled (includes and defines expanded;
+// the tests' deliberately broken shaders fail before) is written to DIR once per distinct
+// text, named after its file, so that a reference compiler can check what the renderer builds
+// (scripts/check-shaders.sh, issue 30). Each file is written atomically: the test processes
+// that share a dump folder run at once.
 void dumpCompiledStage(const ShaderStage& stage, const std::string& text)
 {
     const char* directory = std::getenv("MANYLIGHTS_SHADER_DUMP");
@@ -94,7 +95,6 @@ Program::Program(std::string_view label, const std::vector<ShaderStage>& stages,
     ShaderList compiled;
     for (const ShaderStage& stage : stages) {
         const ResolvedShader source = resolveShader(stage.file, defines, reader);
-        dumpCompiledStage(stage, source.text);
         const GLuint shader = glCreateShader(stage.type);
         compiled.shaders.push_back(shader);
         const char* text = source.text.c_str();
@@ -105,6 +105,7 @@ Program::Program(std::string_view label, const std::vector<ShaderStage>& stages,
         if (ok != GL_TRUE)
             throw Error(std::string(stageName(stage.type)) + " shader " + stage.file +
                         " failed to compile: " + mapCompileLog(infoLog(shader, false), source.files));
+        dumpCompiledStage(stage, source.text);
         glAttachShader(id(), shader);
     }
     glLinkProgram(id());

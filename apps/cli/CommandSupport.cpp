@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <regex>
 
 #include <CLI/CLI.hpp>
@@ -55,7 +56,7 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
         ->check(CLI::IsMember({"auto", "software", "gpu"}))
         ->default_str("auto");
     command.add_option("--device", options.device, "Render on EGL device N (manylights devices lists them)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::Range(0, std::numeric_limits<int>::max()));
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
