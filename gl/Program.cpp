@@ -1,7 +1,14 @@
 #include "gl/Program.h"
 
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 
 namespace manylights::gl {
@@ -35,6 +42,39 @@ std::string infoLog(GLuint object, bool isProgram)
     return log;
 }
 
+const char* stageExtension(GLenum type)
+{
+    switch (type) {
+    case GL_VERTEX_SHADER: return "vert";
+    case GL_FRAGMENT_SHADER: return "frag";
+    default: return "comp";
+    }
+}
+
+// MANYLIGHTS_SHADER_DUMP=DIR: every stage the driver compiled (includes and defines expanded;
+// the tests' deliberately broken shaders fail before) is written to DIR once per distinct
+// text, named after its file, so that a reference compiler can check what the renderer builds
+// (scripts/check-shaders.sh, issue 30). Each file is written atomically: the test processes
+// that share a dump folder run at once.
+void dumpCompiledStage(const ShaderStage& stage, const std::string& text)
+{
+    const char* directory = std::getenv("MANYLIGHTS_SHADER_DUMP");
+    if (!directory || !*directory)
+        return;
+    std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits: names, not security
+    for (const char c : text)
+        hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    const std::string stem = std::filesystem::path(stage.file).stem().string();
+    const std::filesystem::path path =
+        std::filesystem::path(directory) / (stem + "-" + hex + "." + stageExtension(stage.type));
+    if (std::filesystem::exists(path))
+        return;
+    std::filesystem::create_directories(directory);
+    writeFileAtomically(path, "shader dump", text);
+}
+
 // Deletes the shader objects once the program is linked (or failed).
 struct ShaderList {
     std::vector<GLuint> shaders;
@@ -65,6 +105,7 @@ Program::Program(std::string_view label, const std::vector<ShaderStage>& stages,
         if (ok != GL_TRUE)
             throw Error(std::string(stageName(stage.type)) + " shader " + stage.file +
                         " failed to compile: " + mapCompileLog(infoLog(shader, false), source.files));
+        dumpCompiledStage(stage, source.text);
         glAttachShader(id(), shader);
     }
     glLinkProgram(id());

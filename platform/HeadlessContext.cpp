@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/Error.h"
 #include "gl/Debug.h"
+#include "gl/Driver.h"
 
 namespace manylights {
 
@@ -31,27 +34,64 @@ struct Candidate {
     std::string platform;
 };
 
-std::vector<Candidate> candidateDisplays()
+bool canEnumerateDevices()
+{
+    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    return hasExtension(clientExtensions, "EGL_EXT_device_enumeration") &&
+           hasExtension(clientExtensions, "EGL_EXT_platform_device");
+}
+
+// The EGL devices in the driver's order (the indices of --device), none where EGL cannot list
+// them.
+std::vector<EGLDeviceEXT> eglDevices()
+{
+    if (!canEnumerateDevices())
+        return {};
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0)
+        return {};
+    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+    if (!eglQueryDevicesEXT(count, devices.data(), &count))
+        return {};
+    devices.resize(static_cast<std::size_t>(std::max(count, 0)));
+    return devices;
+}
+
+bool isSoftwareDevice(EGLDeviceEXT device)
+{
+    return hasExtension(eglQueryDeviceStringEXT(device, EGL_EXTENSIONS), "EGL_MESA_device_software");
+}
+
+std::optional<Candidate> deviceCandidate(EGLDeviceEXT device, int index)
+{
+    EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+    if (display == EGL_NO_DISPLAY)
+        return std::nullopt;
+    return Candidate{display, "EGL device " + std::to_string(index)};
+}
+
+// The displays to try in order: every device (hardware first: Mesa also lists its software
+// rasteriser as a device), Mesa's surfaceless platform, the default display. With `device`,
+// that device's display only.
+std::vector<Candidate> candidateDisplays(std::optional<int> device)
 {
     std::vector<Candidate> candidates;
-    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (hasExtension(clientExtensions, "EGL_EXT_device_enumeration") &&
-        hasExtension(clientExtensions, "EGL_EXT_platform_device")) {
-        EGLint count = 0;
-        eglQueryDevicesEXT(0, nullptr, &count);
-        std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(std::max(count, 0)));
-        if (count > 0 && eglQueryDevicesEXT(count, devices.data(), &count)) {
-            // Hardware first: Mesa also lists its software rasteriser as a device.
-            std::stable_partition(devices.begin(), devices.end(), [](EGLDeviceEXT device) {
-                return !hasExtension(eglQueryDeviceStringEXT(device, EGL_EXTENSIONS), "EGL_MESA_device_software");
-            });
-            for (EGLDeviceEXT device : devices) {
-                EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
-                if (display != EGL_NO_DISPLAY)
-                    candidates.push_back({display, "EGL device"});
-            }
-        }
+    std::vector<EGLDeviceEXT> devices = eglDevices();
+    if (device) {
+        checkDeviceIndex(*device, devices.size());
+        if (auto candidate = deviceCandidate(devices[static_cast<std::size_t>(*device)], *device))
+            candidates.push_back(*candidate);
+        return candidates;
     }
+    std::vector<int> order(devices.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = static_cast<int>(i);
+    std::stable_partition(order.begin(), order.end(),
+                          [&](int i) { return !isSoftwareDevice(devices[static_cast<std::size_t>(i)]); });
+    for (int i : order)
+        if (auto candidate = deviceCandidate(devices[static_cast<std::size_t>(i)], i))
+            candidates.push_back(*candidate);
+    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display != EGL_NO_DISPLAY)
@@ -89,6 +129,37 @@ EGLContext createContext(EGLDisplay display, bool debug)
     return eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
 }
 
+// A context made current on `display`, or the reason none could be: eglInitialize, then a
+// 4.5 core context, then eglMakeCurrent. The display is terminated again on failure.
+struct CurrentContext {
+    EGLContext context = EGL_NO_CONTEXT;
+    std::string problem;
+};
+CurrentContext makeCurrentContext(EGLDisplay display, bool debug)
+{
+    EGLint major = 0;
+    EGLint minor = 0;
+    if (!eglInitialize(display, &major, &minor))
+        return {EGL_NO_CONTEXT, "eglInitialize failed"};
+    EGLContext context = createContext(display, debug);
+    if (context == EGL_NO_CONTEXT) {
+        eglTerminate(display);
+        return {EGL_NO_CONTEXT, "no OpenGL 4.5 core context"};
+    }
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        eglDestroyContext(display, context);
+        eglTerminate(display);
+        return {EGL_NO_CONTEXT, "eglMakeCurrent failed"};
+    }
+    return {context, ""};
+}
+
+std::string glString(GLenum name)
+{
+    const auto* text = reinterpret_cast<const char*>(glGetString(name));
+    return text ? text : "";
+}
+
 }  // namespace
 
 bool defaultDebugContext()
@@ -101,38 +172,61 @@ bool defaultDebugContext()
 #endif
 }
 
+void checkDeviceIndex(int index, std::size_t count)
+{
+    if (index < 0 || static_cast<std::size_t>(index) >= count)
+        throw Error("--device " + std::to_string(index) + ": no such EGL device (there " +
+                    (count == 1 ? std::string("is 1") : "are " + std::to_string(count)) +
+                    "; manylights devices lists them)");
+}
+
 HeadlessContext::HeadlessContext(const ContextOptions& options)
 {
     std::string tried;
-    for (const Candidate& candidate : candidateDisplays()) {
-        EGLint major = 0;
-        EGLint minor = 0;
-        if (!eglInitialize(candidate.display, &major, &minor)) {
-            tried += (tried.empty() ? "" : "; ") + candidate.platform + ": eglInitialize failed";
-            continue;
-        }
-        EGLContext context = createContext(candidate.display, options.debug);
-        if (context == EGL_NO_CONTEXT) {
-            tried += (tried.empty() ? "" : "; ") + candidate.platform + ": no OpenGL 4.5 core context";
-            eglTerminate(candidate.display);
-            continue;
-        }
-        if (!eglMakeCurrent(candidate.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-            tried += (tried.empty() ? "" : "; ") + candidate.platform + ": eglMakeCurrent failed";
-            eglDestroyContext(candidate.display, context);
-            eglTerminate(candidate.display);
+    for (const Candidate& candidate : candidateDisplays(options.device)) {
+        const CurrentContext made = makeCurrentContext(candidate.display, options.debug);
+        if (made.context == EGL_NO_CONTEXT) {
+            tried += (tried.empty() ? "" : "; ") + candidate.platform + ": " + made.problem;
             continue;
         }
         display_ = candidate.display;
-        context_ = context;
-        description_ = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + " (" +
-                       reinterpret_cast<const char*>(glGetString(GL_VERSION)) + ") via " + candidate.platform;
+        context_ = made.context;
+        description_ = glString(GL_RENDERER) + " (" + glString(GL_VERSION) + ") via " + candidate.platform;
         if (options.debug)
             gl::installErrorCallback();
         return;
     }
     throw Error("cannot create an OpenGL 4.5 core context (" + (tried.empty() ? std::string("no EGL display") : tried) +
                 ")");
+}
+
+std::vector<EglDeviceInfo> listDevices()
+{
+    std::vector<EglDeviceInfo> list;
+    const std::vector<EGLDeviceEXT> devices = eglDevices();
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        EglDeviceInfo info;
+        info.index = static_cast<int>(i);
+        info.software = isSoftwareDevice(devices[i]);
+        if (hasExtension(eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS), "EGL_EXT_device_drm"))
+            if (const char* file = eglQueryDeviceStringEXT(devices[i], EGL_DRM_DEVICE_FILE_EXT))
+                info.drmFile = file;
+        const std::optional<Candidate> candidate = deviceCandidate(devices[i], info.index);
+        const CurrentContext made = candidate ? makeCurrentContext(candidate->display, false)
+                                              : CurrentContext{EGL_NO_CONTEXT, "no EGL display"};
+        if (made.context == EGL_NO_CONTEXT) {
+            info.problem = made.problem;
+        } else {
+            info.vendor = glString(GL_VENDOR);
+            info.renderer = glString(GL_RENDERER);
+            info.software = info.software || gl::isSoftwareRendererName(info.renderer);
+            eglMakeCurrent(candidate->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            eglDestroyContext(candidate->display, made.context);
+            eglTerminate(candidate->display);
+        }
+        list.push_back(std::move(info));
+    }
+    return list;
 }
 
 HeadlessContext::~HeadlessContext()

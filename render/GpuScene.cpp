@@ -88,10 +88,11 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, int wi
     return frame;
 }
 
-GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
+GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver)
     : scene_(scene),
+      driver_(driver),
       camera_(scene.camera),
-      textures_(scene.encodedImages),
+      textures_(scene.encodedImages, driver.autoAnisotropy),
       lightingFeatures_(lightingFeaturesOf(lights, scene.directional)),
       restLights_(lights),
       currentLights_(lights),
@@ -184,7 +185,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights)
     // The specular powers as multiplications were measured on llvmpipe only. A GPU computes
     // pow() with two special-function instructions (log2, exp2), where several chains of
     // multiplications may well be slower: there it stays (no GPU was lent to measure it).
-    if (softwareRenderer_) {
+    if (driver_.multipliedSpecularPowers) {
         std::vector<const Material*> drawnMaterials;
         for (const DrawItem& draw : draws_)
             drawnMaterials.push_back(draw.material);

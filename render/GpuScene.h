@@ -11,10 +11,10 @@
 #include <glm/glm.hpp>
 
 #include "gl/Buffer.h"
-#include "gl/Driver.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/DriverProfile.h"
 #include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
 #include "render/TextureCache.h"
@@ -69,8 +69,9 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, int wi
 class GpuScene {
 public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights).
-    // Loads every material's textures; throws manylights::Error for a broken one.
-    GpuScene(const Scene& scene, const std::vector<Light>& lights);
+    // Loads every material's textures; throws manylights::Error for a broken one. `driver`: the
+    // choices of the driver profile (render/DriverProfile.h), fixed for the scene's lifetime.
+    GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver);
 
     // Binds the vertex array, the frame uniforms and the light buffer.
     void bind() const;
@@ -151,6 +152,7 @@ public:
     const std::vector<GpuLight>& packedLights() const { return packedLights_; }
     const FrameUniforms& frameUniforms() const { return frame_; }
     const TextureCache& textures() const { return textures_; }
+    const DriverChoices& driverChoices() const { return driver_; }
     // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
     // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
     void bindLightWindow(const LightBatch& batch) const;
@@ -171,8 +173,11 @@ public:
     // On a software rasteriser only without light texels, which it fetches faster than it
     // gathers from a uniform block, even at an index every lane shares (docs/performance.md:
     // LearnOpenGL's scene, 512 lights, deferred's lighting pass 620 ms from windows, 492 ms
-    // from texels).
-    bool readsLightWindows() const { return lightWindowsSupported_ && (!softwareRenderer_ || !lightTexels_); }
+    // from texels). The profile decides (DriverChoices::lightTexelsBeforeWindows).
+    bool readsLightWindows() const
+    {
+        return lightWindowsSupported_ && (!driver_.lightTexelsBeforeWindows || !lightTexels_);
+    }
     // Where such a pass reads its lights: the batch's uniform window where readsLightWindows(),
     // else as by index. Its batches are lightsPerBatch(source) lights.
     LightSource walkedLightSource() const
@@ -254,6 +259,7 @@ private:
     void updateFrameUniforms();
 
     const Scene& scene_;
+    DriverChoices driver_;
     Camera camera_;
     int viewportWidth_ = 1;
     int viewportHeight_ = 1;
@@ -284,7 +290,6 @@ private:
     gl::Buffer lightBuffer_;
     gl::BufferTexture lightTexels_;  // lightBuffer_ as texels, where the driver allows them
     bool lightWindowsSupported_ = lightWindowsSupported();
-    bool softwareRenderer_ = gl::isSoftwareRenderer();
     gl::Buffer instanceBuffer_;
     gl::Buffer frameBuffer_;
 };

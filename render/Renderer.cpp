@@ -37,14 +37,17 @@ RendererDesc withDefaultsFilledIn(RendererDesc desc)
 }  // namespace
 
 Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, const RendererDesc& desc)
-    : gpuScene_(scene, lights), sceneAmbientOcclusion_(scene.ssao)
+    : gpuScene_(scene, lights, manylights::driverChoices(desc.driverProfile)), sceneAmbientOcclusion_(scene.ssao)
 {
     apply(desc);
 }
 
 void Renderer::apply(const RendererDesc& requested)
 {
-    const RendererDesc desc = withDefaultsFilledIn(requested);
+    RendererDesc desc = withDefaultsFilledIn(requested);
+    // The profile's choices are made once, with the scene's programs and textures.
+    if (targets_)
+        desc.driverProfile = desc_.driverProfile;
     checkSize(desc.width, desc.height);
     ML_ASSERT(desc.width % desc.supersample == 0 && desc.height % desc.supersample == 0);
     const bool first = targets_ == nullptr;

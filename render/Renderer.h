@@ -10,6 +10,7 @@
 
 #include "gl/Program.h"
 #include "render/DisplayPass.h"
+#include "render/DriverProfile.h"
 #include "render/GpuScene.h"
 #include "render/Image.h"
 #include "render/PassProfiler.h"
@@ -65,6 +66,9 @@ struct RendererDesc {
     // through the uniform windows or the storage buffer, as on a driver without them (the
     // tests compare the sources).
     bool lightTexels = true;
+    // --driver-profile: whose choices the renderer makes (render/DriverProfile.h). Read when the
+    // Renderer is made; apply() keeps it.
+    DriverProfile driverProfile = DriverProfile::Auto;
 };
 
 // The size of an image when none is asked for (docs/cli.md).
@@ -93,6 +97,8 @@ public:
     void setCamera(const Camera& camera) { gpuScene_.setCamera(camera); }
     // The anisotropy the textures got from desc().anisotropy.
     float anisotropy() const { return gpuScene_.textures().anisotropy(); }
+    // The choices of desc().driverProfile, resolved on the context when the Renderer was made.
+    const DriverChoices& driverChoices() const { return gpuScene_.driverChoices(); }
     // The lit image and the G-buffer of the last frame (the viewer shows the lit image).
     const FrameTargets& targets() const { return *targets_; }
 

@@ -85,16 +85,15 @@ const gl::MipmappedTexture2D& TextureCache::get(const std::string& path, Texture
     return textures_.emplace(key, std::move(texture)).first->second;
 }
 
-float resolveAnisotropy(int requested)
+float resolveAnisotropy(int requested, int autoLevel)
 {
-    const float wanted =
-        requested == kAutoAnisotropy ? (gl::isSoftwareRenderer() ? 1.0f : kHardwareAnisotropy) : float(requested);
+    const float wanted = float(requested == kAutoAnisotropy ? autoLevel : requested);
     return std::clamp(wanted, 1.0f, gl::MipmappedTexture2D::maxAnisotropy());
 }
 
 void TextureCache::setAnisotropy(int requested)
 {
-    anisotropy_ = resolveAnisotropy(requested);
+    anisotropy_ = resolveAnisotropy(requested, autoAnisotropy_);
     for (const auto& [key, texture] : textures_)
         texture.setAnisotropy(anisotropy_);
 }

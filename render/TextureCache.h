@@ -41,23 +41,27 @@ DecodedImage decodeImageFile(const std::string& path, int maxSide);
 DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide);
 
 // Anisotropic filtering of material textures (--anisotropy). kAutoAnisotropy picks per
-// renderer: none (1) on a software rasteriser, where llvmpipe filters every anisotropic tap in
-// software (8x cost 40% of the geometry pass on the LearnOpenGL scene, docs/performance.md),
+// driver profile (DriverChoices::autoAnisotropy): none (1) on a software rasteriser, where llvmpipe filters every
+// anisotropic tap in software (8x cost 40% of the geometry pass on the LearnOpenGL scene, docs/performance.md),
 // kHardwareAnisotropy on a GPU, where the texture units do it nearly for free and oblique
 // floors stay sharp.
 inline constexpr int kAutoAnisotropy = 0;
 inline constexpr int kHardwareAnisotropy = 8;
 inline constexpr int kMaxRequestedAnisotropy = 16;  // the largest any driver offers
-// The anisotropy `requested` (kAutoAnisotropy, or 1 to kMaxRequestedAnisotropy) gives on the
-// current GL context: clamped to what the driver filters with.
-float resolveAnisotropy(int requested);
+// The anisotropy `requested` (kAutoAnisotropy, which means `autoLevel`, or 1 to
+// kMaxRequestedAnisotropy) gives on the current GL context: clamped to what the driver filters
+// with.
+float resolveAnisotropy(int requested, int autoLevel);
 
 class TextureCache {
 public:
     // `embedded`: images carried in the scene (Scene::encodedImages); a path equal to one's key
-    // is that image, not a file. They must outlive the cache. Needs a current GL context.
-    explicit TextureCache(std::span<const EncodedImage> embedded = {})
-        : embedded_(embedded), anisotropy_(resolveAnisotropy(kAutoAnisotropy))
+    // is that image, not a file. They must outlive the cache. `autoAnisotropy` is what
+    // kAutoAnisotropy means (DriverChoices::autoAnisotropy). Needs a current GL context.
+    explicit TextureCache(std::span<const EncodedImage> embedded = {}, int autoAnisotropy = 1)
+        : embedded_(embedded),
+          autoAnisotropy_(autoAnisotropy),
+          anisotropy_(resolveAnisotropy(kAutoAnisotropy, autoAnisotropy))
     {
     }
 
@@ -75,6 +79,7 @@ public:
 
 private:
     std::span<const EncodedImage> embedded_;
+    int autoAnisotropy_;
     float anisotropy_;
     std::map<std::pair<std::string, TextureColourSpace>, gl::MipmappedTexture2D> textures_;
 };

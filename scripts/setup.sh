@@ -11,7 +11,7 @@ packages=(
   libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libimgui-dev xvfb xauth imagemagick ffmpeg
   libtinygltf-dev assimp-testmodels clang libclang-rt-dev clang-format
-  libopenexr-dev openexr
+  libopenexr-dev openexr glslang-tools
 )
 
 missing=()

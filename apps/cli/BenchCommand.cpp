@@ -72,7 +72,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .gbufferLayout = options.gbufferLayout,
                       .shadowLights = options.shadowLights,
                       .anisotropy = options.anisotropy,
-                      .display = chooseDisplay(scene, options.display)};
+                      .display = chooseDisplay(scene, options.display),
+                      .driverProfile = options.driver.profile};
     Renderer renderer(scene, lights, desc);
     Technique& technique = renderer.technique(techniqueName);
     for (int i = 0; i < options.warmup; ++i)
@@ -391,6 +392,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             "G-buffer layout of the deferred techniques (seed or compact; default compact)")
         ->check(CLI::IsMember({"seed", "compact"}));
     addAnisotropyOption(*bench, options.anisotropy);
+    addDriverOptions(*bench, options.driver);
     bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
         ->check(CLI::Range(0, kMaxShadowLights))
         ->capture_default_str();
@@ -418,7 +420,7 @@ void runBench(const BenchOptions& options)
     if (lightCounts.empty())
         lightCounts.push_back(std::nullopt);
 
-    HeadlessContext context({.debug = defaultDebugContext()});
+    HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
     std::vector<BenchResult> results;
     {
         Progress progress(options.sizes.size() * lightCounts.size() * techniques.size());
@@ -445,9 +447,11 @@ void runBench(const BenchOptions& options)
         }
     }
 
-    std::printf("%s on %s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s", scene.source.c_str(),
-                context.description().c_str(), options.warmup, options.warmup == 1 ? "" : "s", options.frames,
-                options.frames == 1 ? "" : "s", tableText(results, options.countWork).c_str());
+    const std::string_view profile = driverProfileName(driverChoices(options.driver.profile).profile);
+    std::printf("%s on %s, driver profile %.*s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s",
+                scene.source.c_str(), context.description().c_str(), int(profile.size()), profile.data(),
+                options.warmup, options.warmup == 1 ? "" : "s", options.frames, options.frames == 1 ? "" : "s",
+                tableText(results, options.countWork).c_str());
     std::fflush(stdout);
     // Both outputs or neither.
     AtomicFileSet outputs;

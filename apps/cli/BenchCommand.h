@@ -35,6 +35,7 @@ struct BenchOptions {
     // forward. 0: no budget.
     double budgetMs = 0.0;
     int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
+    DriverOptions driver;  // --driver-profile, --device
 };
 
 // Adds the `bench` subcommand to `app`; what it parses lands in `options`. Malformed values

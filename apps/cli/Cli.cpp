@@ -9,6 +9,7 @@
 
 #include "apps/cli/BenchCommand.h"
 #include "apps/cli/CommandSupport.h"
+#include "apps/cli/DevicesCommand.h"
 #include "apps/cli/RenderCommand.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
@@ -62,6 +63,7 @@ int runCli(int argc, const char* const* argv)
         ->check(CLI::IsMember({"seed", "compact"}))
         ->capture_default_str();
     addAnisotropyOption(*renderCommand, render.anisotropy);
+    addDriverOptions(*renderCommand, render.driver);
     renderCommand
         ->add_option("--shadow-lights", render.shadowLights,
                      "Local lights that cast shadows (chosen by screen coverage x intensity)")
@@ -85,6 +87,8 @@ int runCli(int argc, const char* const* argv)
 
     BenchOptions bench;
     CLI::App* benchCommand = addBenchCommand(app, bench);
+    CLI::App* devicesCommand =
+        app.add_subcommand("devices", "List the EGL devices: index (for --device), vendor, renderer, software or not");
 
     if (const std::optional<int> status = parseCommandLine(app, argc, argv))
         return *status;
@@ -93,6 +97,8 @@ int runCli(int argc, const char* const* argv)
         return kExitUsage;
     };
 
+    if (devicesCommand->parsed())
+        return reportingErrors([] { printDevices(); }, "listing the EGL devices");
     if (benchCommand->parsed()) {
         if (!bench.csvPath.empty() && !bench.plotPath.empty() && sameFile(bench.csvPath, bench.plotPath))
             return usageError("--csv and --plot name the same file '" + bench.csvPath + "'");

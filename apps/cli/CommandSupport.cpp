@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <regex>
 
 #include <CLI/CLI.hpp>
@@ -44,6 +45,18 @@ void addAnisotropyOption(CLI::App& command, int& level)
             "Anisotropic filtering of material textures (auto: none on a software rasteriser, 8 on a GPU)")
         ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
         ->default_str("auto");
+}
+
+void addDriverOptions(CLI::App& command, DriverOptions& options)
+{
+    command
+        .add_option_function<std::string>(
+            "--driver-profile", [&options](const std::string& name) { options.profile = *parseDriverProfile(name); },
+            "Make the choices of a software rasteriser or of a GPU driver (auto: by the driver in use)")
+        ->check(CLI::IsMember({"auto", "software", "gpu"}))
+        ->default_str("auto");
+    command.add_option("--device", options.device, "Render on EGL device N (manylights devices lists them)")
+        ->check(CLI::Range(0, std::numeric_limits<int>::max()));
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }

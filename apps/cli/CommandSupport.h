@@ -15,6 +15,7 @@
 
 #include "core/Error.h"
 
+#include "render/DriverProfile.h"
 #include "render/PassProfiler.h"
 #include "render/ShadowMaps.h"  // kMaxShadowLights
 #include "scene/DisplaySettings.h"
@@ -73,6 +74,14 @@ std::string formatSize(const ImageSize& size);
 // --anisotropy of render and bench: "auto", 1, 2, 4, 8 or 16, stored in `level` as
 // TextureCache::setAnisotropy takes it (kAutoAnisotropy for "auto").
 void addAnisotropyOption(CLI::App& command, int& level);
+
+// --driver-profile and --device of render, bench and view (docs/cli.md): whose choices the
+// renderer makes (render/DriverProfile.h) and which EGL device it runs on (`manylights devices`).
+struct DriverOptions {
+    DriverProfile profile = DriverProfile::Auto;
+    std::optional<int> device{};  // none: the first device that makes a context, hardware first
+};
+void addDriverOptions(CLI::App& command, DriverOptions& options);
 
 // Median (the mean of the middle two for an even count), min and max; `values` not empty.
 struct Statistics {

@@ -26,7 +26,7 @@ constexpr int kWarmupFrames = 1;
 
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
                               const std::vector<FrameSample>& frames, const std::string& device, float anisotropy,
-                              const Technique& technique, const WorkCounts* work)
+                              const DriverChoices& driver, const Technique& technique, const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -40,6 +40,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["frames"] = frames.size();
     stats["shadow_lights"] = options.shadowLights;
     stats["anisotropy"] = anisotropy;
+    stats["driver_profile"] = std::string(driverProfileName(driver.profile));
     stats["warmup_frames"] = kWarmupFrames;
     stats["warnings"] = scene.warnings.size();
     const auto summaryJson = [](const Statistics& statistics) {
@@ -157,7 +158,7 @@ void runRender(const RenderOptions& options)
         throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
     const std::vector<Light> lights = expandLights(scene, options.lights);
 
-    HeadlessContext context({.debug = defaultDebugContext()});
+    HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
     const DisplaySettings display = chooseDisplay(scene, options.display);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount || options.aovs;
     Renderer renderer(scene, lights,
@@ -169,7 +170,8 @@ void runRender(const RenderOptions& options)
                        .rebuildShadowsEveryFrame = options.rebuildShadows,
                        .anisotropy = options.anisotropy,
                        .display = hasExtension(options.output, ".png") ? std::optional(display) : std::nullopt,
-                       .supersample = options.supersample});
+                       .supersample = options.supersample,
+                       .driverProfile = options.driver.profile});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
 
@@ -205,8 +207,9 @@ void runRender(const RenderOptions& options)
     const WorkCounts work = renderer.lastWorkCounts();
     outputs.stage(options.output, "image", encodeLastFrame(renderer, technique, options, options.output));
     if (measuring) {
-        nlohmann::json stats = statisticsJson(options, scene, lights.size(), frames, context.description(),
-                                              renderer.anisotropy(), technique, countWork ? &work : nullptr);
+        nlohmann::json stats =
+            statisticsJson(options, scene, lights.size(), frames, context.description(), renderer.anisotropy(),
+                           renderer.driverChoices(), technique, countWork ? &work : nullptr);
         stats["display"] = {{"exposure", display.exposure},
                             {"tonemap", std::string(toneCurveName(display.toneCurve))},
                             {"srgb", display.srgb},

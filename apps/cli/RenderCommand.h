@@ -39,6 +39,7 @@ struct RenderOptions {
     int supersample = 1;          // --supersample N: render N x N pixels per output pixel
     bool exrFloat = false;        // --exr-float: 32-bit float EXR channels instead of half
     bool aovs = false;            // --aovs: the G-buffer quantities as further EXR layers
+    DriverOptions driver;         // --driver-profile, --device
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -37,6 +37,7 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(app, options.camera);
     addDisplayOptions(app, options.display);
+    addDriverOptions(app, options.driver);
     app.add_option("--shader-dir", options.shaderDirectory,
                    "Compile shaders from this directory and reload them when they change ('' for the embedded ones)")
         ->capture_default_str();

@@ -95,6 +95,8 @@ public:
     Viewer& operator=(const Viewer&) = delete;
 
     void run();
+    // "GL_RENDERER (GL_VERSION) via GLFW".
+    const std::string& contextDescription() const { return window_.description(); }
 
 private:
     static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
@@ -279,7 +281,8 @@ RendererDesc Viewer::rendererDesc() const
             .directionalShadows = directionalShadows_,
             .ambientOcclusion = ambientOcclusion_,
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
-            .display = shown};
+            .display = shown,
+            .driverProfile = options_.driver.profile};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose
@@ -732,9 +735,28 @@ void Viewer::run()
 
 }  // namespace
 
+namespace {
+
+// --device N in the viewer: the EGL device's renderer, asked before the window exists (listing
+// makes and ends a context on every device). Throws manylights::Error for an index that has no
+// device.
+std::string requestedDeviceRenderer(int index)
+{
+    const std::vector<EglDeviceInfo> devices = listDevices();
+    checkDeviceIndex(index, devices.size());
+    return devices[static_cast<std::size_t>(index)].renderer;
+}
+
+}  // namespace
+
 void runView(const ViewOptions& options)
 {
+    const std::string deviceRenderer = options.driver.device ? requestedDeviceRenderer(*options.driver.device) : "";
     Viewer viewer(options);
+    if (options.driver.device && viewer.contextDescription().rfind(deviceRenderer, 0) != 0)
+        throw Error("--device " + std::to_string(*options.driver.device) + " is " + deviceRenderer +
+                    ", but the window's context is " + viewer.contextDescription() +
+                    " (the display server chooses the window's GPU)");
     viewer.run();
 }
 

@@ -24,6 +24,9 @@ struct ViewOptions {
     DisplayOptions display;  // --exposure, --tonemap, --srgb, --aa: the starting display settings
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
+    // --driver-profile, and --device: the window's context is the display server's, so the
+    // viewer checks that it runs on that device rather than choosing it (docs/viewer.md).
+    DriverOptions driver;
 };
 
 // Runs the viewer until the window closes, Escape/Q, or the script's `quit`. Throws

@@ -18,7 +18,7 @@ class FramePassesTest : public GlContextTest {
 protected:
     const Scene scene_ =
         parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<frame passes test>", ".");
-    GpuScene gpuScene_{scene_, expandLights(scene_)};
+    GpuScene gpuScene_{scene_, expandLights(scene_), driverChoices(DriverProfile::Auto)};
     FrameTargets targets_{32, 32};
     PassProfiler profiler_;
 };

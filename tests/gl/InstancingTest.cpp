@@ -55,7 +55,7 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     const Scene scene = makeDefaultScene();
     const std::vector<Light> lights = expandLights(scene);
     ASSERT_TRUE(scene.lightMarkerRadius.has_value());
-    GpuScene gpuScene(scene, lights);
+    GpuScene gpuScene(scene, lights, driverChoices(DriverProfile::Auto));
 
     // What the scene asks for: one item per object sub-mesh and per light marker. Items that
     // cannot be instanced (material maps, a vertex-shader surface of revolution) are one draw

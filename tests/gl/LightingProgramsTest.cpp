@@ -10,7 +10,6 @@
 
 #include "GlContextTest.h"
 #include "core/Error.h"
-#include "gl/Driver.h"
 #include "render/GpuScene.h"
 #include "render/LightBatches.h"
 #include "render/LightingPrograms.h"
@@ -144,21 +143,22 @@ class LightingProgramTest : public GlContextTest {};
 
 TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentsOfWhatItDraws)
 {
-    const auto exponentsOf = [](const std::string& materials, const std::string& objects) {
+    const auto exponentsOf = [](const std::string& materials, const std::string& objects,
+                                DriverProfile profile = DriverProfile::Software) {
         const Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
             "light_markers": {"radius": 0.1}, "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 5}],
             "materials": )" + materials + R"(, "objects": )" +
                                            objects + "}",
                                        "<specular exponent test>", ".");
-        return GpuScene(scene, expandLights(scene, std::nullopt)).lightingFeatures().specularExponents;
+        return GpuScene(scene, expandLights(scene, std::nullopt), driverChoices(profile))
+            .lightingFeatures()
+            .specularExponents;
     };
-    if (!gl::isSoftwareRenderer()) {
-        // Measured on llvmpipe only: a GPU keeps pow() (render/GpuScene.cpp).
-        EXPECT_EQ(exponentsOf(R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16}})",
-                              R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])"),
-                  SpecularExponents{});
-        return;
-    }
+    // Measured on llvmpipe only: the GPU profile keeps pow() (render/GpuScene.cpp).
+    EXPECT_EQ(exponentsOf(R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16}})",
+                          R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])",
+                          DriverProfile::Gpu),
+              SpecularExponents{});
     const std::string materials = R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16},
                                       "b": {"specular": [0.5, 0.5, 0.5], "shininess": 40},
                                       "c": {"specular": [0.5, 0.5, 0.5], "shininess": 40.5}})";

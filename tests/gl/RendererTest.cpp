@@ -6,7 +6,6 @@
 
 #include "GlContextTest.h"
 #include "core/Error.h"
-#include "gl/Driver.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
@@ -181,7 +180,7 @@ TEST_F(RendererTest, LightTexelsWindowsAndTheStorageBufferGiveTheSameImage)
             const std::string what = std::string(technique) + ", " + std::to_string(lightCount) + " lights";
             desc.lightTexels = true;
             renderer.apply(desc);
-            if (gl::isSoftwareRenderer()) {
+            if (renderer.driverChoices().lightTexelsBeforeWindows) {
                 EXPECT_EQ(renderer.gpuScene().walkedLightSource(), LightSource::TexelBuffer) << what;
             }
             renderer.renderFrame(technique, ViewMode::Final);

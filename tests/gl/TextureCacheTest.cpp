@@ -95,7 +95,7 @@ TEST_F(TextureCacheTest, SharedTextureIsLoadedOncePerColourSpace)
     Material c;
     c.specularMap = path;  // data again: shares b's linear texture
     scene.materials = {a, b, c, Material{}};
-    const GpuScene gpuScene(scene, {});
+    const GpuScene gpuScene(scene, {}, driverChoices(DriverProfile::Auto));
     EXPECT_EQ(gpuScene.textures().size(), 2u);
 }
 
@@ -159,10 +159,18 @@ TEST_F(TextureCacheTest, AnisotropyIsSetOnLoadedAndLaterTextures)
         glGetTextureParameterfv(texture.id(), GL_TEXTURE_MAX_ANISOTROPY, &value);
         return value;
     };
+    // `auto` is what the driver profile says: none for software, 8x for a GPU.
+    for (const DriverProfile profile : {DriverProfile::Software, DriverProfile::Gpu}) {
+        TextureCache cache({}, driverChoices(profile).autoAnisotropy);
+        const gl::MipmappedTexture2D& texture =
+            cache.get(writePng("auto.png", 2, 2, std::vector<unsigned char>(12, 9)), TextureColourSpace::Linear);
+        EXPECT_EQ(anisotropyOf(texture),
+                  profile == DriverProfile::Software ? 1.0f : std::min(maximum, float(kHardwareAnisotropy)));
+    }
     TextureCache cache;
     const gl::MipmappedTexture2D& first =
         cache.get(writePng("a.png", 2, 2, std::vector<unsigned char>(12, 9)), TextureColourSpace::Linear);
-    EXPECT_EQ(anisotropyOf(first), gl::isSoftwareRenderer() ? 1.0f : std::min(maximum, float(kHardwareAnisotropy)));
+    EXPECT_EQ(anisotropyOf(first), 1.0f);
     cache.setAnisotropy(4);
     EXPECT_EQ(cache.anisotropy(), 4.0f);
     EXPECT_EQ(anisotropyOf(first), 4.0f);

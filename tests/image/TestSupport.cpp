@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
@@ -11,11 +12,27 @@
 
 namespace manylights::test {
 
+std::string testDriverProfile()
+{
+    const char* profile = std::getenv("MANYLIGHTS_TEST_DRIVER_PROFILE");
+    return profile ? profile : "";
+}
+
+std::vector<std::string> withTestDriverProfile(std::vector<std::string> args)
+{
+    const std::string profile = testDriverProfile();
+    const bool command = !args.empty() && (args.front() == "render" || args.front() == "bench");
+    if (!profile.empty() && command && std::find(args.begin(), args.end(), "--driver-profile") == args.end())
+        args.insert(args.end(), {"--driver-profile", profile});
+    return args;
+}
+
 std::filesystem::path scratchDirectory()
 {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
     // Parameterised suites and tests have '/' in their names: one flat folder per test.
-    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    const std::string profile = testDriverProfile();
+    std::string name = (profile.empty() ? "" : profile + ".") + info->test_suite_name() + "." + info->name();
     std::replace(name.begin(), name.end(), '/', '_');
     const std::filesystem::path directory = std::filesystem::current_path() / "test-output" / name;
     std::filesystem::remove_all(directory);
@@ -30,8 +47,9 @@ void writeFile(const std::filesystem::path& path, const std::string& text)
     ASSERT_TRUE(out.good()) << path;
 }
 
-void runCliOrFail(const std::vector<std::string>& args)
+void runCliOrFail(const std::vector<std::string>& commandLine)
 {
+    const std::vector<std::string> args = withTestDriverProfile(commandLine);
     std::vector<const char*> argv = {"manylights"};
     for (const std::string& arg : args)
         argv.push_back(arg.c_str());
@@ -58,7 +76,7 @@ ProcessResult runExecutable(const std::vector<std::string>& args, const std::str
     const std::filesystem::path errors =
         std::filesystem::temp_directory_path() / ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
     std::string command = environment + " '" MANYLIGHTS_EXE "'";
-    for (const std::string& arg : args)
+    for (const std::string& arg : withTestDriverProfile(args))
         command += " '" + arg + "'";
     command += " >/dev/null 2>'" + errors.string() + "' </dev/null";
     const int status = std::system(command.c_str());

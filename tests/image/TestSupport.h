@@ -14,12 +14,23 @@
 
 namespace manylights::test {
 
-// A fresh directory under the build tree's test-output folder, named after the test.
+// The driver profile (--driver-profile) the image tests render under: the environment's
+// MANYLIGHTS_TEST_DRIVER_PROFILE, which CTest sets to `gpu` for the image.gpu. tests
+// (tests/CMakeLists.txt); "" (the CLI's `auto`) when unset.
+std::string testDriverProfile();
+
+// `args` of a render or bench command line with `--driver-profile testDriverProfile()` added,
+// unless they name a profile themselves (or none is set).
+std::vector<std::string> withTestDriverProfile(std::vector<std::string> args);
+
+// A fresh directory under the build tree's test-output folder, named after the test (and the
+// driver profile, so that both profiles' runs of a test can run at once).
 std::filesystem::path scratchDirectory();
 
 void writeFile(const std::filesystem::path& path, const std::string& text);
 
-// Runs `manylights <args>` through runCli in this process; fails the test on a non-zero exit.
+// Runs `manylights <args>` (withTestDriverProfile) through runCli in this process; fails the
+// test on a non-zero exit.
 void runCliOrFail(const std::vector<std::string>& args);
 
 // A test name for a technique parameter: test names allow only letters, digits and '_', so
@@ -49,7 +60,7 @@ struct ProcessResult {
 };
 
 // Runs the real executable as a child process (so a crash is seen as a crash), with
-// `environment` ("NAME=value ...") added to its environment.
+// `environment` ("NAME=value ...") added to its environment; `args` withTestDriverProfile.
 ProcessResult runExecutable(const std::vector<std::string>& args, const std::string& environment = "");
 
 }  // namespace manylights::test

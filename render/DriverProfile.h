@@ -1,0 +1,40 @@
+// The choices the renderer makes by the kind of driver it runs on (issue 30): what was measured
+// fastest on a software rasteriser (Mesa's llvmpipe) and what the vendors advise on a GPU.
+// --driver-profile (docs/cli.md) picks them by name, so that the GPU's code paths are tested on
+// llvmpipe and the other way round; `auto` picks them by GL_RENDERER.
+//
+// driverChoices() is the one place that decides from the profile: code that behaves
+// differently on a GPU reads a field of DriverChoices, never the driver's name.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace manylights {
+
+enum class DriverProfile { Auto, Software, Gpu };
+
+std::string_view driverProfileName(DriverProfile profile);  // "auto", "software" or "gpu"
+std::optional<DriverProfile> parseDriverProfile(std::string_view name);
+
+// The profile's choices. The numbers behind each are in docs/performance.md.
+struct DriverChoices {
+    // Software or Gpu: the profile the choices are those of (Auto resolved on the context).
+    DriverProfile profile = DriverProfile::Software;
+    // Integer specular powers as chains of multiplications (LightingFeatures::specularExponents),
+    // measured faster on llvmpipe; a GPU's pow() is two special-function instructions.
+    bool multipliedSpecularPowers = true;
+    // Passes that walk a batch of lights read the light texels where there are some, which
+    // llvmpipe fetches faster; a GPU reads the batch's uniform window, a broadcast
+    // (GpuScene::readsLightWindows).
+    bool lightTexelsBeforeWindows = true;
+    // The anisotropy --anisotropy auto gives (TextureCache): 1 where every tap costs CPU time,
+    // kHardwareAnisotropy where the texture units filter nearly for free.
+    int autoAnisotropy = 1;
+};
+
+// The choices of `profile`; Auto takes the GPU's unless the current context's GL_RENDERER
+// names a software rasteriser (gl::isSoftwareRenderer), and needs a current context.
+DriverChoices driverChoices(DriverProfile profile);
+
+}  // namespace manylights

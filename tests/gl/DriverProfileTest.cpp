@@ -1,0 +1,91 @@
+// --driver-profile (issue 30): `auto` keeps the choice by GL_RENDERER, and the named profiles
+// make theirs on any driver, so that llvmpipe runs the GPU's code paths (the image tests run
+// them under both profiles: docs/testing.md). And the EGL devices `manylights devices` lists.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <epoxy/gl.h>
+
+#include "GlContextTest.h"
+#include "core/Error.h"
+#include "gl/Driver.h"
+#include "render/DriverProfile.h"
+#include "render/Renderer.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+namespace {
+
+TEST(DriverProfileNames, RoundTrip)
+{
+    for (const DriverProfile profile : {DriverProfile::Auto, DriverProfile::Software, DriverProfile::Gpu})
+        EXPECT_EQ(parseDriverProfile(driverProfileName(profile)), profile);
+    EXPECT_EQ(parseDriverProfile("hardware"), std::nullopt);
+}
+
+class DriverProfileTest : public GlContextTest {};
+
+TEST_F(DriverProfileTest, AutoFollowsTheRendererAndTheOthersAreFixed)
+{
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const DriverChoices automatic = driverChoices(DriverProfile::Auto);
+    EXPECT_EQ(automatic.profile, gl::isSoftwareRendererName(renderer) ? DriverProfile::Software : DriverProfile::Gpu)
+        << renderer;
+    const DriverChoices software = driverChoices(DriverProfile::Software);
+    EXPECT_EQ(software.profile, DriverProfile::Software);
+    EXPECT_TRUE(software.multipliedSpecularPowers);
+    EXPECT_TRUE(software.lightTexelsBeforeWindows);
+    EXPECT_EQ(software.autoAnisotropy, 1);
+    const DriverChoices gpu = driverChoices(DriverProfile::Gpu);
+    EXPECT_EQ(gpu.profile, DriverProfile::Gpu);
+    EXPECT_FALSE(gpu.multipliedSpecularPowers);
+    EXPECT_FALSE(gpu.lightTexelsBeforeWindows);
+    EXPECT_EQ(gpu.autoAnisotropy, kHardwareAnisotropy);
+}
+
+TEST_F(DriverProfileTest, RendererMakesTheProfilesChoices)
+{
+    const Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
+        "lights": [{"type": "point", "pos": [0, 1, 1], "intensity": [1, 1, 1], "range": 5}],
+        "materials": {"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16}},
+        "objects": [{"mesh": {"primitive": "sphere", "radius": 1}, "material": "a"}]})",
+                                   "<driver profile test>", ".");
+    const std::vector<Light> lights = expandLights(scene);
+    Renderer software(scene, lights, {.width = 32, .height = 32, .driverProfile = DriverProfile::Software});
+    Renderer gpu(scene, lights, {.width = 32, .height = 32, .driverProfile = DriverProfile::Gpu});
+    EXPECT_EQ(software.driverChoices().profile, DriverProfile::Software);
+    EXPECT_EQ(gpu.driverChoices().profile, DriverProfile::Gpu);
+    EXPECT_EQ(software.gpuScene().lightingFeatures().specularExponents, (SpecularExponents{16}));
+    EXPECT_EQ(gpu.gpuScene().lightingFeatures().specularExponents, SpecularExponents{});
+    // With light texels, a GPU reads the uniform windows and llvmpipe the texels.
+    if (software.gpuScene().indexedLightSource() == LightSource::TexelBuffer) {
+        EXPECT_EQ(software.gpuScene().walkedLightSource(), LightSource::TexelBuffer);
+        EXPECT_EQ(gpu.gpuScene().walkedLightSource(), LightSource::UniformWindow);
+    }
+    // The profile is fixed when the renderer is made.
+    RendererDesc desc = gpu.desc();
+    desc.driverProfile = DriverProfile::Software;
+    gpu.apply(desc);
+    EXPECT_EQ(gpu.desc().driverProfile, DriverProfile::Gpu);
+}
+
+TEST(EglDevices, ListedWithTheirRendererAndIndex)
+{
+    const std::vector<EglDeviceInfo> devices = listDevices();
+    if (devices.empty())
+        GTEST_SKIP() << "EGL cannot enumerate devices here";
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        EXPECT_EQ(devices[i].index, static_cast<int>(i));
+        if (devices[i].problem.empty()) {
+            EXPECT_FALSE(devices[i].renderer.empty()) << i;
+        }
+    }
+    EXPECT_THROW(HeadlessContext({.device = static_cast<int>(devices.size())}), Error);
+    const HeadlessContext first({.device = 0});
+    EXPECT_NE(first.description().find("via EGL device 0"), std::string::npos) << first.description();
+}
+
+}  // namespace
+}  // namespace manylights
