@@ -7,13 +7,14 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/GpuScene.h"
 #include "render/LightTiles.h"
 
 namespace manylights {
 
 namespace {
 
-// Uniform locations of cluster_pairs.comp, pair_sort.comp and clustered_long.comp (the
+// Uniform locations of cluster_pairs.comp and pair_sort.comp (the
 // shaders get them as defines, so the numbers live here only).
 constexpr int kPairLightCountLocation = 52;
 constexpr int kPairCapacityLocation = 54;
@@ -80,13 +81,15 @@ gl::Defines clusterListDefines(gl::Defines defines)
     return defines;
 }
 
-ClusterLists::ClusterLists(const ClusterGridShape& shape)
+ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
     : narrowPairs_("cluster pairs", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, false)),
       widePairs_("cluster pairs of wide lights", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, true)),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(false)),
       sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(true)),
+      longLighting_("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
+                    clusterListDefines(clusterGridDefines(lightingDefines, shape))),
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT)
 {
     plan(kMinimumCapacity);
@@ -111,6 +114,7 @@ void ClusterLists::plan(std::uint32_t pairs)
 
 void ClusterLists::build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount)
 {
+    lightCount_ = lightCount;
     const std::uint32_t clusters = grid.clusterCount();
     const auto tiles = static_cast<std::uint32_t>(grid.gridWidth() * grid.gridHeight());
     ensure(clusterCounts_, "cluster list counts", clusters);
@@ -233,10 +237,27 @@ void ClusterLists::bind() const
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
 
-void ClusterLists::dispatchLongListTiles() const
+void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const
 {
-    statusBuffer_.bindAsDispatchIndirect();
-    glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, longTileGroups)));
+    if (laterParts_ == 0)
+        return;
+    const LightSource source = scene.indexedLightSource();
+    const gl::Program& program = longLighting_.variant(scene.lightingFeatures(), source);
+    for (std::uint32_t part = 1; part <= laterParts_; ++part)
+        passes.run({.name = "lighting",
+                    .sampled = Resource::GBuffer,
+                    .images = Resource::LitImage,
+                    .storage = Resource::LightGrid,
+                    .indirect = Resource::LightGrid,
+                    .writes = Resource::LitImage},
+                   [&] {
+                       grid.bind();
+                       bind();
+                       program.set(kClusterListPartLocation, part);
+                       program.use();
+                       statusBuffer_.bindAsDispatchIndirect();
+                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, longTileGroups)));
+                   });
 }
 
 bool ClusterLists::fitted()
@@ -264,6 +285,17 @@ std::size_t ClusterLists::memoryBytes() const
                                      &lights_[1], &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;
+}
+
+std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) const
+{
+    const std::size_t lightBytes = std::size_t{lightCount_} * sizeof(GpuLight);
+    return {{"clusters", static_cast<double>(grid.clusterCount())},
+            {"cluster_pairs", static_cast<double>(status_.pairsNeeded)},
+            {"longest_cluster_list", static_cast<double>(status_.longestList)},
+            {"cluster_list_visits", static_cast<double>(status_.listVisits)},
+            {"cluster_rebuilds", static_cast<double>(rebuilds_)},
+            {"gpu_memory_bytes", static_cast<double>(lightBytes + memoryBytes() + grid.memoryBytes())}};
 }
 
 }  // namespace manylights

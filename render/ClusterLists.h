@@ -32,6 +32,8 @@
 #include "render/ClusterGrid.h"
 #include "render/FramePasses.h"
 #include "render/GpuScan.h"
+#include "render/LightingPrograms.h"
+#include "render/Technique.h"
 
 namespace manylights {
 
@@ -41,7 +43,7 @@ inline constexpr std::uint32_t kClusterListPart = 8192;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;  // pairs one invocation of pair_sort.comp walks
-inline constexpr int kClusterListPartLocation = 58;  // clustered_long.comp's part
+inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
 
 // CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl.
 gl::Defines clusterListDefines(gl::Defines defines);
@@ -51,19 +53,19 @@ inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 
 
 class ClusterLists {
 public:
-    // For grids of `shape` (their programs are compiled for it).
-    explicit ClusterLists(const ClusterGridShape& shape);
+    // For grids of `shape` (their programs are compiled for it), lit by programs made with
+    // `lightingDefines` (the technique's, render/Technique.h shaderDefines).
+    ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines);
 
     // Builds the frame's lists for the first `lightCount` lights of the scene (bound by the
     // passes) over `grid`, fitted to the frame's surfaces already. Passes named "clusters".
     void build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount);
     // Binds what the lighting programs read: the lists and the long lists' tiles.
     void bind() const;
-    // The parts of long lists the lighting adds after the first (each an indirect dispatch of
-    // clustered_long.comp over the tiles that have them), as planned for this frame.
-    std::uint32_t laterParts() const { return laterParts_; }
-    // Dispatches part `part` of the long lists (bound: the program, its uniforms).
-    void dispatchLongListTiles() const;
+    // After the lighting of part 0 of every list: the later parts of the long lists, as many
+    // as planned for this frame, each an indirect dispatch of list_lighting.comp over the tiles
+    // that have them, adding to the lit image. Passes named "lighting".
+    void lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const;
 
     // After the frame: whether this frame's lists held every pair and its parts covered the
     // longest list. If not, plans the storage and parts the frame needs: the frame must be
@@ -77,6 +79,11 @@ public:
     std::uint32_t listVisits() const { return status_.listVisits; }
     // The GPU memory of the lists and their culling structures.
     std::size_t memoryBytes() const;
+    // The --stats counters of a technique lit from these lists over `grid`, of the last frame:
+    // clusters (the grid's size), cluster_pairs, longest_cluster_list, cluster_list_visits
+    // (when counting work), cluster_rebuilds (frames redone so far) and gpu_memory_bytes (the
+    // lights, the lists and the grid).
+    std::vector<TechniqueCounter> counters(const ClusterGrid& grid) const;
 
 private:
     struct Status {  // lib/cluster_list_status.glsl
@@ -95,11 +102,13 @@ private:
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
+    LightingProgram longLighting_;
     GpuScan scan_;
 
     std::uint32_t capacity_ = 0;    // pairs the storage holds
     std::uint32_t laterParts_ = 0;  // planned
     std::uint64_t rebuilds_ = 0;
+    std::uint32_t lightCount_ = 0;  // of the last frame
     Status status_;
     bool built_ = false;  // a frame was built whose status fitted() has not read
 

@@ -32,8 +32,7 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    LightingProgram lighting_;      // part 0 of every list: the one pass over the image
-    LightingProgram longLighting_;  // the later parts of long lists, over their tiles
+    LightingProgram lighting_;  // part 0 of every list: the one pass over the image
 };
 
 }  // namespace manylights

@@ -1,6 +1,6 @@
 #version 450 core
 // clustered: each covered pixel shades the global terms and the first part of its cluster's
-// light list (lib/cluster_lists.glsl); clustered_long.comp adds the later parts of long lists.
+// light list (lib/cluster_lists.glsl); list_lighting.comp adds the later parts of long lists.
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
 #include "lib/lighting.glsl"

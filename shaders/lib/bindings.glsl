@@ -20,7 +20,6 @@ const int CLUSTER_TILE_SLICES_BUFFER_BINDING = 3;     // lib/clusters.glsl Clust
 const int TILE_LIGHTS_BUFFER_BINDING = 3;             // tiled_quads.frag TileLights
 const int CLUSTER_LIGHT_MASKS_BUFFER_BINDING = 4;     // lib/clusters.glsl ClusterLightMasks
 const int CLUSTER_MASK_SUMMARIES_BUFFER_BINDING = 5;  // lib/clusters.glsl ClusterMaskSummaries
-const int COARSE_TILE_MASKS_BUFFER_BINDING = 6;       // lib/coarse_tiles.glsl CoarseTileMasks
 const int INSTANCES_BUFFER_BINDING = 8;               // lib/instances.glsl Instances
 const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag TransparentEvaluations
 const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl ShadowSlotOfLight
@@ -38,7 +37,7 @@ const int CLUSTER_LIST_STATUS_BUFFER_BINDING = 20;   // lib/cluster_list_status.
 const int SCAN_DATA_BUFFER_BINDING = 21;             // scan.comp; pair_sort.comp Histogram
 const int SCAN_PARTIALS_BUFFER_BINDING = 22;         // scan.comp
 const int CLUSTER_LIST_FIRSTS_BUFFER_BINDING = 23;   // lib/cluster_lists.glsl
-const int CLUSTER_LONG_TILES_BUFFER_BINDING = 24;    // cluster_long_lists.comp, clustered_long.comp
+const int CLUSTER_LONG_TILES_BUFFER_BINDING = 24;    // cluster_long_lists.comp, list_lighting.comp
 const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 

@@ -3,7 +3,7 @@
 // for the frame anyway. The two groups are indirect dispatches: their x counts what the GPU
 // found.
 layout(std430, binding = CLUSTER_LIST_STATUS_BUFFER_BINDING) buffer ClusterListStatus {
-    uint longTileGroups[3];  // x: tiles holding a list longer than a part (clustered_long.comp)
+    uint longTileGroups[3];  // x: tiles holding a list longer than a part (list_lighting.comp)
     uint pairsNeeded;        // (cluster, light) pairs of the frame: the list storage it needs
     uint longestList;        // the longest cluster list
     uint wideLightGroups[3];  // x: lights covering more tiles than one invocation takes; y: bands

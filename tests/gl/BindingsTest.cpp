@@ -55,7 +55,6 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::StorageBlock, "TileLights"}, TILE_LIGHTS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ClusterLightMasks"}, CLUSTER_LIGHT_MASKS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ClusterMaskSummaries"}, CLUSTER_MASK_SUMMARIES_BUFFER_BINDING},
-        {{Kind::StorageBlock, "CoarseTileMasks"}, COARSE_TILE_MASKS_BUFFER_BINDING},
         {{Kind::StorageBlock, "Instances"}, INSTANCES_BUFFER_BINDING},
         {{Kind::StorageBlock, "TransparentEvaluations"}, TRANSPARENT_EVALUATIONS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ShadowSlotOfLight"}, SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING},

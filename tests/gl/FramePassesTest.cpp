@@ -53,6 +53,16 @@ TEST_F(FramePassesTest, BarriersFollowIncoherentWritesAndQueuedDraws)
     EXPECT_EQ(passes.barrierFor(kDrawReadsGrid), GLbitfield{0});
     EXPECT_EQ(passes.barrierFor(kComputeWritesGrid),
               GLbitfield{GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT});
+
+    // An indirect dispatch whose parameters compute wrote waits on the command bit; a copy of a
+    // buffer that compute wrote on the buffer-update bit.
+    constexpr Pass kIndirect{.name = "indirect", .storage = Resource::LightGrid, .indirect = Resource::LightGrid};
+    constexpr Pass kCopy{.name = "copy", .transfers = Resource::LightGrid};
+    passes.run(kComputeWritesGrid, [] {});
+    EXPECT_EQ(passes.barrierFor(kIndirect), GLbitfield{GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT});
+    EXPECT_EQ(passes.barrierFor(kCopy), GLbitfield{GL_BUFFER_UPDATE_BARRIER_BIT});
+    passes.run(kIndirect, [] {});
+    EXPECT_EQ(passes.barrierFor(kCopy), GLbitfield{GL_BUFFER_UPDATE_BARRIER_BIT});
     passes.finish();
     profiler_.endFrame();
 }

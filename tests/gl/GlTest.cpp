@@ -333,23 +333,6 @@ TEST(ClusteredBatches, FitTheMaskBudgetAtEverySize)
     EXPECT_LT(ClusterGrid::lightsPerBatch(8192, 8192), kLightsPerBatch);
 }
 
-// tiled's coarse tiles grow from 64 pixels at the sizes where a full batch's masks would
-// exceed their budget.
-TEST(TiledCoarseTiles, FitTheMaskBudgetAtEverySize)
-{
-    EXPECT_EQ(coarseTileSizeFor(1280, 720), kCoarseTileSize);
-    EXPECT_EQ(coarseTileSizeFor(8192, 8192), kCoarseTileSize);
-    EXPECT_GT(coarseTileSizeFor(16384, 16384), kCoarseTileSize);
-    for (const auto& [width, height] : {std::pair{1, 1}, std::pair{3840, 2160}, std::pair{16384, 16384},
-                                        std::pair{32768, 32768}, std::pair{32768, 1}}) {
-        const int size = coarseTileSizeFor(width, height);
-        const std::size_t tiles = static_cast<std::size_t>((width + size - 1) / size) * ((height + size - 1) / size);
-        EXPECT_EQ(size % kTiledTileSize, 0) << width << "x" << height;
-        EXPECT_LE(tiles * (kLightsPerBatch / 32) * sizeof(std::uint32_t), kCoarseMaskBudgetBytes)
-            << width << "x" << height;
-    }
-}
-
 TEST(LightWindows, OnlyAFrameOfOneSmallBatchFitsOne)
 {
     EXPECT_TRUE(fitsOneLightWindow(lightBatches(0)));

@@ -1,10 +1,13 @@
 #version 450 core
-// clustered: part CLUSTER_LIST_PART_LOCATION's `part` (1, 2, ...) of the long light lists
-// (lib/cluster_lists.glsl), added to the lit image. One workgroup per tile that
-// cluster_long_lists.comp listed, an invocation per pixel; a dispatch per part, each as large
-// as the number of such tiles (an indirect dispatch: the CPU does not know it). Pixels whose
-// cluster's list is shorter than the part add nothing and store nothing. Loop iterations:
-// CLUSTER_LIST_PART.
+// Lighting from the light lists of a cluster grid (lib/cluster_lists.glsl), in a compute pass:
+// an invocation per pixel, a workgroup per tile.
+// - EVERY_TILE: tiled's lighting (render/TiledTechnique.h). The workgroups cover the image;
+//   each covered pixel stores the global terms and part 0 of its cluster's list.
+// - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
+//   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
+//   dispatch: the CPU does not know how many); pixels whose cluster's list is shorter than the
+//   part store nothing, the others add the part to the lit image.
+// Loop iterations: CLUSTER_LIST_PART.
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/light_batch.glsl"
@@ -23,7 +26,11 @@ layout(std430, binding = CLUSTER_LONG_TILES_BUFFER_BINDING) readonly buffer Long
 
 void main()
 {
+#ifdef EVERY_TILE
+    uint tile = gl_WorkGroupID.y * clusterTileGrid().x + gl_WorkGroupID.x;
+#else
     uint tile = longListTile[gl_WorkGroupID.x];
+#endif
     uvec2 lo;
     uvec2 hi;
     clusterTilePixels(tile, lo, hi);
@@ -32,11 +39,18 @@ void main()
         return;
     Surface s = gbufferSurface(pixel);
     uint cluster = tile * uint(CLUSTER_SLICES) + sliceOfDepth(viewDepth(s.position), tileDepthRange[tile]);
+#ifndef EVERY_TILE
     if (clusterListCount[cluster] <= part * uint(CLUSTER_LIST_PART))
         return;
+#endif
     vec3 V = viewVector(s.position);
     uint evaluated = 0u;
     vec3 color = shadeClusterListPart(cluster, part, s, V, evaluated);
     recordLightEvaluationsAt(pixel, evaluated);
-    imageStore(litImage, pixel, vec4(imageLoad(litImage, pixel).rgb + color, 1.0));
+#ifdef EVERY_TILE
+    color += shadeGlobal(s, V);
+#else
+    color += imageLoad(litImage, pixel).rgb;
+#endif
+    imageStore(litImage, pixel, vec4(color, 1.0));
 }
