@@ -158,9 +158,12 @@ namespace {
 TEST(WorkCounts, TiledAndClusteredCullingOnTheBenchmarkScene)
 {
     // The benchmark courtyard at 4096 lights, whose radii keep the lights per pixel
-    // constant. Measured: clustered 2.5 x and tiled 4.7 x the in-range pairs at this size
-    // (1.7 x and 3.0 x at 1280x720); the bounds leave room for scene tweaks, not for a
-    // culling bug, which costs whole multiples.
+    // constant. clustered and tiled test each listed light against the pixel's surface before
+    // shading it, with lightReach's own test, so for these point lights they shade exactly
+    // the pairs in range; what their culling leaves is in the list entries walked. Measured at
+    // this size: clustered walks 1.8 x and tiled 2.3 x the in-range pairs (docs/performance.md);
+    // the bounds leave room for scene tweaks, not for a culling bug, which costs whole
+    // multiples (without the surfaces' boxes clustered walked 4.4 x at 16,384 lights).
     const auto dir = test::scratchDirectory();
     const std::string scene = MANYLIGHTS_SOURCE_DIR "/bench/courtyard.json";
     const auto work = [&](const std::string& technique) {
@@ -175,10 +178,10 @@ TEST(WorkCounts, TiledAndClusteredCullingOnTheBenchmarkScene)
     const auto inRange = clustered["in_range_pairs"].get<std::uint64_t>();
     ASSERT_GT(inRange, 100000u);
     EXPECT_EQ(tiled["in_range_pairs"].get<std::uint64_t>(), inRange);
-    EXPECT_GE(clustered["light_evaluations"].get<std::uint64_t>(), inRange);
-    EXPECT_LE(clustered["light_evaluations"].get<std::uint64_t>(), 3 * inRange);
-    EXPECT_GE(tiled["light_evaluations"].get<std::uint64_t>(), inRange);
-    EXPECT_LE(tiled["light_evaluations"].get<std::uint64_t>(), 6 * inRange);
+    EXPECT_EQ(clustered["light_evaluations"].get<std::uint64_t>(), inRange);
+    EXPECT_EQ(tiled["light_evaluations"].get<std::uint64_t>(), inRange);
+    EXPECT_LE(clustered["cluster_list_visits"].get<double>(), 2.5 * static_cast<double>(inRange));
+    EXPECT_LE(tiled["cluster_list_visits"].get<double>(), 3.0 * static_cast<double>(inRange));
 }
 
 // The transparency pass's pairs go to transparent_light_evaluations, apart from the opaque
