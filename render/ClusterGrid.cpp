@@ -2,6 +2,7 @@
 #include "render/Bindings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "core/Error.h"
@@ -63,7 +64,7 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
     const std::size_t tileBytes = sizeof(std::uint32_t) * tiles;
     if (!tileSlices_ || tileSlices_.size() != tileBytes) {
         // Dynamic: coverDepthRanges writes them from the CPU.
-        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 2 * tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 4 * tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
@@ -114,9 +115,16 @@ void ClusterGrid::coverDepthRanges(const std::vector<glm::vec2>& ranges)
     ML_ASSERT(ranges.size() == static_cast<std::size_t>(gridWidth_ * gridHeight_));
     const std::uint32_t allSlices = shape_.slices == 32 ? ~0u : (1u << shape_.slices) - 1u;
     std::vector<std::uint32_t> slices(ranges.size());
-    for (std::size_t tile = 0; tile < ranges.size(); ++tile)
-        slices[tile] = ranges[tile].x < ranges[tile].y ? allSlices : 0u;
-    tileDepthRanges_.update(0, ranges.size() * sizeof(glm::vec2), ranges.data());
+    // lib/clusters.glsl's tileSlicing, made here: the shaders read it as it is.
+    std::vector<glm::vec4> slicings(ranges.size(), glm::vec4(0.0f));
+    for (std::size_t tile = 0; tile < ranges.size(); ++tile) {
+        const glm::vec2 range = ranges[tile];
+        if (!(range.x < range.y))
+            continue;
+        slices[tile] = allSlices;
+        slicings[tile] = glm::vec4(range, std::log(range.x), static_cast<float>(shape_.slices) / std::log(range.y / range.x));
+    }
+    tileDepthRanges_.update(0, slicings.size() * sizeof(glm::vec4), slicings.data());
     tileSlices_.update(0, slices.size() * sizeof(std::uint32_t), slices.data());
 }
 

@@ -54,13 +54,13 @@ void main()
             }
         }
     if (farthest == 0.0) {
-        tileDepthRange[tile] = vec2(0.0);
+        tileDepthRange[tile] = vec4(0.0);
         tileOccupiedSlices[tile] = 0u;
         return;
     }
     // Widened so that rounding cannot put a surface outside; the ratio stays above 1, so the
     // slice logs are defined even for a tile facing the camera square on.
-    vec2 range = vec2(nearest * 0.999, farthest * 1.001);
+    vec4 slicing = tileSlicing(vec2(nearest * 0.999, farthest * 1.001));
     uint occupied = 0u;
 #ifdef CLUSTER_SURFACE_BOUNDS
     vec3 lo[CLUSTER_SLICES];
@@ -77,7 +77,7 @@ void main()
                 // The lighting pass computes the slice again in another program, whose
                 // rounding may differ: a surface within a hundredth of a slice of a boundary
                 // counts on both sides (it is in both slices' boxes).
-                float coordinate = sliceCoordinate(surface.w, range);
+                float coordinate = sliceCoordinate(surface.w, slicing);
                 uint below = uint(clamp(floor(coordinate - 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 uint above = uint(clamp(floor(coordinate + 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 occupied |= (1u << below) | (1u << above);
@@ -89,7 +89,7 @@ void main()
 #endif
             }
         }
-    tileDepthRange[tile] = range;
+    tileDepthRange[tile] = slicing;
     tileOccupiedSlices[tile] = occupied;
 #ifdef CLUSTER_SURFACE_BOUNDS
     // Grown by a little more than a view-space coordinate's rounding, so that a surface the

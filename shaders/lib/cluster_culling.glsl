@@ -11,6 +11,7 @@ struct ViewLight {
     bool unbounded;  // reaches every surface: no test can reject it
     vec3 axis;       // a spot's unit axis
     float cosCutoff;  // a spot's cos(cutoff); -2 for point lights
+    vec2 logDepthSpan;  // the logs of the view depths of the sphere's near and far side
 };
 
 ViewLight viewLight(GpuLight light)
@@ -21,6 +22,9 @@ ViewLight viewLight(GpuLight light)
     view.centre = (frame.view * vec4(light.positionRadius.xyz, 1.0)).xyz;
     view.axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
     view.cosCutoff = light.spotAxisCosCutoff.w;
+    // Once per light, not per tile: a tile's slices need only a multiply-add of these.
+    float depth = -view.centre.z;
+    view.logDepthSpan = log(max(vec2(depth - view.radius, depth + view.radius), vec2(1e-30)));
     return view;
 }
 
@@ -33,25 +37,25 @@ bool lightTouchesBox(ViewLight light, vec3 lo, vec3 hi)
 }
 
 // The box around slice k of a tile whose pixels are pixelLo..pixelHi and whose slices span
-// `range`: the first slice reaches back to the range's start and the last on to its end.
-void sliceBox(vec2 pixelLo, vec2 pixelHi, vec2 range, uint k, out vec3 lo, out vec3 hi)
+// `slicing`: the first slice reaches back to the range's start and the last on to its end.
+void sliceBox(vec2 pixelLo, vec2 pixelHi, vec4 slicing, uint k, out vec3 lo, out vec3 hi)
 {
-    float logRatio = sliceLogRatio(range);
-    float zNear = k == 0u ? range.x : range.x * exp(logRatio * float(k));
-    float zFar = k + 1u == uint(CLUSTER_SLICES) ? range.y : min(range.x * exp(logRatio * float(k + 1u)), range.y);
+    float logRatio = 1.0 / slicing.w;
+    float zNear = k == 0u ? slicing.x : slicing.x * exp(logRatio * float(k));
+    float zFar = k + 1u == uint(CLUSTER_SLICES) ? slicing.y : min(slicing.x * exp(logRatio * float(k + 1u)), slicing.y);
     frustumSectionBox(pixelLo, pixelHi, zNear, max(zFar, zNear), lo, hi);
 }
 
 // The box a cluster's light test uses: around its surfaces where the grid keeps their bounds
 // (CLUSTER_SURFACE_BOUNDS), else the frustum's section through its tile and slice.
-void clusterBox(uint tile, uint k, vec2 pixelLo, vec2 pixelHi, vec2 range, out vec3 lo, out vec3 hi)
+void clusterBox(uint tile, uint k, vec2 pixelLo, vec2 pixelHi, vec4 slicing, out vec3 lo, out vec3 hi)
 {
 #ifdef CLUSTER_SURFACE_BOUNDS
     uint cluster = tile * uint(CLUSTER_SLICES) + k;
     lo = clusterBounds[2u * cluster].xyz;
     hi = clusterBounds[2u * cluster + 1u].xyz;
 #else
-    sliceBox(pixelLo, pixelHi, range, k, lo, hi);
+    sliceBox(pixelLo, pixelHi, slicing, k, lo, hi);
 #endif
 }
 
@@ -62,7 +66,7 @@ uint lightSlicesOfTile(ViewLight light, uint tile)
     uint slices = tileOccupiedSlices[tile];
     if (slices == 0u)
         return 0u;
-    vec2 range = tileDepthRange[tile];
+    vec4 slicing = tileDepthRange[tile];
     uvec2 pixelLo;
     uvec2 pixelHi;
     clusterTilePixels(tile, pixelLo, pixelHi);
@@ -74,7 +78,7 @@ uint lightSlicesOfTile(ViewLight light, uint tile)
     lo = clusterBounds[tileBase].xyz;
     hi = clusterBounds[tileBase + 1u].xyz;
 #else
-    frustumSectionBox(vec2(pixelLo), vec2(pixelHi), range.x, range.y, lo, hi);
+    frustumSectionBox(vec2(pixelLo), vec2(pixelHi), slicing.x, slicing.y, lo, hi);
 #endif
     if (!lightTouchesBox(light, lo, hi))
         return 0u;
@@ -84,17 +88,16 @@ uint lightSlicesOfTile(ViewLight light, uint tile)
     // its radius in depth too (courtyard, 4096 lights: 15 -> 12 ms, fewer box tests). The
     // lighting pass computes a surface's slice in another program, whose rounding may
     // differ: a hundredth of a slice either way, as cluster_tiles.comp allows for.
-    float viewDepth = -light.centre.z;
-    uint kLo = uint(clamp(floor(sliceCoordinate(viewDepth - light.radius, range) - 0.01), 0.0,
+    uint kLo = uint(clamp(floor(sliceCoordinateOfLog(light.logDepthSpan.x, slicing) - 0.01), 0.0,
                           float(CLUSTER_SLICES - 1)));
-    uint kHi = uint(clamp(floor(sliceCoordinate(viewDepth + light.radius, range) + 0.01), 0.0,
+    uint kHi = uint(clamp(floor(sliceCoordinateOfLog(light.logDepthSpan.y, slicing) + 0.01), 0.0,
                           float(CLUSTER_SLICES - 1)));
     slices &= (0xffffffffu >> (31u - kHi)) & ~((1u << kLo) - 1u);
     uint reached = 0u;
     while (slices != 0u) {
         uint k = uint(findLSB(slices));
         slices &= slices - 1u;
-        clusterBox(tile, k, vec2(pixelLo), vec2(pixelHi), range, lo, hi);
+        clusterBox(tile, k, vec2(pixelLo), vec2(pixelHi), slicing, lo, hi);
         if (lightTouchesBox(light, lo, hi))
             reached |= 1u << k;
     }

@@ -11,7 +11,10 @@
 // pixel walks its lights in index order, the order forward adds them in.
 #include "lib/bindings.glsl"
 layout(std430, binding = CLUSTER_TILE_DEPTHS_BUFFER_BINDING) buffer ClusterTileDepths {
-    vec2 tileDepthRange[];  // view depth of the tile's slice 0 start and last slice end; 0 when empty
+    // x, y: the view depths where the tile's slice 0 starts and its last slice ends (0 when
+    // the tile is empty); z: the log of x; w: CLUSTER_SLICES / log(y / x), so that the slice
+    // of a depth costs one log (tileSlicing makes it).
+    vec4 tileDepthRange[];
 };
 layout(std430, binding = CLUSTER_TILE_SLICES_BUFFER_BINDING) buffer ClusterTileSlices {
     uint tileOccupiedSlices[];  // bit k: slice k holds at least one pixel's surface
@@ -52,22 +55,27 @@ uint clusterTileOfPixel(uvec2 pixel)
     return tile.y * clusterTileGrid().x + tile.x;
 }
 
-// The log of the depth ratio from one slice to the next in a tile spanning `range`: the
-// range divided evenly in log space. (A floor on the ratio, slices no thinner than 5% of
-// their depth, was measured: it culled worse and shaded slower, docs/techniques.md.)
-float sliceLogRatio(vec2 range)
+// A tile's slicing (tileDepthRange) for its surfaces' depth range: the range divided evenly
+// in log space. (A floor on the ratio, slices no thinner than 5% of their depth, was measured:
+// it culled worse and shaded slower, docs/techniques.md.)
+vec4 tileSlicing(vec2 range)
 {
-    return log(range.y / range.x) / float(CLUSTER_SLICES);
+    return vec4(range, log(range.x), float(CLUSTER_SLICES) / log(range.y / range.x));
 }
 
-// The slice coordinate of view depth z in a tile spanning `range`: slice k holds
-// k ≤ coordinate < k + 1. Depths outside the range fall in the end slices.
-float sliceCoordinate(float z, vec2 range)
+// The slice coordinate of a view depth whose log is logDepth, in a tile sliced by `slicing`:
+// slice k holds k ≤ coordinate < k + 1. Depths outside the range fall in the end slices.
+float sliceCoordinateOfLog(float logDepth, vec4 slicing)
 {
-    return log(max(z, range.x) / range.x) / sliceLogRatio(range);
+    return (max(logDepth, slicing.z) - slicing.z) * slicing.w;
 }
 
-uint sliceOfDepth(float z, vec2 range)
+float sliceCoordinate(float z, vec4 slicing)
 {
-    return uint(clamp(floor(sliceCoordinate(z, range)), 0.0, float(CLUSTER_SLICES - 1)));
+    return sliceCoordinateOfLog(log(z), slicing);
+}
+
+uint sliceOfDepth(float z, vec4 slicing)
+{
+    return uint(clamp(floor(sliceCoordinate(z, slicing)), 0.0, float(CLUSTER_SLICES - 1)));
 }
