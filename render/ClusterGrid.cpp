@@ -122,7 +122,8 @@ void ClusterGrid::coverDepthRanges(const std::vector<glm::vec2>& ranges)
         if (!(range.x < range.y))
             continue;
         slices[tile] = allSlices;
-        slicings[tile] = glm::vec4(range, std::log(range.x), static_cast<float>(shape_.slices) / std::log(range.y / range.x));
+        slicings[tile] =
+            glm::vec4(range, std::log(range.x), static_cast<float>(shape_.slices) / std::log(range.y / range.x));
     }
     tileDepthRanges_.update(0, slicings.size() * sizeof(glm::vec4), slicings.data());
     tileSlices_.update(0, slices.size() * sizeof(std::uint32_t), slices.data());

@@ -188,7 +188,9 @@ void ClusterLists::build(FramePasses& passes, const ClusterGrid& grid, std::uint
         glDispatchCompute(groupsFor(tiles), 1, 1);
     });
     // The long-lists pass has read the counts; they become the firsts by a scan of a copy.
-    passes.run({.name = "cluster lists", .storage = Resource::LightGrid, .transfers = Resource::LightGrid,
+    passes.run({.name = "cluster lists",
+                .storage = Resource::LightGrid,
+                .transfers = Resource::LightGrid,
                 .writes = Resource::LightGrid},
                [&] { clusterCounts_.copyTo(clusterFirsts_, bytesOf(clusters)); });
     scan_.run(passes, "cluster lists", clusterFirsts_, clusters);
@@ -281,8 +283,9 @@ bool ClusterLists::fitted()
 std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
-    for (const gl::Buffer* buffer : {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &keys_[0], &keys_[1], &lights_[0],
-                                     &lights_[1], &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+    for (const gl::Buffer* buffer :
+         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
+          &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;
 }

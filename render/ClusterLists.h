@@ -42,7 +42,7 @@ namespace manylights {
 inline constexpr std::uint32_t kClusterListPart = 8192;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
-inline constexpr std::uint32_t kSortChunk = 64;  // pairs one invocation of pair_sort.comp walks
+inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
 inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
 
 // CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl.

@@ -10,8 +10,7 @@ namespace {
 // The barrier bits each kind of access needs after incoherent writes.
 constexpr GLbitfield kAllAccess = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-                                  GL_COMMAND_BARRIER_BIT;
+                                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
 
 template <typename Visit>
 void forEachResource(Resource set, Visit&& visit)

@@ -35,7 +35,8 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
                    lists_.bind();
                    program.set(kClusterListPartLocation, 0u);
                    program.use();
-                   glDispatchCompute(static_cast<GLuint>(grid_.gridWidth()), static_cast<GLuint>(grid_.gridHeight()), 1);
+                   glDispatchCompute(static_cast<GLuint>(grid_.gridWidth()), static_cast<GLuint>(grid_.gridHeight()),
+                                     1);
                });
     lists_.lightLongLists(scene, grid_, passes);
 }

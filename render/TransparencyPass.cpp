@@ -135,7 +135,8 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
     if (!everyLight)
         passes.run(gridPass, [&] {
             if (!grid_)
-                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout, ClusterGridShape{.slices = kTransparentGridSlices});
+                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout,
+                                                      ClusterGridShape{.slices = kTransparentGridSlices});
             grid_->resize(targets.width, targets.height, batches.front().size());
             grid_->coverDepthRanges(tileDepthRanges(items, frame, grid_->gridWidth(), grid_->gridHeight()));
             if (!gridPerLayer)

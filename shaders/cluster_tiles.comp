@@ -84,8 +84,10 @@ void main()
 #ifdef CLUSTER_SURFACE_BOUNDS
                 lo[below] = min(lo[below], surface.xyz);
                 hi[below] = max(hi[below], surface.xyz);
-                lo[above] = min(lo[above], surface.xyz);
-                hi[above] = max(hi[above], surface.xyz);
+                if (above != below) {
+                    lo[above] = min(lo[above], surface.xyz);
+                    hi[above] = max(hi[above], surface.xyz);
+                }
 #endif
             }
         }

@@ -168,8 +168,8 @@ TEST(SmallLights262144, ClusteredAndTiledEqualDeferredAndEachOtherRunToRun)
         test::expectImagesNear(reference, image, {.relative = 1e-4, .absolute = 1e-6}, technique);
         // The lists are sorted by a stable sort, whatever order the GPU ran the writes in: the
         // same scene gives the same bytes, here from the third frame of a run.
-        const Image third = render(technique, technique + "-again.pfm",
-                                   {"--frames", "2", "--stats", (dir / "three.json").string()});
+        const Image third =
+            render(technique, technique + "-again.pfm", {"--frames", "2", "--stats", (dir / "three.json").string()});
         EXPECT_EQ(third.rgb, image.rgb) << technique << " run to run";
         // The storage planned from a frame holds the next: only the first frame is redone.
         const nlohmann::json one = stats("one.json");
