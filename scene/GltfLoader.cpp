@@ -29,6 +29,7 @@
 
 #include "core/Error.h"
 #include "core/InputFile.h"
+#include "scene/GltfFieldChecks.h"
 #include "scene/Meshes.h"
 
 namespace manylights {
@@ -77,19 +78,25 @@ bool noFileRead(std::vector<unsigned char>*, std::string* error, const std::stri
     return false;
 }
 bool noFileWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
-// External buffers and images through the one input reader (core/InputFile.h): a FIFO or a
-// device named as a buffer's uri is refused, not read for ever.
-bool inputFileExists(const std::string& path, void*)
+// External buffers through the one input reader (core/InputFile.h): a FIFO or a device named
+// as a buffer's uri is refused, not read for ever. Every file "exists" for tinygltf, so that it
+// reads the path beside the model (not the one in the current directory it tries next) and the
+// reader's message names the full path ("models/Sponza.bin: cannot open a buffer of
+// models/Sponza.gltf: No such file or directory"), not tinygltf's "File not found : Sponza.bin".
+struct ExternalFiles {
+    std::string modelName;
+    std::string firstError;  // the reader's message for the first file that could not be read
+};
+bool anyFileExists(const std::string&, void*) { return true; }
+bool readExternalFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void* user)
 {
-    std::error_code error;
-    return std::filesystem::exists(path, error);
-}
-bool readExternalFile(std::vector<unsigned char>* bytes, std::string* error, const std::string& path, void*)
-{
+    auto& files = *static_cast<ExternalFiles*>(user);
     try {
-        *bytes = readInputBytes(path, "the file");
+        *bytes = readInputBytes(path, "a buffer of " + files.modelName);
         return true;
     } catch (const Error& e) {
+        if (files.firstError.empty())
+            files.firstError = e.what();
         if (error)
             *error += std::string(e.what()) + "\n";
         return false;
@@ -108,9 +115,14 @@ struct AccessorView {
 
 class GltfReader {
 public:
+    // `warnings` holds what was noted before tinygltf read the file (scene/GltfFieldChecks.h).
     GltfReader(const tinygltf::Model& gltf, const std::string& displayName, const fs::path& baseDirectory,
-               const GltfOptions& options)
-        : gltf_(gltf), displayName_(displayName), base_(baseDirectory), options_(options), warnings_(displayName)
+               const GltfOptions& options, FileWarnings warnings)
+        : gltf_(gltf),
+          displayName_(displayName),
+          base_(baseDirectory),
+          options_(options),
+          warnings_(std::move(warnings))
     {
     }
 
@@ -1008,10 +1020,13 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
                         "; only version 2 (glTF 2.0) is read");
     }
     checkJsonNesting(gltfJsonText(bytes), displayName);
+    FileWarnings warnings(displayName);
+    checkGltfFields(gltfJsonText(bytes), warnings);
     tinygltf::TinyGLTF context;
     context.SetImageLoader(&keepEncodedImage, nullptr);
+    ExternalFiles externalFiles{displayName, {}};
     if (options.allowExternalFiles)
-        context.SetFsCallbacks({&inputFileExists, &keepPath, &readExternalFile, &noFileWrite, nullptr});
+        context.SetFsCallbacks({&anyFileExists, &keepPath, &readExternalFile, &noFileWrite, &externalFiles});
     else
         context.SetFsCallbacks({&noFileExists, &keepPath, &noFileRead, &noFileWrite, nullptr});
     tinygltf::Model gltf;
@@ -1031,11 +1046,13 @@ Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string&
         throw Error(oneLine(displayName + ": " + e.what()));
     }
     if (!ok || !error.empty()) {
+        if (!externalFiles.firstError.empty())
+            throw Error(oneLine(externalFiles.firstError));
         std::string message = error.empty() ? std::string("cannot parse the file") : error;
         message = message.substr(0, message.find('\n'));
         throw Error(oneLine(displayName + ": " + message));
     }
-    return GltfReader(gltf, displayName, baseDirectory, options).read();
+    return GltfReader(gltf, displayName, baseDirectory, options, std::move(warnings)).read();
 }
 
 Model loadGltfFile(const fs::path& path, const GltfOptions& options)

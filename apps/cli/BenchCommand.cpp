@@ -176,12 +176,13 @@ std::string optionalCount(const std::optional<std::uint64_t>& count)
     return count ? std::to_string(*count) : std::string();
 }
 
-// docs/cli.md documents every column.
-std::string csvText(const std::vector<BenchResult>& results)
+// docs/cli.md documents every column. Without the header line for the shards after the first.
+std::string csvText(const std::vector<BenchResult>& results, bool header)
 {
     std::string text =
-        "technique,lights,width,height,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_gpu_ms_median,"
-        "fragment_invocations,passes,light_evaluations,in_range_pairs,transparent_light_evaluations\n";
+        !header ? ""
+                : "technique,lights,width,height,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_gpu_ms_median,"
+                  "fragment_invocations,passes,light_evaluations,in_range_pairs,transparent_light_evaluations\n";
     for (const BenchResult& r : results) {
         std::string passes;
         for (const PassSummary& pass : r.measured.passes) {
@@ -401,6 +402,18 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     addDisplayOptions(*bench, options.display);
     bench->add_flag("--count-work", options.countWork,
                     "Also count light evaluations and in-range pairs (one extra, untimed frame each)");
+    bench
+        ->add_option_function<std::string>(
+            "--shard", [&options](const std::string& text) { parseShard(text, options.shard); },
+            "Time only the cases c (size, count, technique in sweep order) with c mod N = I-1 (I/N)")
+        ->check([](const std::string& text) {
+            Shard shard;
+            std::string problem = parseShard(text, shard);
+            const std::string name = "--shard ";  // CLI11 puts the option's name in front already
+            if (problem.compare(0, name.size(), name) == 0)
+                problem.erase(0, name.size());
+            return problem;
+        });
     return bench;
 }
 
@@ -423,7 +436,12 @@ void runBench(const BenchOptions& options)
     HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
     std::vector<BenchResult> results;
     {
-        Progress progress(options.sizes.size() * lightCounts.size() * techniques.size());
+        const std::size_t cases = options.sizes.size() * lightCounts.size() * techniques.size();
+        std::size_t shardCases = 0;
+        for (std::size_t c = 0; c < cases; ++c)
+            shardCases += options.shard.has(c) ? 1 : 0;
+        Progress progress(shardCases);
+        std::size_t caseNumber = 0;
         // Sizes outermost and techniques innermost: the techniques at one light count finish
         // together, so an interrupted sweep has compared them all up to where it stopped.
         for (const ImageSize& size : options.sizes) {
@@ -431,6 +449,8 @@ void runBench(const BenchOptions& options)
             for (const std::optional<int>& count : lightCounts) {
                 const std::vector<Light> lights = expandLights(scene, count);
                 for (const std::string& technique : techniques) {
+                    if (!options.shard.has(caseNumber++))
+                        continue;
                     const std::string label =
                         technique + " " + std::to_string(lights.size()) + " lights " + formatSize(size);
                     if (overBudget.contains(technique)) {
@@ -456,7 +476,7 @@ void runBench(const BenchOptions& options)
     // Both outputs or neither.
     AtomicFileSet outputs;
     if (!options.csvPath.empty())
-        outputs.stage(options.csvPath, "CSV", csvText(results));
+        outputs.stage(options.csvPath, "CSV", csvText(results, options.shard.index == 1));
     if (!options.plotPath.empty())
         outputs.stage(options.plotPath, "plot",
                       plotText(results, options, techniques, std::filesystem::path(scene.source).filename().string()));

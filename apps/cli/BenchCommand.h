@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/cli/CommandSupport.h"
+#include "apps/cli/Shard.h"
 #include "render/GBuffer.h"
 #include "render/TextureCache.h"
 
@@ -36,6 +37,10 @@ struct BenchOptions {
     double budgetMs = 0.0;
     int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
     DriverOptions driver;  // --driver-profile, --device
+    // --shard I/N: only the cases (size, count, technique), numbered in the sweep's order, with
+    // number mod N = I − 1. Only shard 1's CSV has the header line, so the shards' CSVs
+    // concatenate into the whole sweep's (in another row order).
+    Shard shard;
 };
 
 // Adds the `bench` subcommand to `app`; what it parses lands in `options`. Malformed values

@@ -54,6 +54,11 @@ int runCli(int argc, const char* const* argv)
         renderCommand->add_option("--fps", render.fps, "Frames per second of a --time-range recording")
             ->check(numberIn(0.001, 1000.0))
             ->capture_default_str();
+    std::string shard;
+    CLI::Option* shardOption = renderCommand->add_option(
+        "--shard", shard, "Render only the frames k with k mod N = I-1 of a --time-range recording (I/N)");
+    renderCommand->add_flag("--skip-existing", render.skipExisting,
+                            "Render only the frames of a --time-range recording whose files are missing");
     renderCommand->add_option("--lights", render.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));
     renderCommand->add_option("--frames", render.frames, "Frames to render and time (after one warm-up frame)")
@@ -82,6 +87,9 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_flag("--exr-float", render.exrFloat, "Write EXR channels as 32-bit floats instead of half");
     renderCommand->add_flag("--aovs", render.aovs,
                             "Add the G-buffer quantities (position, normal, ..., ssao) as layers of the EXR output");
+    bool noLegend = false;
+    renderCommand->add_flag("--no-legend", noLegend,
+                            "Leave the labelled colour bar out of a light-count view's PNG (for analysis)");
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 
@@ -102,6 +110,10 @@ int runCli(int argc, const char* const* argv)
     if (benchCommand->parsed()) {
         if (!bench.csvPath.empty() && !bench.plotPath.empty() && sameFile(bench.csvPath, bench.plotPath))
             return usageError("--csv and --plot name the same file '" + bench.csvPath + "'");
+        // A budget skips a technique's later cases from its earlier ones, which another shard
+        // may time; a plot of one shard's cases is a fraction of the sweep.
+        if (!bench.shard.isWhole() && (bench.budgetMs > 0.0 || !bench.plotPath.empty()))
+            return usageError("--shard does not combine with --budget-ms or --plot, which need the whole sweep");
         return reportingErrors([&] { runBench(bench); }, "benchmarking");
     }
 
@@ -112,6 +124,11 @@ int runCli(int argc, const char* const* argv)
     render.height = renderSize.height;
     if (fpsOption->count() > 0 && timeRangeOption->count() == 0)
         return usageError("--fps applies only to a --time-range recording");
+    if (timeRangeOption->count() == 0 && (shardOption->count() > 0 || render.skipExisting))
+        return usageError("--shard and --skip-existing apply only to a --time-range recording");
+    if (shardOption->count() > 0)
+        if (std::string problem = parseShard(shard, render.shard); !problem.empty())
+            return usageError(problem);
     if (timeRangeOption->count() > 0) {
         TimeRange range;
         std::string problem = parseTimeRange(timeRange, range);
@@ -143,6 +160,9 @@ int runCli(int argc, const char* const* argv)
     if (render.aovs && render.view != ViewMode::Final)
         return usageError("--aovs adds the G-buffer views to the final image; it does not combine with --view " + view);
     render.gbufferLayout = *parseGBufferLayout(gbufferLayout);
+    if (noLegend && render.view != ViewMode::LightCount)
+        return usageError("--no-legend applies to --view light-count, not '" + view + "'");
+    render.legend = !noLegend;
 
     return reportingErrors([&] { runRender(render); },
                            "rendering " + std::to_string(render.width) + "x" + std::to_string(render.height));

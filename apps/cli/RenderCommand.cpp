@@ -1,10 +1,12 @@
 #include "apps/cli/RenderCommand.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +15,7 @@
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
 #include "render/ExrFile.h"
+#include "render/HeatMapLegend.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
 
@@ -94,8 +97,9 @@ const std::vector<AovLayer>& aovLayers()
 
 // The renderer's last frame encoded for `path`: .pfm and .exr as linear floats (box-filtered
 // down when supersampled), .png through the display pass (the final and volumes views) or as
-// the view's displayable image. --aovs renders each G-buffer view after the frame and adds it
-// to the EXR file (the renderer then holds the last view's frame: nothing reads it after).
+// the view's displayable image (the light-count view's with its legend unless --no-legend). --aovs renders each
+// G-buffer view after the frame and adds it to the EXR file (the renderer then holds the last view's frame: nothing
+// reads it after).
 std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options,
                             const std::string& path)
 {
@@ -103,7 +107,15 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
     if (hasExtension(path, ".png")) {
         if (view == ViewMode::Final || view == ViewMode::Volumes)
             return encodePng(renderer.readDisplayed());
-        return encodePng(displayableView(renderer.readColour(), view, renderer.readCoverage()));
+        const Image raw = renderer.readColour();
+        Image shown = displayableView(raw, view, renderer.readCoverage());
+        if (view == ViewMode::LightCount && options.legend) {
+            float maximum = 0.0f;
+            for (std::size_t i = 0; i < raw.rgb.size(); i += 3)
+                maximum = std::max(maximum, raw.rgb[i]);
+            drawHeatMapLegend(shown, maximum);
+        }
+        return encodePng(shown);
     }
     Image linear = boxDownsample(renderer.readColour(), options.supersample);
     if (hasExtension(path, ".pfm"))
@@ -119,19 +131,38 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
     return encodeExr(layers, options.exrFloat ? ExrPixels::Float : ExrPixels::Half);
 }
 
-// Every frame of the time range, each written atomically under its own name as soon as it is
-// rendered: an interrupted recording leaves whole frames only.
-void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions& options)
+// The frames of the time range this run renders: its shard's, less those whose files exist
+// when --skip-existing (outputs are written atomically, so an existing file is whole).
+std::vector<int> framesToRecord(const RenderOptions& options)
 {
-    const TimeRange& range = *options.timeRange;
-    const int count = recordingFrameCount(range, options.fps);
-    printRecordingProgress(0, count);
+    const int count = recordingFrameCount(*options.timeRange, options.fps);
+    std::vector<int> frames;
     for (int frame = 0; frame < count; ++frame) {
-        renderer.setTime(recordingFrameTime(range, options.fps, frame));
+        if (!options.shard.has(static_cast<std::size_t>(frame)))
+            continue;
+        std::error_code error;
+        if (options.skipExisting && std::filesystem::exists(formatFramePath(options.output, frame), error))
+            continue;
+        frames.push_back(frame);
+    }
+    return frames;
+}
+
+// The given frames of the time range, each written atomically under its own name as soon as
+// it is rendered: an interrupted recording leaves whole frames only. A frame is a pure
+// function of its time, so any subset gives the same files as the whole recording.
+void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions& options,
+                  const std::vector<int>& frames)
+{
+    const int count = static_cast<int>(frames.size());
+    printRecordingProgress(0, count);
+    for (int done = 0; done < count; ++done) {
+        const int frame = frames[static_cast<std::size_t>(done)];
+        renderer.setTime(recordingFrameTime(*options.timeRange, options.fps, frame));
         renderer.renderFrame(technique, options.view);
         const std::string path = formatFramePath(options.output, frame);
         writeFileAtomically(path, "image", encodeLastFrame(renderer, technique, options, path));
-        printRecordingProgress(frame + 1, count);
+        printRecordingProgress(done + 1, count);
     }
 }
 
@@ -141,10 +172,17 @@ void runRender(const RenderOptions& options)
 {
     // Fail in a second, before loading and rendering, when an output cannot be written; a
     // recording's folder is made as other tools make theirs.
+    std::vector<int> recorded;
     if (options.timeRange) {
         const std::filesystem::path first = formatFramePath(options.output, 0);
         createOutputFolder(first);
         checkWritable(first, "image");
+        recorded = framesToRecord(options);
+        if (recorded.empty()) {
+            std::fprintf(stderr, "manylights: every frame of this recording%s exists already (--skip-existing)\n",
+                         options.shard.isWhole() ? "" : "'s shard");
+            return;
+        }
     } else {
         checkWritable(options.output, "image");
         if (!options.statsPath.empty())
@@ -176,7 +214,7 @@ void runRender(const RenderOptions& options)
     Technique& technique = renderer.technique(options.technique);
 
     if (options.timeRange) {
-        recordFrames(renderer, technique, options);
+        recordFrames(renderer, technique, options, recorded);
         return;
     }
 

@@ -7,6 +7,7 @@
 
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/Recording.h"
+#include "apps/cli/Shard.h"
 #include "render/GBuffer.h"
 #include "render/TextureCache.h"
 #include "render/Views.h"
@@ -31,6 +32,8 @@ struct RenderOptions {
     // frame of the range at `fps` is written.
     std::optional<TimeRange> timeRange;
     double fps = 30.0;
+    Shard shard;                  // --shard I/N: only the frames k with k mod N = I − 1
+    bool skipExisting = false;    // --skip-existing: only the frames whose files are missing
     int shadowLights = 0;         // local lights with shadow maps (--shadow-lights)
     bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
     bool strict = false;          // model files' forgiven problems are errors (--strict)
@@ -40,6 +43,7 @@ struct RenderOptions {
     bool exrFloat = false;        // --exr-float: 32-bit float EXR channels instead of half
     bool aovs = false;            // --aovs: the G-buffer quantities as further EXR layers
     DriverOptions driver;         // --driver-profile, --device
+    bool legend = true;           // the light-count view's colour bar in PNG outputs (--no-legend)
 };
 
 // Renders and writes the image (and the statistics); throws manylights::Error on failure.

@@ -1,5 +1,6 @@
 // The `view` subcommand's command line; main.cpp hands `manylights view ...` here so that the
 // CLI library (and the tests linking it) need no GLFW or ImGui.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <new>
@@ -34,6 +35,14 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_option("--lights", options.lights, "Replace the total count of the scene's light sets")
         ->check(CLI::Range(0, 16777216));
     app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
+    app.add_option_function<std::string>(
+           "--keymap",
+           [&options](const std::string& name) {
+               const auto& names = keymapNames();
+               options.keymap = static_cast<Keymap>(std::find(names.begin(), names.end(), name) - names.begin());
+           },
+           "Which keys do what: default, deferred-course or stencil-volumes (docs/viewer.md)")
+        ->check(CLI::IsMember(keymapNames()));
     app.add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(app, options.camera);
     addDisplayOptions(app, options.display);

@@ -30,9 +30,9 @@ std::string join(const std::vector<std::string>& names)
 
 const std::vector<std::string>& scriptKeyNames()
 {
-    static const std::vector<std::string> names{"left", "right", "up",  "down", "plus",   "minus", "w",
-                                                "a",    "s",     "d",   "x",    "l",      "m",     "t",
-                                                "v",    "p",     "f12", "c",    "escape", "q"};
+    static const std::vector<std::string> names{"left", "right", "up", "down", "plus", "minus", "w",      "a",
+                                                "s",    "d",     "x",  "l",    "m",    "t",     "v",      "p",
+                                                "f12",  "c",     "r",  "u",    "o",    "i",     "escape", "q"};
     return names;
 }
 

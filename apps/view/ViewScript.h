@@ -44,7 +44,7 @@ struct ScriptCommand {
 std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::string& displayName);
 
 // The keys a script may press, by name (docs/viewer.md): left right up down plus minus w a s d
-// x l m t v p f12 escape q.
+// x l m t v p f12 c r u o i escape q.
 const std::vector<std::string>& scriptKeyNames();
 
 }  // namespace manylights

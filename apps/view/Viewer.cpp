@@ -76,6 +76,7 @@ constexpr KeyBinding kKeys[] = {
     {"s", GLFW_KEY_S},        {"d", GLFW_KEY_D},         {"x", GLFW_KEY_X},           {"l", GLFW_KEY_L},
     {"m", GLFW_KEY_M},        {"t", GLFW_KEY_T},         {"v", GLFW_KEY_V},           {"p", GLFW_KEY_P},
     {"f12", GLFW_KEY_F12},    {"c", GLFW_KEY_C},         {"escape", GLFW_KEY_ESCAPE}, {"q", GLFW_KEY_Q},
+    {"r", GLFW_KEY_R},        {"u", GLFW_KEY_U},         {"o", GLFW_KEY_O},           {"i", GLFW_KEY_I},
 };
 
 int keyByName(const std::string& name)
@@ -86,6 +87,16 @@ int keyByName(const std::string& name)
     ML_ASSERT(false);  // the script parser accepts only these names
     return GLFW_KEY_UNKNOWN;
 }
+
+}  // namespace
+
+const std::vector<std::string>& keymapNames()
+{
+    static const std::vector<std::string> names{"default", "deferred-course", "stencil-volumes"};
+    return names;
+}
+
+namespace {
 
 class Viewer {
 public:
@@ -105,6 +116,9 @@ private:
     // The renderer's settings as the viewer's state has them (the one route they take).
     RendererDesc rendererDesc() const;
     void onKeyPressed(int key);
+    // The seeds' keymaps (docs/viewer.md): true when `key` is one of theirs.
+    bool onDeferredCourseKey(int key);
+    bool onStencilVolumesKey(int key);
     // Prints the command-line options of the camera on screen (stdout), so that a view found
     // here can be rendered with `manylights render ... --eye ... --look-at ...`.
     void printCamera() const;
@@ -146,6 +160,7 @@ private:
     bool axes_ = false;
     bool wireframe_ = false;
     bool panel_ = true;
+    bool rotating_ = false;           // stencil-volumes 'r': the camera orbits the look-at point
     bool directionalShadows_ = true;  // where the scene's directional light asks for them
     int shadowLights_ = 0;            // local lights with shadow maps (--shadow-lights)
     bool quit_ = false;
@@ -319,8 +334,62 @@ void Viewer::printCamera() const
     std::fflush(stdout);
 }
 
+// The deferred-rendering course project's keys: 'a' axes, 'd' deferred, 't' textured
+// forward, 'w' wireframe, '+'/'-' toward and away from the look-at point and the arrows
+// rotating the view (both held keys, applyHeldKeys), 'q' quit.
+bool Viewer::onDeferredCourseKey(int key)
+{
+    switch (key) {
+    case GLFW_KEY_A: axes_ = !axes_; return true;
+    case GLFW_KEY_D:
+        techniqueName_ = "deferred";
+        wireframe_ = false;
+        return true;
+    case GLFW_KEY_T:
+        techniqueName_ = "forward";
+        wireframe_ = false;
+        return true;
+    case GLFW_KEY_W: wireframe_ = !wireframe_; return true;
+    case GLFW_KEY_Q: quit_ = true; return true;
+    default: return false;
+    }
+}
+
+// The stencil light-volume write-up's keys: 'w'/'s' forward and back, 'a'/'d' up and down, the
+// arrows look around (held keys, applyHeldKeys), 'r' turns the camera about the look-at point
+// until pressed again, 'v' the light volumes, 'u' the volumes in their colours without
+// lighting, 'p'/'o'/'i' ambient, diffuse, specular, 'q' quit. ('c', lighting the volumes'
+// corners only, has no counterpart here: docs/viewer.md says so.)
+bool Viewer::onStencilVolumesKey(int key)
+{
+    switch (key) {
+    case GLFW_KEY_R: rotating_ = !rotating_; return true;
+    case GLFW_KEY_V: view_ = view_ == ViewMode::Volumes ? ViewMode::Final : ViewMode::Volumes; return true;
+    case GLFW_KEY_U: {
+        const bool unlit = view_ == ViewMode::Volumes && !ambient_ && !diffuse_ && !specular_;
+        view_ = unlit ? ViewMode::Final : ViewMode::Volumes;
+        ambient_ = diffuse_ = specular_ = unlit;
+        return true;
+    }
+    case GLFW_KEY_P: ambient_ = !ambient_; return true;
+    case GLFW_KEY_O: diffuse_ = !diffuse_; return true;
+    case GLFW_KEY_I: specular_ = !specular_; return true;
+    case GLFW_KEY_Q: quit_ = true; return true;
+    case GLFW_KEY_W:
+    case GLFW_KEY_S:
+    case GLFW_KEY_A:
+    case GLFW_KEY_D: return true;  // held keys
+    case GLFW_KEY_C: lastMessage_ = "c: lighting the volumes' corners only is not drawn by manylights"; return true;
+    default: return false;
+    }
+}
+
 void Viewer::onKeyPressed(int key)
 {
+    if (options_.keymap == Keymap::DeferredCourse && onDeferredCourseKey(key))
+        return;
+    if (options_.keymap == Keymap::StencilVolumes && onStencilVolumesKey(key))
+        return;
     const std::vector<std::string>& names = techniqueNames();
     switch (key) {
     case GLFW_KEY_ESCAPE:
@@ -379,6 +448,23 @@ void Viewer::applyHeldKeys(const std::vector<int>& keys, double seconds)
     const float orbit = kOrbitDegreesPerSecond * dt;
     const float fly = kFlyFractionPerSecond * dt * glm::distance(camera.eye, camera.lookAt);
     for (int key : keys) {
+        if (options_.keymap == Keymap::DeferredCourse &&
+            (key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D))
+            continue;  // toggles there (onDeferredCourseKey), not moves
+        if (options_.keymap == Keymap::StencilVolumes) {
+            switch (key) {
+            case GLFW_KEY_W: flyCamera(camera, {0.0f, 0.0f, fly}); break;
+            case GLFW_KEY_S: flyCamera(camera, {0.0f, 0.0f, -fly}); break;
+            case GLFW_KEY_A: flyCamera(camera, {0.0f, fly, 0.0f}); break;
+            case GLFW_KEY_D: flyCamera(camera, {0.0f, -fly, 0.0f}); break;
+            case GLFW_KEY_LEFT: lookCamera(camera, -orbit, 0.0f); break;
+            case GLFW_KEY_RIGHT: lookCamera(camera, orbit, 0.0f); break;
+            case GLFW_KEY_UP: lookCamera(camera, 0.0f, orbit); break;
+            case GLFW_KEY_DOWN: lookCamera(camera, 0.0f, -orbit); break;
+            default: break;
+            }
+            continue;
+        }
         switch (key) {
         case GLFW_KEY_LEFT: orbitCamera(camera, -orbit, 0.0f); break;
         case GLFW_KEY_RIGHT: orbitCamera(camera, orbit, 0.0f); break;
@@ -598,6 +684,9 @@ void Viewer::drawPanel()
     ImGui::SetNextWindowPos({10, 10}, ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize({330, 0}, ImGuiCond_FirstUseEver);
     ImGui::Begin("manylights (F1 hides)");
+    // Sliders and combos leave room on their right for the longest of their labels, so that
+    // none is cut at the panel's edge.
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("shadowed lights").x + ImGui::GetStyle().ItemInnerSpacing.x));
     ImGui::Text("%s", scene_.source.c_str());
     ImGui::Text("%dx%d, %zu lights, %zu objects", renderer_->width(), renderer_->height(), lights_.size(),
                 scene_.objects.size());
@@ -691,6 +780,7 @@ void Viewer::drawPanel()
         ImGui::TextColored({1.0f, 0.4f, 0.4f, 1.0f}, "%s", shaderError_.c_str());
     if (!lastMessage_.empty())
         ImGui::TextUnformatted(lastMessage_.c_str());
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
@@ -708,6 +798,10 @@ void Viewer::run()
             break;
         applyHeldKeys(heldKeys(), elapsed);
         applyHeldKeys(scriptKeys_, kScriptKeySeconds);
+        if (rotating_)  // by the script's frame time under a script, so that tests are repeatable
+            orbitCamera(camera_,
+                        kOrbitDegreesPerSecond * static_cast<float>(script_.empty() ? elapsed : kScriptKeySeconds),
+                        0.0f);
         checkShaders();
         resizeIfNeeded();
         if (!paused_)

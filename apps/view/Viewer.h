@@ -5,10 +5,17 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/cli/CommandSupport.h"
 
 namespace manylights {
+
+// Which keys do what (docs/viewer.md has a table for each): the viewer's own, or those of
+// one of the seeds the viewer grew from (the deferred-rendering course project, the stencil
+// light-volume write-up), so that their users' hands need not relearn.
+enum class Keymap { Default, DeferredCourse, StencilVolumes };
+const std::vector<std::string>& keymapNames();  // "default", "deferred-course", "stencil-volumes"
 
 struct ViewOptions {
     std::string scenePath;  // empty: the built-in default scene
@@ -17,11 +24,12 @@ struct ViewOptions {
     std::string technique = "clustered";
     std::string view = "final";
     std::optional<int> lights;
-    double time = 0.0;       // the animation's start time
-    std::string scriptPath;  // commands to run (apps/view/ViewScript.h); empty: interactive
-    bool strict = false;     // --strict: model files' forgiven problems are errors
-    CameraOptions camera;    // --camera, --eye, --look-at, --up, --fov-y: the starting view
-    DisplayOptions display;  // --exposure, --tonemap, --srgb, --aa: the starting display settings
+    double time = 0.0;                // the animation's start time
+    std::string scriptPath;           // commands to run (apps/view/ViewScript.h); empty: interactive
+    Keymap keymap = Keymap::Default;  // --keymap
+    bool strict = false;              // --strict: model files' forgiven problems are errors
+    CameraOptions camera;             // --camera, --eye, --look-at, --up, --fov-y: the starting view
+    DisplayOptions display;           // --exposure, --tonemap, --srgb, --aa: the starting display settings
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
     // --driver-profile, and --device: the window's context is the display server's, so the

@@ -144,6 +144,39 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+// A job array's tasks (docs/cli.md, "On a cluster"): three shards of a four-case sweep, each
+// its own process, time each case once; only shard 1's CSV has the header, so the CSVs
+// concatenate into one valid CSV with the whole sweep's rows.
+TEST(Bench, ShardsSplitTheCasesAndTheirCsvsConcatenate)
+{
+    const auto dir = scratchDirectory();
+    std::string concatenated;
+    std::vector<std::size_t> rowsPerShard;
+    for (int shard = 1; shard <= 3; ++shard) {
+        const auto csv = dir / ("shard" + std::to_string(shard) + ".csv");
+        const test::ProcessResult result = runExecutable(
+            {"bench", "--techniques", "forward,deferred", "--lights", "16,64", "--size", "32x18", "--frames", "1",
+             "--warmup", "0", "--shard", std::to_string(shard) + "/3", "--csv", csv.string()});
+        ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+        const std::string text = readText(csv);
+        rowsPerShard.push_back(lines(text).size());
+        concatenated += text;
+    }
+    // Cases in sweep order: forward 16, deferred 16, forward 64, deferred 64; shard I takes
+    // those with number mod 3 = I - 1 (shard 1 also writes the header).
+    EXPECT_EQ(rowsPerShard, (std::vector<std::size_t>{3, 1, 1}));
+    const std::vector<std::string> rows = lines(concatenated);
+    ASSERT_EQ(rows.size(), 5u) << concatenated;
+    EXPECT_TRUE(rows[0].starts_with("technique,lights,")) << rows[0];
+    std::vector<std::string> cases;
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+        const std::vector<std::string> row = split(rows[r], ',');
+        ASSERT_EQ(row.size(), split(rows[0], ',').size()) << rows[r];
+        cases.push_back(row[0] + " " + row[1]);
+    }
+    EXPECT_EQ(cases, (std::vector<std::string>{"forward 16", "deferred 64", "deferred 16", "forward 64"}));
+}
+
 struct UsageCase {
     std::string name;
     std::vector<std::string> args;
@@ -189,7 +222,12 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"malformed_size", {"--size", "64x36,big"}, "--size"},
                       UsageCase{"zero_frames", {"--frames", "0"}, "--frames"},
                       UsageCase{"negative_warmup", {"--warmup", "-1"}, "--warmup"},
-                      UsageCase{"plot_not_svg", {"--plot", "plot.png"}, "--plot"}),
+                      UsageCase{"plot_not_svg", {"--plot", "plot.png"}, "--plot"},
+                      UsageCase{"shard_zero", {"--shard", "0/3"}, "--shard"},
+                      UsageCase{"shard_past_the_count", {"--shard", "4/3"}, "--shard"},
+                      UsageCase{"shard_of_none", {"--shard", "1/0"}, "--shard"},
+                      UsageCase{"shard_not_a_fraction", {"--shard", "2"}, "--shard"},
+                      UsageCase{"shard_with_plot", {"--shard", "1/2"}, "--shard does not combine"}),
     [](const ::testing::TestParamInfo<UsageCase>& param) { return param.param.name; });
 
 // Like render: a scene problem is one line on stderr, exit 1, and no file written.

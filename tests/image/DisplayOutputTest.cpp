@@ -4,11 +4,12 @@
 // and FXAA change only 8-bit outputs, after lighting, so every technique still matches
 // forward there; --supersample box-filters in linear light; EXR files hold the PFM's values
 // (bit-exact as float, within half precision as half) and, with --aovs, every G-buffer view
-// as a layer equal to that view's PFM.
+// as a layer equal to that view's PFM. The light-count PNG's legend changes its own area only.
 #include <gtest/gtest.h>
 
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -20,7 +21,9 @@
 #include "TestSupport.h"
 #include "core/Error.h"
 #include "render/ExrFile.h"
+#include "render/HeatMapLegend.h"
 #include "render/Image.h"
+#include "render/Views.h"
 
 namespace manylights {
 namespace {
@@ -300,6 +303,54 @@ TEST(DisplayOutput, ExrReadingErrorsNameTheFile)
     test::writeFile(dir / "not.exr", "P6\n1 1\n255\n\0\0\0");
     EXPECT_THROW(readExrLayer(dir / "not.exr", "", {"R"}), Error);
     EXPECT_THROW(exrChannelNames(dir / "not.exr"), Error);
+}
+
+// The light-count view's PNG carries a labelled colour bar (render/HeatMapLegend.h) in its
+// legend area only; --no-legend gives the plain heat map of the counts, pixel for pixel.
+TEST(DisplayOutput, LightCountLegendChangesOnlyItsAreaAndNoLegendIsThePlainHeatMap)
+{
+    const auto dir = scratchDirectory();
+    const int width = 320;
+    const int height = 180;
+    const std::vector<std::string> args{"--size", "320x180", "--view", "light-count", "--technique", "deferred"};
+    runCliOrFail(with({"render", "-o", (dir / "legend.png").string()}, args));
+    runCliOrFail(with({"render", "-o", (dir / "plain.png").string(), "--no-legend"}, args));
+    const Image counts = renderPfm("", dir / "counts.pfm", args);
+    const std::vector<unsigned char> legend = readPng(dir / "legend.png");
+    const std::vector<unsigned char> plain = readPng(dir / "plain.png");
+    ASSERT_EQ(legend.size(), std::size_t(width * height * 3));
+    ASSERT_EQ(plain.size(), legend.size());
+
+    const LegendArea area = heatMapLegendArea(width, height);
+    ASSERT_FALSE(area.isEmpty());
+    int changedInside = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+            float rgb[3];
+            heatMapColour(counts.pixel(x, y)[0], rgb);
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(plain[i + c], toByte(rgb[c])) << x << ", " << y;
+            const bool inside = x >= area.x && x < area.x + area.width && y >= area.y && y < area.y + area.height;
+            const bool same = std::equal(&legend[i], &legend[i] + 3, &plain[i]);
+            if (!inside)
+                ASSERT_TRUE(same) << "outside the legend: " << x << ", " << y;
+            else
+                changedInside += same ? 0 : 1;
+        }
+    }
+    // The panel, the bar and the labels cover most of the area.
+    EXPECT_GT(changedInside, area.width * area.height / 2);
+}
+
+// Too small an image keeps the plain heat map: the legend would hide most of it.
+TEST(DisplayOutput, LightCountLegendNeedsRoom)
+{
+    EXPECT_TRUE(heatMapLegendArea(96, 54).isEmpty());
+    EXPECT_FALSE(heatMapLegendArea(320, 180).isEmpty());
+    const LegendArea hd = heatMapLegendArea(1920, 1080);
+    EXPECT_EQ(hd.width, 3 * heatMapLegendArea(320, 180).width);  // three times the scale at 1080 rows
+    EXPECT_EQ(hd.y + hd.height + hd.x, 1080);                    // the bottom-left corner, one margin in
 }
 
 }  // namespace

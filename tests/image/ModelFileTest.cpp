@@ -151,6 +151,42 @@ TEST(ModelFiles, MissingTextureIsAWarningAndStrictMakesItAnError)
     EXPECT_NE(bench.stderrText.find("map_Kd 'missing.png' not found"), std::string::npos) << bench.stderrText;
 }
 
+// A glTF file breaking the schema where tinygltf does not look (assimp's wrongTypes/badUint:
+// a texture index of -1) renders with one warning naming the file, the JSON pointer and the
+// field; --strict makes it the error of render and bench (exit 1, nothing written).
+TEST(ModelFiles, GltfSchemaBreakIsAWarningAndStrictMakesItAnError)
+{
+    const fs::path model = kAssimpGltf / "wrongTypes/badUint.gltf";
+    if (!fs::exists(model))
+        GTEST_SKIP() << "assimp-testmodels is not installed (scripts/setup.sh installs it)";
+    const auto dir = scratchDirectory();
+    writeFile(dir / "scene.json", R"({"camera": {"eye": [2, 2, 3], "look_at": [0, 0, 0]},
+        "ambient": [1, 1, 1], "objects": [{"mesh": ")" +
+                                      model.string() + R"("}]})");
+    const std::string expected = model.string() +
+                                 ": /materials/0/pbrMetallicRoughness/baseColorTexture/index: index must be an "
+                                 "integer ≥ 0, got -1; read as none";
+    const test::ProcessResult forgiven =
+        runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string(), "--size", "16x16"});
+    EXPECT_EQ(forgiven.exitCode, 0) << forgiven.stderrText;
+    EXPECT_EQ(std::count(forgiven.stderrText.begin(), forgiven.stderrText.end(), '\n'), 1) << forgiven.stderrText;
+    EXPECT_TRUE(forgiven.stderrText.starts_with("manylights: warning: ")) << forgiven.stderrText;
+    EXPECT_NE(forgiven.stderrText.find(expected), std::string::npos) << forgiven.stderrText;
+    EXPECT_TRUE(fs::exists(dir / "out.png"));
+    const std::vector<std::vector<std::string>> strictRuns = {
+        {"render", (dir / "scene.json").string(), "-o", (dir / "strict.png").string(), "--size", "16x16", "--strict"},
+        {"bench", (dir / "scene.json").string(), "--csv", (dir / "strict.csv").string(), "--size", "16x16",
+         "--strict"}};
+    for (const std::vector<std::string>& args : strictRuns) {
+        const test::ProcessResult strict = runExecutable(args);
+        EXPECT_EQ(strict.exitCode, 1) << args[0] << ": " << strict.stderrText;
+        EXPECT_NE(strict.stderrText.find(expected), std::string::npos) << args[0] << ": " << strict.stderrText;
+        EXPECT_EQ(strict.stderrText.find("warning"), std::string::npos) << args[0] << ": " << strict.stderrText;
+    }
+    EXPECT_FALSE(fs::exists(dir / "strict.png"));
+    EXPECT_FALSE(fs::exists(dir / "strict.csv"));
+}
+
 // Debian's assimp-testmodels OBJ folder, files that assimp and most viewers open: every one
 // with faces renders (with warnings saying what was forgiven), the stats count the warnings,
 // and --strict turns the first into the error. The files without a triangle to draw stay

@@ -1,13 +1,16 @@
 // Recording (render --time-range START:END --fps N -o pattern): the frame times, the output
-// names, every frame equal to a single render at its time, and bad command lines (exit 2,
-// nothing written).
+// names, every frame equal to a single render at its time, shards and --skip-existing giving
+// the whole recording's files, and bad command lines (exit 2, nothing written).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "TestSupport.h"
 #include "apps/cli/Recording.h"
+#include "apps/cli/Shard.h"
 
 namespace manylights {
 namespace {
@@ -78,6 +81,65 @@ TEST(Recording, EveryFrameIsTheRenderAtItsTime)
     EXPECT_NE(readPfm(dir / "frame_00.pfm").rgb, readPfm(dir / "frame_01.pfm").rgb);
 }
 
+TEST(Recording, Shards)
+{
+    Shard shard;
+    EXPECT_EQ(parseShard("2/3", shard), "");
+    EXPECT_EQ(shard.index, 2);
+    EXPECT_EQ(shard.count, 3);
+    EXPECT_FALSE(shard.has(0));
+    EXPECT_TRUE(shard.has(1));
+    EXPECT_TRUE(shard.has(4));
+    EXPECT_EQ(parseShard("1/1", shard), "");
+    EXPECT_TRUE(shard.isWhole());
+    for (const char* bad : {"0/3", "4/3", "1/0", "-1/3", "1/-3", "3", "/3", "1/", "a/3", "1/3/5", "1.5/3", " 1/3"})
+        EXPECT_NE(parseShard(bad, shard), "") << bad;
+}
+
+std::string fileBytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A recording split over a job array (docs/cli.md, "On a cluster"): three shards, each its
+// own process, write byte for byte the files of the whole recording; --skip-existing then
+// renders only the missing frames and leaves the others untouched.
+TEST(Recording, ShardsAndSkipExistingGiveTheWholeRecording)
+{
+    const auto dir = scratchDirectory();
+    const std::vector<std::string> common{"render", "--size", "48x27", "--technique", "deferred", "--time-range",
+                                          "0:1.25", "--fps",  "4"};
+    const auto run = [&](const std::filesystem::path& pattern, const std::vector<std::string>& extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"-o", pattern.string()});
+        args.insert(args.end(), extra.begin(), extra.end());
+        const test::ProcessResult result = runExecutable(args);
+        ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    };
+    run(dir / "whole" / "f%02d.png", {});
+    for (int shard = 1; shard <= 3; ++shard)
+        run(dir / "sharded" / "f%02d.png", {"--shard", std::to_string(shard) + "/3"});
+    const auto frame = [&](const char* folder, int k) { return dir / folder / ("f0" + std::to_string(k) + ".png"); };
+    for (int k = 0; k < 5; ++k) {
+        ASSERT_TRUE(std::filesystem::exists(frame("sharded", k))) << k;
+        EXPECT_EQ(fileBytes(frame("sharded", k)), fileBytes(frame("whole", k))) << "frame " << k;
+    }
+    EXPECT_FALSE(std::filesystem::exists(frame("sharded", 5)));
+
+    // A pre-empted task: frames 1 and 3 missing, frame 0 marked to show it is not redone.
+    std::filesystem::remove(frame("sharded", 1));
+    std::filesystem::remove(frame("sharded", 3));
+    test::writeFile(frame("sharded", 0), "kept");
+    run(dir / "sharded" / "f%02d.png", {"--skip-existing"});
+    EXPECT_EQ(fileBytes(frame("sharded", 0)), "kept");
+    for (int k : {1, 3})
+        EXPECT_EQ(fileBytes(frame("sharded", k)), fileBytes(frame("whole", k))) << "frame " << k;
+    // Nothing left to do: a success that writes nothing.
+    run(dir / "sharded" / "f%02d.png", {"--skip-existing", "--shard", "1/1"});
+    EXPECT_EQ(fileBytes(frame("sharded", 0)), "kept");
+}
+
 TEST(Recording, BadCommandLinesWriteNothing)
 {
     const auto dir = scratchDirectory();
@@ -92,6 +154,12 @@ TEST(Recording, BadCommandLinesWriteNothing)
         {"--time-range", "0:1", "--time", "0.5", "-o", pattern},
         {"--time-range", "0:1", "--stats", (dir / "s.json").string(), "-o", pattern},
         {"--fps", "10", "-o", (dir / "f.png").string()},
+        {"--time-range", "0:1", "--shard", "0/3", "-o", pattern},
+        {"--time-range", "0:1", "--shard", "4/3", "-o", pattern},
+        {"--time-range", "0:1", "--shard", "1/0", "-o", pattern},
+        {"--time-range", "0:1", "--shard", "two/3", "-o", pattern},
+        {"--shard", "1/2", "-o", (dir / "f.png").string()},
+        {"--skip-existing", "-o", (dir / "f.png").string()},
     };
     for (const auto& extra : bad) {
         std::vector<std::string> args{"render", "--size", "32x18"};

@@ -357,6 +357,45 @@ TEST(GltfModel, SceneObjectBecomesOneObjectPerNodeAndAddsTheLights)
     EXPECT_NEAR(scene.materials[*mesh.subMeshes[0].material].shininess, 30.0f, 1e-3f);
 }
 
+// Schema breaks tinygltf reads past (issue 33): each is a warning naming the file, the JSON
+// pointer and the field, the file is still drawn (as tinygltf reads it), and under --strict
+// the first is an error.
+TEST(GltfModel, SchemaBreaksTinygltfPassesOverAreSaid)
+{
+    GltfBuilder b = exampleGltf();
+    b.gltf["materials"][0]["pbrMetallicRoughness"] = Json::array({"not an object"});
+    b.gltf["materials"][0]["normalTexture"] = {{"index", -1}};
+    b.gltf["nodes"][1]["name"] = 42;
+    b.gltf["extensions"]["KHR_lights_punctual"]["lights"][0]["range"] = 0;
+    Warnings warnings;
+    const Model model = b.load({.warnings = &warnings});
+    EXPECT_EQ(model.lights.size(), 2u);
+    const std::vector<std::string> expected = {
+        "test.gltf: /materials/0/pbrMetallicRoughness: pbrMetallicRoughness must be an object, got an array; the "
+        "field is not read",
+        "test.gltf: /materials/0/normalTexture/index: index must be an integer ≥ 0, got -1; read as none",
+        "test.gltf: /nodes/1/name: name must be a string, got 42; the field is not read",
+        "test.gltf: /extensions/KHR_lights_punctual/lights/0/range: range must be > 0, got 0; the light is drawn as "
+        "one without a range (inverse-square, cut at the scene's attenuation_threshold)",
+    };
+    EXPECT_EQ(warnings.messages(), expected);
+    Warnings strict(true);
+    EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), expected[0]);
+}
+
+// Many elements with the same break give one warning, as other forgiven problems do.
+TEST(GltfModel, OneSchemaWarningPerKindOfBreak)
+{
+    GltfBuilder b = exampleGltf();
+    for (Json& node : b.gltf["nodes"])
+        node["name"] = 7;
+    Warnings warnings;
+    b.load({.warnings = &warnings});
+    ASSERT_EQ(warnings.messages().size(), 1u);
+    EXPECT_EQ(warnings.messages()[0],
+              "test.gltf: /nodes/0/name: name must be a string, got 7; the field is not read (and 3 more)");
+}
+
 // --- broken hand-made files --------------------------------------------------------------
 
 struct BrokenGltf {
@@ -572,9 +611,8 @@ TEST(GltfAssimpModels, BrokenModelsAreOneErrorLineNamingTheFile)
     const BrokenAsset broken[] = {
         {"IndexOutOfRange/IndexOutOfRange.gltf", "out of range"},
         {"IndexOutOfRange/AllIndicesOutOfRange.gltf", "out of range"},
-        {"MissingBin/BoxTextured.gltf", "BoxTextured0.bin"},
+
         {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "non-finite"},
-        {"SchemaFailures/sceneWrongType.gltf", ""},
         {"IncorrectVertexArrays/Cube.gltf", "not whole triangles"},
         {"RecursiveNodes/RecursiveNodes.gltf", "cycle"},
         {"TestNoRootNode/NoScene.gltf", "no triangle mesh"},
@@ -587,6 +625,54 @@ TEST(GltfAssimpModels, BrokenModelsAreOneErrorLineNamingTheFile)
         EXPECT_TRUE(message.starts_with(path.string() + ": ")) << message;
         EXPECT_NE(message.find(asset.phrase), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+// assimp's glTF2/wrongTypes set: each file breaks the schema in one field. All but badArray
+// (its mesh's primitives an object, so no triangle is left) and badNumber (a normalTexture
+// without the index tinygltf requires, which it reports) are drawn, with a warning naming the
+// field.
+TEST(GltfAssimpModels, WrongTypesAreWarningsNamingTheField)
+{
+    SKIP_WITHOUT_ASSIMP_MODELS();
+    const BrokenAsset wrong[] = {
+        {"badObject.gltf", ": /materials/0/pbrMetallicRoughness: pbrMetallicRoughness must be an object, got an array"},
+        {"badString.gltf", ": /scenes/0/name: name must be a string, got 42"},
+        {"badUint.gltf", ": /materials/0/pbrMetallicRoughness/baseColorTexture/index: index must be an integer ≥ 0, "
+                         "got -1; read as none"},
+        {"badExtension.gltf", "KHR_texture_transform must be an object, got 'Not an object'"},
+    };
+    for (const BrokenAsset& asset : wrong) {
+        SCOPED_TRACE(asset.file);
+        const fs::path path = kAssimpGltf / "wrongTypes" / asset.file;
+        Warnings warnings;
+        const Model model = loadGltfFile(path, {.warnings = &warnings});
+        EXPECT_FALSE(model.instances.empty());
+        ASSERT_FALSE(warnings.messages().empty());
+        EXPECT_TRUE(warnings.messages()[0].starts_with(path.string() + ": /")) << warnings.messages()[0];
+        EXPECT_NE(warnings.messages()[0].find(asset.phrase), std::string::npos) << warnings.messages()[0];
+        Warnings strict(true);
+        EXPECT_EQ(errorOf([&] { loadGltfFile(path, {.warnings = &strict}); }), warnings.messages()[0]);
+    }
+    const fs::path badArray = kAssimpGltf / "wrongTypes/badArray.gltf";
+    Warnings warnings;
+    EXPECT_NE(errorOf([&] { loadGltfFile(badArray, {.warnings = &warnings}); }).find("no triangle mesh"),
+              std::string::npos);
+    const fs::path badNumber = kAssimpGltf / "wrongTypes/badNumber.gltf";
+    EXPECT_EQ(errorOf([&] { loadGltfFile(badNumber); }),
+              badNumber.string() + ": 'index' property is missing in NormalTextureInfo.");
+}
+
+// A missing external buffer is named by its full path, beside the model, not by its uri alone.
+TEST(GltfAssimpModels, MissingBufferNamesItsFullPath)
+{
+    SKIP_WITHOUT_ASSIMP_MODELS();
+    for (const char* folder : {"MissingBin", "SchemaFailures"}) {
+        const fs::path model =
+            kAssimpGltf / folder / (folder == std::string("MissingBin") ? "BoxTextured.gltf" : "sceneWrongType.gltf");
+        EXPECT_EQ(errorOf([&] { loadGltfFile(model); }), (kAssimpGltf / folder / "BoxTextured0.bin").string() +
+                                                             ": cannot open a buffer of " + model.string() +
+                                                             ": No such file or directory");
     }
 }
 

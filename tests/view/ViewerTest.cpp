@@ -402,8 +402,43 @@ TEST(Viewer, NoDisplayIsOneLineExitOne)
     EXPECT_NE(text.find("cannot open a window"), std::string::npos) << text;
 }
 
+// The seeds' keymaps (docs/viewer.md): the deferred-rendering course's 'd' deferred, 't'
+// textured forward and 'q' quit; the stencil light-volume write-up's 'v' light volumes,
+// 'p'/'o'/'i' ambient, diffuse and specular, and 'q' quit. Each screenshot equals render's
+// picture of the same settings.
+TEST(Viewer, SeedKeymapsDoWhatTheirTablesSay)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    ASSERT_EQ(runViewer(dir,
+                        "pause\nframes 2\nkey d\nframes 2\nscreenshot deferred.png\nkey t\nframes 2\n"
+                        "screenshot forward.png\nkey q\nframes 100000\n",
+                        "--keymap deferred-course"),
+              0)
+        << readText(dir / "viewer.log");
+    expectEqualWithinOneLevel(readPng(dir / "deferred.png"),
+                              renderAtWindowSize(dir / "deferred-reference.png", "--technique deferred"), "deferred");
+    expectEqualWithinOneLevel(readPng(dir / "forward.png"),
+                              renderAtWindowSize(dir / "forward-reference.png", "--technique forward"), "forward");
+
+    ASSERT_EQ(runViewer(dir,
+                        "pause\nframes 2\nkey v\nframes 2\nscreenshot volumes.png\nkey p\nkey o\nkey i\n"
+                        "frames 2\nscreenshot unlit.png\nkey v\nframes 2\nscreenshot dark.png\nkey q\nframes 100000\n",
+                        "--keymap stencil-volumes"),
+              0)
+        << readText(dir / "viewer.log");
+    const Png volumes = readPng(dir / "volumes.png");
+    expectEqualWithinOneLevel(volumes, renderAtWindowSize(dir / "volumes-reference.png", "--view volumes"), "volumes");
+    // Without ambient, diffuse and specular light the surfaces under the wireframes go dark,
+    // and the final view keeps only the emissive light markers.
+    EXPECT_NE(readPng(dir / "unlit.png").rgb, volumes.rgb);
+    EXPECT_LT(meanValue(readPng(dir / "dark.png")), meanValue(renderAtWindowSize(dir / "final.png", "")) / 4);
+}
+
 TEST(Viewer, BadCommandLineIsExitTwo)
 {
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --keymap emacs 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --technique fastest 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --size 0x10 2>/dev/null"), 2);
 }
