@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "gl/Driver.h"
 #include "render/GpuScene.h"
 #include "render/LightTiles.h"
 
@@ -74,10 +75,12 @@ void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 
 }  // namespace
 
-gl::Defines clusterListDefines(gl::Defines defines)
+gl::Defines clusterListDefines(gl::Defines defines, bool texels)
 {
     defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
     defines.emplace_back("CLUSTER_LIST_PART_LOCATION", std::to_string(kClusterListPartLocation));
+    if (texels)
+        defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
     return defines;
 }
 
@@ -88,8 +91,10 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(false)),
       sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(true)),
-      longLighting_("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
-                    clusterListDefines(clusterGridDefines(lightingDefines, shape))),
+      longLighting_{LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
+                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), false)),
+                    LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
+                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT)
 {
     plan(kMinimumCapacity);
@@ -110,6 +115,11 @@ void ClusterLists::plan(std::uint32_t pairs)
     }
     const std::uint32_t chunks = (capacity_ + kSortChunk - 1) / kSortChunk;
     histogram_ = gl::Buffer("pair sort histogram", bytesOf(chunks << kSortRadixBits), nullptr, 0);
+    // GL promises texture buffers of 65,536 texels only; desktop drivers have 2^27.
+    texels_ = static_cast<std::int64_t>(capacity_) <= gl::queryInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
+    for (int i = 0; i < 2; ++i)
+        lightTexels_[i] =
+            texels_ ? gl::BufferTexture("cluster list texels", GL_R32UI, lights_[i]) : gl::BufferTexture();
 }
 
 void ClusterLists::build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount)
@@ -236,6 +246,8 @@ void ClusterLists::bind() const
     clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
     clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
     lights_[sorted_].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
+    if (texels_)
+        lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
 
@@ -244,7 +256,7 @@ void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid
     if (laterParts_ == 0)
         return;
     const LightSource source = scene.indexedLightSource();
-    const gl::Program& program = longLighting_.variant(scene.lightingFeatures(), source);
+    const gl::Program& program = longLighting_[texels_ ? 1 : 0].variant(scene.lightingFeatures(), source);
     for (std::uint32_t part = 1; part <= laterParts_; ++part)
         passes.run({.name = "lighting",
                     .sampled = Resource::GBuffer,

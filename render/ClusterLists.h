@@ -29,6 +29,7 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 #include "render/ClusterGrid.h"
 #include "render/FramePasses.h"
 #include "render/GpuScan.h"
@@ -45,8 +46,9 @@ inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
 inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
 
-// CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl.
-gl::Defines clusterListDefines(gl::Defines defines);
+// CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl; with `texels`, they read
+// the lists as texels (ClusterLists::readsTexels).
+gl::Defines clusterListDefines(gl::Defines defines, bool texels = false);
 
 // The shape of the clustered technique's grid (docs/techniques.md has the measurements).
 inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 8, .surfaceBounds = true};
@@ -62,6 +64,9 @@ public:
     void build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount);
     // Binds what the lighting programs read: the lists and the long lists' tiles.
     void bind() const;
+    // Whether the lighting reads the lists as R32UI texels (where the driver's texture buffers
+    // hold the planned storage), and so needs programs built with clusterListDefines(.., true).
+    bool readsTexels() const { return texels_; }
     // After the lighting of part 0 of every list: the later parts of the long lists, as many
     // as planned for this frame, each an indirect dispatch of list_lighting.comp over the tiles
     // that have them, adding to the lit image. Passes named "lighting".
@@ -102,7 +107,7 @@ private:
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
-    LightingProgram longLighting_;
+    LightingProgram longLighting_[2];  // without and with the list texels
     GpuScan scan_;
 
     std::uint32_t capacity_ = 0;    // pairs the storage holds
@@ -117,7 +122,9 @@ private:
     gl::Buffer wideLights_;
     gl::Buffer keys_[2];
     gl::Buffer lights_[2];
-    int sorted_ = 0;  // which of lights_ holds the sorted lists
+    int sorted_ = 0;                    // which of lights_ holds the sorted lists
+    gl::BufferTexture lightTexels_[2];  // lights_ as R32UI texels, where texels_
+    bool texels_ = false;
     gl::Buffer clusterCounts_;
     gl::Buffer clusterFirsts_;
     gl::Buffer longListTiles_;

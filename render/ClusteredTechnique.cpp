@@ -5,12 +5,22 @@
 
 namespace manylights {
 
+namespace {
+
+LightingProgram clusteredLighting(const TechniqueOptions& options, bool listTexels)
+{
+    return LightingProgram(
+        "clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
+        clusterListDefines(clusterGridDefines(shaderDefines(options), kClusteredGridShape), listTexels));
+}
+
+}  // namespace
+
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kClusteredGridShape),
       lists_(kClusteredGridShape, shaderDefines(options)),
-      lighting_("clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                clusterListDefines(clusterGridDefines(shaderDefines(options), kClusteredGridShape)))
+      lighting_{clusteredLighting(options, false), clusteredLighting(options, true)}
 {
 }
 
@@ -28,7 +38,7 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();
     const LightBatch allLights{0, lightCount};
-    const gl::Program& program = lighting_.variant(scene.lightingFeatures(), source);
+    const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
     passes.run(lightBatchPass(allLights, Resource::LightGrid), [&] {
         scene.bindLightSource(source, allLights);
         grid_.bind();

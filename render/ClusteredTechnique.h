@@ -32,7 +32,9 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    LightingProgram lighting_;  // part 0 of every list: the one pass over the image
+    // Part 0 of every list, the one pass over the image: reading the lists from the storage
+    // buffer and from texels (ClusterLists::readsTexels).
+    LightingProgram lighting_[2];
 };
 
 }  // namespace manylights

@@ -4,15 +4,22 @@
 
 namespace manylights {
 
+namespace {
+
+LightingProgram tiledLighting(const TechniqueOptions& options, bool listTexels)
+{
+    gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), kTiledGridShape), listTexels);
+    defines.emplace_back("EVERY_TILE", "1");
+    return LightingProgram("tiled lighting", {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, std::move(defines));
+}
+
+}  // namespace
+
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kTiledGridShape),
       lists_(kTiledGridShape, shaderDefines(options)),
-      lighting_("tiled lighting", {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, [&] {
-          gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), kTiledGridShape));
-          defines.emplace_back("EVERY_TILE", "1");
-          return defines;
-      }())
+      lighting_{tiledLighting(options, false), tiledLighting(options, true)}
 {
 }
 
@@ -24,7 +31,8 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
         grid_.fitToSurfaces();
     });
     lists_.build(passes, grid_, static_cast<std::uint32_t>(scene.lightCount()));
-    const gl::Program& program = lighting_.variant(scene.lightingFeatures(), scene.indexedLightSource());
+    const gl::Program& program =
+        lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
     passes.run({.name = "lighting",
                 .sampled = Resource::GBuffer,
                 .images = Resource::LitImage,

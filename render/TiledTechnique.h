@@ -32,7 +32,7 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    LightingProgram lighting_;
+    LightingProgram lighting_[2];  // reading the lists from the storage buffer, from texels
 };
 
 }  // namespace manylights

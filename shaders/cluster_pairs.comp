@@ -78,14 +78,15 @@ uint tilePairs(ViewLight light, uint lightIndex, uint tile, uint slot)
 {
     uint slices = lightSlicesOfTile(light, tile);
     uint pairs = uint(bitCount(slices));
-    if (emitPairs == 0u)
+    if (emitPairs == 0u || pairs == 0u)
         return pairs;
+#ifdef WIDE_LIGHTS
+    // A wide light's invocations share its slots: one atomic per tile, not per pair.
+    slot = lightPairOffset[lightIndex] + (atomicAdd(lightPairCursor[lightIndex], pairs) - WIDE_LIGHT_MARK);
+#endif
     while (slices != 0u) {
         uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
         slices &= slices - 1u;
-#ifdef WIDE_LIGHTS
-        slot = lightPairOffset[lightIndex] + (atomicAdd(lightPairCursor[lightIndex], 1u) - WIDE_LIGHT_MARK);
-#endif
         emitPair(slot++, cluster, lightIndex);
     }
     return pairs;

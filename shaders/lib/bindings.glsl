@@ -52,6 +52,7 @@ const int DISPLAY_SOURCE_UNIT = 0;    // display.frag litImage, lib/fxaa_edge.gl
 const int LUMINANCE_DEPTH_UNIT = 1;   // log_luminance.comp sceneDepth
 const int SCENE_DEPTH_UNIT = 5;       // sceneDepth of the compute passes
 const int DIFFUSE_MAP_UNIT = 6;       // lib/material.glsl, shadow_depth.frag
+const int CLUSTER_LIST_TEXELS_UNIT = 6;  // lib/cluster_lists.glsl clusterListTexels (no material maps there)
 const int SPECULAR_MAP_UNIT = 7;      // lib/material.glsl (or the metallic-roughness map)
 const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl

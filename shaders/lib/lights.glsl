@@ -31,6 +31,11 @@ vec4 lightPositionRadius(uint lightIndex)
 {
     return windowLights[lightIndex - lightBatch.x].positionRadius;
 }
+
+GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
+{
+    return windowLights[lightIndex - lightBatch.x];
+}
 #elif defined(LIGHT_TEXELS)
 // The same buffer as four RGBA32F texels per light (render/LightBatches.h: light texels), for
 // passes whose pixels read different lights, and for every pass on a software rasteriser:
@@ -53,6 +58,18 @@ vec4 lightPositionRadius(uint lightIndex)
 {
     return texelFetch(lightTexels, int(lightIndex) * 4);
 }
+
+// The rest of the light whose first texel was fetched already (lightPositionRadius).
+GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
+{
+    int first = int(lightIndex) * 4;
+    GpuLight light;
+    light.positionRadius = positionRadius;
+    light.intensityExponent = texelFetch(lightTexels, first + 1);
+    light.attenuation = texelFetch(lightTexels, first + 2);
+    light.spotAxisCosCutoff = texelFetch(lightTexels, first + 3);
+    return light;
+}
 #else
 GpuLight batchLight(uint lightIndex)
 {
@@ -62,5 +79,12 @@ GpuLight batchLight(uint lightIndex)
 vec4 lightPositionRadius(uint lightIndex)
 {
     return lights[lightIndex].positionRadius;
+}
+
+GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
+{
+    GpuLight light = lights[lightIndex];
+    light.positionRadius = positionRadius;
+    return light;
 }
 #endif

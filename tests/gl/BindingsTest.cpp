@@ -100,6 +100,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::Sampler, "emissiveMap"}, EMISSIVE_MAP_UNIT},
         {{Kind::Sampler, "opacityMap"}, OPACITY_MAP_UNIT},
         {{Kind::Sampler, "lightTexels"}, LIGHT_TEXELS_UNIT},
+        {{Kind::Sampler, "clusterListTexels"}, CLUSTER_LIST_TEXELS_UNIT},
         {{Kind::Image, "lightEvaluations"}, LIGHT_EVALUATIONS_IMAGE_UNIT},
         {{Kind::Image, "inRangeCounts"}, IN_RANGE_COUNTS_IMAGE_UNIT},
         {{Kind::Image, "rawOcclusion"}, OCCLUSION_IMAGE_UNIT},
@@ -124,7 +125,8 @@ bool isSamplerType(GLint type)
     case GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW:
     case GL_UNSIGNED_INT_SAMPLER_2D:
     case GL_INT_SAMPLER_2D:
-    case GL_SAMPLER_BUFFER: return true;
+    case GL_SAMPLER_BUFFER:
+    case GL_UNSIGNED_INT_SAMPLER_BUFFER: return true;
     default: return false;
     }
 }
