@@ -44,6 +44,11 @@ void Buffer::clearToZero(std::size_t bytes)
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
+void Buffer::bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const
+{
+    glBindBufferRange(target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
+}
+
 void Buffer::copyTo(const Buffer& to, std::size_t bytes) const
 {
     ML_ASSERT(bytes <= size_ && bytes <= to.size_);

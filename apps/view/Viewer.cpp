@@ -199,9 +199,7 @@ Viewer::Viewer(const ViewOptions& options)
       ambientOcclusion_(scene_.ssao),
       time_(options.time)
 {
-    if (options.lights && scene_.lightSets.empty())
-        throw Error(scene_.source + ": --lights needs a scene with light_sets to scale");
-    lights_ = expandLights(scene_, options.lights);
+    lights_ = lightsForCommand(scene_, options.lights);
     if (!options.scriptPath.empty())
         script_ = parseViewScript(readTextFile(options.scriptPath, "script"), options.scriptPath);
 
