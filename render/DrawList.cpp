@@ -10,6 +10,7 @@
 
 #include "core/Error.h"
 #include "render/Bindings.h"
+#include "render/Locations.h"
 #include "scene/Meshes.h"
 #include "scene/ShadowSelection.h"
 #include "scene/Transform.h"
@@ -33,7 +34,7 @@ Bounds objectSpaceBounds(const Object& object, const Bounds& meshBounds)
 }
 // lib/instances.glsl: the instance records and the uniform naming a draw's first record.
 constexpr GLuint kInstancesBinding = bindings::INSTANCES_BUFFER_BINDING;
-constexpr GLint kInstanceBase = 33;
+constexpr GLint kInstanceBase = locations::INSTANCE_BASE_LOCATION;
 // A light marker is small on screen: a coarse unit sphere is round enough.
 constexpr int kMarkerSlices = 16;
 constexpr int kMarkerStacks = 8;
@@ -316,7 +317,11 @@ void DrawList::setObjectUniforms(const gl::Program& program, const DrawItem& dra
 {
     // shaders/lib/revolution.glsl, used by shaders/mesh.vert and shaders/shadow_depth.vert,
     // which position vertices the same way (the model matrix is in the instance record).
-    enum : GLint { kRevolutionEnabled = 30, kRevolutionShape = 31, kRevolutionSpeed = 32 };
+    enum : GLint {
+        kRevolutionEnabled = locations::REVOLUTION_ENABLED_LOCATION,
+        kRevolutionShape = locations::REVOLUTION_SHAPE_LOCATION,
+        kRevolutionSpeed = locations::REVOLUTION_SPEED_LOCATION,
+    };
     const RevolutionProfile* revolution = draw.object && draw.object->revolution ? &*draw.object->revolution : nullptr;
     program.set(kRevolutionEnabled, revolution ? 1 : 0);
     if (revolution) {
@@ -464,13 +469,13 @@ void DrawList::bindMaterial(const gl::Program& program, const Material& material
     // record, DrawList::writeInstances; which maps it samples, from the program: materialVariant).
     // A map's uniforms are inactive, so left unset, without the map.
     enum : GLint {
-        kNormalScale = 15,
-        kMetallicRoughness = 16,
-        kDiffuseUvTransform = 50,
-        kSpecularUvTransform = 53,
-        kNormalUvTransform = 56,
-        kEmissiveUvTransform = 59,
-        kOpacityUvTransform = 62,
+        kNormalScale = locations::MATERIAL_NORMAL_SCALE_LOCATION,
+        kMetallicRoughness = locations::MATERIAL_METALLIC_ROUGHNESS_LOCATION,
+        kDiffuseUvTransform = locations::DIFFUSE_UV_TRANSFORM_LOCATION,
+        kSpecularUvTransform = locations::SPECULAR_UV_TRANSFORM_LOCATION,
+        kNormalUvTransform = locations::NORMAL_UV_TRANSFORM_LOCATION,
+        kEmissiveUvTransform = locations::EMISSIVE_UV_TRANSFORM_LOCATION,
+        kOpacityUvTransform = locations::OPACITY_UV_TRANSFORM_LOCATION,
     };
     constexpr GLuint kDiffuseUnit = bindings::DIFFUSE_MAP_UNIT;
     constexpr GLuint kSpecularUnit = bindings::SPECULAR_MAP_UNIT;

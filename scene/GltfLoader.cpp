@@ -30,6 +30,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "scene/Meshes.h"
+#include "scene/Shininess.h"
 
 namespace manylights {
 
@@ -37,7 +38,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr float kMaxShininess = 2048.0f;
 // Deeper node hierarchies than this are taken for a malformed file (and would risk the stack).
 constexpr int kMaxNodeDepth = 1024;
 
@@ -985,13 +985,6 @@ std::string_view gltfJsonText(const std::vector<unsigned char>& bytes)
 }
 
 }  // namespace
-
-float blinnPhongExponent(float roughness)
-{
-    // The same float operations as shaders/lib/material.glsl, so both give the same exponent.
-    const float r2 = std::max(roughness, 1e-3f) * std::max(roughness, 1e-3f);
-    return std::clamp(2.0f / (r2 * r2) - 2.0f, 1.0f, kMaxShininess);
-}
 
 Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string& displayName,
                      const fs::path& baseDirectory, const GltfOptions& options)

@@ -20,6 +20,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "scene/Meshes.h"
+#include "scene/Shininess.h"
 #include "scene/Warnings.h"
 
 namespace manylights {
@@ -27,9 +28,6 @@ namespace manylights {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Above this, MTL and glTF shininess values add nothing visible and only risk pow() overflow.
-constexpr float kMaxShininess = 2048.0f;
 
 [[noreturn]] void fail(const std::string& displayName, const std::string& what)
 {

@@ -6,6 +6,7 @@
 // rounding. Alpha-masked casters (MATERIAL_VARIANT with bit 5, render/LightingPrograms.h
 // depthOnlyVariant) also pass what their coverage needs to shadow_depth.frag.
 #include "lib/frame.glsl"
+#include "lib/locations.glsl"
 #include "lib/instances.glsl"
 #include "lib/revolution.glsl"
 
@@ -17,7 +18,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 layout(location = 4) in vec4 inColour;
 
-layout(location = 20) uniform mat4 lightViewProjection;
+layout(location = LIGHT_VIEW_PROJECTION_LOCATION) uniform mat4 lightViewProjection;
 
 #if (MATERIAL_VARIANT & 32) != 0
 layout(location = 2) out vec2 uv;
