@@ -76,7 +76,7 @@ bool TiledQuadsTechnique::drawsTilesAsPoints(const TileLightLists& lists) const
 
 void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTargets& targets)
 {
-    // The camera as the frame's matrices were made from it (render/GpuScene.cpp).
+    // The camera as the frame's matrices were made from it (render/GpuFrame.cpp).
     const FrameUniforms& frame = scene.frameUniforms();
     TileCullingView view;
     view.view = frame.view;

@@ -1,3 +1,7 @@
+// The glTF 2.0 loader (.gltf and .glb, docs/scene-format.md): tinygltf parses the file, and
+// this file checks every accessor, buffer view and image against its buffer before reading it,
+// then turns meshes, materials (metallic-roughness to Blinn-Phong) and the node hierarchy into
+// a Model. A malformed file is an Error naming the file and the JSON path.
 #include "scene/GltfLoader.h"
 
 #include <algorithm>

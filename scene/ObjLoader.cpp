@@ -1,3 +1,6 @@
+// The Wavefront OBJ and MTL loader (docs/scene-format.md): tinyobjloader parses the text after
+// this file has decoded it and checked its element indices, and the MTL materials and their
+// map paths become Materials. Problems other tools forgive are warnings (scene/Warnings.h).
 #include "scene/ObjLoader.h"
 
 #include <algorithm>

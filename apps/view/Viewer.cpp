@@ -1,3 +1,6 @@
+// The viewer (docs/viewer.md): a GLFW window drawing the Renderer's image each frame, the
+// Dear ImGui panels that change its RendererDesc, camera controls, scripted runs for the tests,
+// and shader reloading from --shader-dir.
 #include "apps/view/Viewer.h"
 
 #include <algorithm>

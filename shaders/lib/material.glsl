@@ -4,7 +4,7 @@
 // in both passes, so the texture lookups need no explicit LOD to agree.
 // The material constants come per instance from the vertex shader (shaders/mesh.vert reads
 // them from lib/instances.glsl), so one instanced draw can show many materials; the maps
-// below stay per draw, and only draws without maps are instanced (render/GpuScene.cpp).
+// below stay per draw, and only draws without maps are instanced (render/DrawList.cpp).
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
 layout(location = 4) flat in vec3 materialDiffuse;
