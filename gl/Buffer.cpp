@@ -7,17 +7,8 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createBuffer()
-{
-    GLuint name = 0;
-    glCreateBuffers(1, &name);
-    return name;
-}
-}  // namespace
-
 Buffer::Buffer(std::string_view label, std::size_t bytes, const void* data, GLbitfield flags)
-    : GlObject(createBuffer()), size_(bytes)
+    : GlObject(detail::createName(glCreateBuffers)), size_(bytes)
 {
     setLabel(GL_BUFFER, id(), label);
     // Zero-sized storage is an error in GL; an empty buffer still gets one byte so that it
