@@ -1,4 +1,4 @@
-// The two kinds of error (DESIGN.md practice 4).
+// The two kinds of error (CODE_STYLE.md, "Errors").
 //
 // A user's mistake (bad scene file, missing or broken asset, impossible size) is an Error:
 // it carries one complete line that names the file and the position, and the CLI prints it

@@ -7,17 +7,8 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createBuffer()
-{
-    GLuint name = 0;
-    glCreateBuffers(1, &name);
-    return name;
-}
-}  // namespace
-
 Buffer::Buffer(std::string_view label, std::size_t bytes, const void* data, GLbitfield flags)
-    : GlObject(createBuffer()), size_(bytes)
+    : GlObject(detail::createName(glCreateBuffers)), size_(bytes)
 {
     setLabel(GL_BUFFER, id(), label);
     // Zero-sized storage is an error in GL; an empty buffer still gets one byte so that it
@@ -43,6 +34,11 @@ void Buffer::clearToZero(std::size_t bytes)
 }
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+
+void Buffer::bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const
+{
+    glBindBufferRange(target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
+}
 
 void Buffer::copyTo(const Buffer& to, std::size_t bytes) const
 {

@@ -32,6 +32,8 @@ public:
     // GL command: shaders of later commands see the zeros.
     void clearToZero(std::size_t bytes);
     void bindBase(GLenum target, GLuint index) const;
+    // Binds `bytes` from `offset` to the indexed `target` (glBindBufferRange).
+    void bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
     // Copies the first `bytes` into `to` on the GPU (glCopyNamedBufferSubData).
     void copyTo(const Buffer& to, std::size_t bytes) const;
     // Reads `bytes` from `offset` back to the CPU, waiting for the commands that write them.

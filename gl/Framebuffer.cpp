@@ -4,17 +4,8 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createFramebuffer()
-{
-    GLuint name = 0;
-    glCreateFramebuffers(1, &name);
-    return name;
-}
-}  // namespace
-
 Framebuffer::Framebuffer(std::string_view label, std::span<const Texture2D* const> colour, const Texture2D* depth)
-    : GlObject(createFramebuffer())
+    : GlObject(detail::createName(glCreateFramebuffers))
 {
     setLabel(GL_FRAMEBUFFER, id(), label);
     std::vector<GLenum> drawBuffers;
@@ -35,7 +26,7 @@ Framebuffer::Framebuffer(std::string_view label, std::span<const Texture2D* cons
     ML_ASSERT(glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
 }
 
-Framebuffer::Framebuffer(std::string_view label) : GlObject(createFramebuffer())
+Framebuffer::Framebuffer(std::string_view label) : GlObject(detail::createName(glCreateFramebuffers))
 {
     setLabel(GL_FRAMEBUFFER, id(), label);
     glNamedFramebufferDrawBuffer(id(), GL_NONE);

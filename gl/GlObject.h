@@ -13,6 +13,18 @@ namespace manylights::gl {
 // Attaches a human-readable name that debuggers (RenderDoc) and the debug callback show.
 void setLabel(GLenum identifier, GLuint name, std::string_view label);
 
+namespace detail {
+// A new object's name from a glCreate* function (DSA: created, not bound): `create` takes
+// `before` (a texture's target), then the count and where to write the name.
+template <typename Create, typename... Before>
+GLuint createName(Create create, Before... before)
+{
+    GLuint name = 0;
+    create(before..., 1, &name);
+    return name;
+}
+}  // namespace detail
+
 template <void (*Delete)(GLuint)>
 class GlObject {
 public:

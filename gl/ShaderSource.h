@@ -1,4 +1,4 @@
-// Shader files with `#include "file"` and injected `#define`s (DESIGN.md practice 3).
+// Shader files with `#include "file"` and injected `#define`s.
 //
 // GLSL has no include and its #line names source strings by number, not by file. The
 // resolver numbers every file it pulls in, emits `#line LINE NUMBER` around each include,

@@ -14,12 +14,7 @@ namespace manylights::gl {
 namespace detail {
 inline void deleteTexture(GLuint name) { glDeleteTextures(1, &name); }
 // A new texture object of `target` (DSA: created, not bound).
-inline GLuint createTexture(GLenum target)
-{
-    GLuint name = 0;
-    glCreateTextures(target, 1, &name);
-    return name;
-}
+inline GLuint createTexture(GLenum target) { return createName(glCreateTextures, target); }
 }  // namespace detail
 
 // A single-level 2D texture with immutable storage (glTextureStorage2D), nearest filtering:

@@ -2,16 +2,7 @@
 
 namespace manylights::gl {
 
-namespace {
-GLuint createVertexArray()
-{
-    GLuint name = 0;
-    glCreateVertexArrays(1, &name);
-    return name;
-}
-}  // namespace
-
-VertexArray::VertexArray(std::string_view label) : GlObject(createVertexArray())
+VertexArray::VertexArray(std::string_view label) : GlObject(detail::createName(glCreateVertexArrays))
 {
     setLabel(GL_VERTEX_ARRAY, id(), label);
 }

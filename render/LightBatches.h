@@ -60,7 +60,7 @@ void addLightBatchDefines(gl::Defines& defines);
 // 64 KiB of lights, the uniform block size of desktop drivers (GL guarantees only 16 KiB:
 // lightWindowsSupported says), so such passes take batches of kLightsPerWindow.
 inline constexpr std::size_t kLightWindowBytes = 64 * 1024;
-inline constexpr std::uint32_t kLightsPerWindow = 1024;  // GpuScene.cpp checks it fills the window
+inline constexpr std::uint32_t kLightsPerWindow = 1024;  // SceneLights.cpp checks it fills the window
 // The window's uniform buffer binding (0 and 1 are lib/frame.glsl's and lib/shadows.glsl's).
 inline constexpr unsigned kLightWindowBinding = bindings::LIGHT_WINDOW_BLOCK_BINDING;
 // Whether a frame lit in `batches` can read its lights from one window: a single batch of at

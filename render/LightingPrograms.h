@@ -29,8 +29,8 @@
 namespace manylights {
 
 // The largest shininess, and the most distinct ones in a scene, that the lighting function
-// raises to by multiplications (shaders/lib/specular_power.glsl; 2048 is also the glTF
-// exponent's clamp, shaders/lib/material.glsl), and the most multiplications all of a scene's
+// raises to by multiplications (shaders/lib/specular_power.glsl; as large as any material's,
+// kMaxShininess of scene/Shininess.h), and the most multiplications all of a scene's
 // together may take: on llvmpipe one pow() costs about as much as 50 (docs/performance.md).
 inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
 inline constexpr std::size_t kMaxSpecularExponents = 6;

@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "gl/Debug.h"
 #include "render/GpuScene.h"
+#include "render/Locations.h"
 #include "render/PassProfiler.h"
 #include "render/PipelineState.h"
 #include "scene/Falloff.h"
@@ -29,7 +30,7 @@ constexpr float kConstantBiasUnits = 16.0f;
 // The filter's reach beyond a visible surface's texel (3x3 taps, each bilinear).
 constexpr float kFilterReachTexels = 2.0f;
 // Location of the light's view-projection in shaders/shadow_depth.vert.
-constexpr GLint kLightViewProjectionLocation = 20;
+constexpr GLint kLightViewProjectionLocation = locations::LIGHT_VIEW_PROJECTION_LOCATION;
 
 // A depth texture read with hardware comparison and bilinear percentage-closer filtering;
 // outside the map it compares as lit (border depth 1).

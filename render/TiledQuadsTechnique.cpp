@@ -8,6 +8,7 @@
 
 #include "render/FramePasses.h"
 #include "render/GpuScene.h"
+#include "render/Locations.h"
 #include "render/ScreenPasses.h"
 
 namespace manylights {
@@ -16,11 +17,11 @@ namespace {
 
 // Locations and bindings of shaders/tiled_quads.vert and tiled_quads.frag (binding 0 is
 // the light buffer).
-constexpr GLint kFirstQuad = 0;
-constexpr GLint kTilesX = 1;
-constexpr GLint kTileSize = 2;
-constexpr GLint kViewportSize = 3;
-constexpr GLint kTilesAsPoints = 4;
+constexpr GLint kFirstQuad = locations::TILE_FIRST_QUAD_LOCATION;
+constexpr GLint kTilesX = locations::TILES_X_LOCATION;
+constexpr GLint kTileSize = locations::TILE_SIZE_LOCATION;
+constexpr GLint kViewportSize = locations::TILE_VIEWPORT_SIZE_LOCATION;
+constexpr GLint kTilesAsPoints = locations::TILES_AS_POINTS_LOCATION;
 constexpr GLuint kTileQuadsBinding = bindings::TILE_QUADS_BUFFER_BINDING;
 constexpr GLuint kTileLightsBinding = bindings::TILE_LIGHTS_BUFFER_BINDING;
 
@@ -75,7 +76,7 @@ bool TiledQuadsTechnique::drawsTilesAsPoints(const TileLightLists& lists) const
 
 void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTargets& targets)
 {
-    // The camera as the frame's matrices were made from it (render/GpuScene.cpp).
+    // The camera as the frame's matrices were made from it (render/GpuFrame.cpp).
     const FrameUniforms& frame = scene.frameUniforms();
     TileCullingView view;
     view.view = frame.view;

@@ -1,3 +1,7 @@
+// The glTF 2.0 loader (.gltf and .glb, docs/scene-format.md): tinygltf parses the file, and
+// this file checks every accessor, buffer view and image against its buffer before reading it,
+// then turns meshes, materials (metallic-roughness to Blinn-Phong) and the node hierarchy into
+// a Model. A malformed file is an Error naming the file and the JSON path.
 #include "scene/GltfLoader.h"
 
 #include <algorithm>
@@ -31,6 +35,7 @@
 #include "core/InputFile.h"
 #include "scene/GltfFieldChecks.h"
 #include "scene/Meshes.h"
+#include "scene/Shininess.h"
 
 namespace manylights {
 
@@ -38,7 +43,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr float kMaxShininess = 2048.0f;
 // Deeper node hierarchies than this are taken for a malformed file (and would risk the stack).
 constexpr int kMaxNodeDepth = 1024;
 
@@ -997,13 +1001,6 @@ std::string_view gltfJsonText(const std::vector<unsigned char>& bytes)
 }
 
 }  // namespace
-
-float blinnPhongExponent(float roughness)
-{
-    // The same float operations as shaders/lib/material.glsl, so both give the same exponent.
-    const float r2 = std::max(roughness, 1e-3f) * std::max(roughness, 1e-3f);
-    return std::clamp(2.0f / (r2 * r2) - 2.0f, 1.0f, kMaxShininess);
-}
 
 Model loadGltfMemory(const std::vector<unsigned char>& bytes, const std::string& displayName,
                      const fs::path& baseDirectory, const GltfOptions& options)

@@ -25,11 +25,6 @@ struct GltfOptions {
     Warnings* warnings = nullptr;
 };
 
-// The Blinn-Phong exponent for a glTF roughness: roughness⁴ is the Beckmann slope variance
-// (α = roughness², GGX's convention) whose matching Blinn-Phong exponent is 2/α² − 2, clamped
-// to [1, 2048]. shaders/lib/material.glsl computes the same per texel.
-float blinnPhongExponent(float roughness);
-
 // Loads a .gltf or .glb file (told apart by content, not by name). Throws Error naming the file
 // (and the glTF element, e.g. "meshes[0].primitives[1]") on any problem.
 Model loadGltfFile(const std::filesystem::path& path, const GltfOptions& options = {});

@@ -167,4 +167,11 @@ std::vector<Light> expandLights(const Scene& scene, std::optional<int> totalSetL
     return lights;
 }
 
+std::vector<Light> lightsForCommand(const Scene& scene, std::optional<int> requestedSetLights)
+{
+    if (requestedSetLights && scene.lightSets.empty())
+        throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
+    return expandLights(scene, requestedSetLights);
+}
+
 }  // namespace manylights

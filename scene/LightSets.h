@@ -15,6 +15,11 @@ namespace manylights {
 // ranges excepted in a set with range_reference_count, which scales them all by one factor).
 std::vector<Light> expandLights(const Scene& scene, std::optional<int> totalSetLights = std::nullopt);
 
+// The lights a command renders (render, bench, view): expandLights(scene, requestedSetLights),
+// where `requestedSetLights` is the --lights option. Throws manylights::Error naming the scene
+// when it is given and the scene has no light sets to scale.
+std::vector<Light> lightsForCommand(const Scene& scene, std::optional<int> requestedSetLights);
+
 // The factor a set with `range_reference_count` referenceCount multiplies its lights' ranges
 // by when it generates `count` lights: sqrt(referenceCount / count), so that count · range²
 // (the area the lights cover) stays what it is at the reference count.

@@ -1,3 +1,6 @@
+// The Wavefront OBJ and MTL loader (docs/scene-format.md): tinyobjloader parses the text after
+// this file has decoded it and checked its element indices, and the MTL materials and their
+// map paths become Materials. Problems other tools forgive are warnings (scene/Warnings.h).
 #include "scene/ObjLoader.h"
 
 #include <algorithm>
@@ -20,6 +23,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "scene/Meshes.h"
+#include "scene/Shininess.h"
 #include "scene/Warnings.h"
 
 namespace manylights {
@@ -27,9 +31,6 @@ namespace manylights {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Above this, MTL and glTF shininess values add nothing visible and only risk pow() overflow.
-constexpr float kMaxShininess = 2048.0f;
 
 [[noreturn]] void fail(const std::string& displayName, const std::string& what)
 {

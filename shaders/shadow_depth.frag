@@ -4,6 +4,7 @@
 // coverage, opacity times the diffuse map's alpha (bit 0) times the vertex colour's (bit 6),
 // below the cutoff. Light passes through the holes a mask makes.
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #ifndef MATERIAL_VARIANT
 #define MATERIAL_VARIANT 0
 #endif
@@ -15,7 +16,7 @@ layout(location = 9) flat in vec2 materialAlpha;
 layout(location = 11) in float vertexAlpha;
 #endif
 #if (MATERIAL_VARIANT & 1) != 0
-layout(location = 50) uniform mat3x2 diffuseUvTransform;
+layout(location = DIFFUSE_UV_TRANSFORM_LOCATION) uniform mat3x2 diffuseUvTransform;
 layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;
 #endif
 #endif

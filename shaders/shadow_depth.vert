@@ -1,11 +1,12 @@
 #version 450 core
 // Shadow-map pass: only depth, seen from the light (render/ShadowMaps.cpp). Positions go
 // through the same instance record's model matrix (lib/instances.glsl), and for a dynamic
-// surface of revolution the same vertex-shader surface, as shaders/mesh.vert (GpuScene sets
+// surface of revolution the same vertex-shader surface, as shaders/mesh.vert (DrawList sets
 // both), so a receiver's world position and the caster depth stored for it agree to float
 // rounding. Alpha-masked casters (MATERIAL_VARIANT with bit 5, render/LightingPrograms.h
 // depthOnlyVariant) also pass what their coverage needs to shadow_depth.frag.
 #include "lib/frame.glsl"
+#include "lib/locations.glsl"
 #include "lib/instances.glsl"
 #include "lib/revolution.glsl"
 
@@ -17,7 +18,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 layout(location = 4) in vec4 inColour;
 
-layout(location = 20) uniform mat4 lightViewProjection;
+layout(location = LIGHT_VIEW_PROJECTION_LOCATION) uniform mat4 lightViewProjection;
 
 #if (MATERIAL_VARIANT & 32) != 0
 layout(location = 2) out vec2 uv;

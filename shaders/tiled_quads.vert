@@ -5,6 +5,7 @@
 // point of the tile's size where the driver draws points that large, else a quad
 // (render/TiledQuadsTechnique.cpp says why).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 
 // The quads of every draw, grouped by light-count bucket: (tile number, offset and count of
 // its run of lights in the index list, unused). A tile has one quad per run of at most a
@@ -13,13 +14,13 @@ layout(std430, binding = TILE_QUADS_BUFFER_BINDING) readonly buffer TileQuads {
     uvec4 tileQuads[];
 };
 
-layout(location = 0) uniform uint firstQuad;  // where this draw's quads begin in tileQuads
-layout(location = 1) uniform int tilesX;      // tiles per row
-layout(location = 2) uniform int tileSize;    // pixels
+layout(location = TILE_FIRST_QUAD_LOCATION) uniform uint firstQuad;  // where this draw's quads begin in tileQuads
+layout(location = TILES_X_LOCATION) uniform int tilesX;   // tiles per row
+layout(location = TILE_SIZE_LOCATION) uniform int tileSize;   // pixels
 // Pixels: the image for quads; the whole grid of tiles for points, since GL drops a point
 // whose centre lies outside the viewport, as the centre of a tile cut at the image's edge may.
-layout(location = 3) uniform vec2 viewportSize;
-layout(location = 4) uniform bool tilesAsPoints;
+layout(location = TILE_VIEWPORT_SIZE_LOCATION) uniform vec2 viewportSize;
+layout(location = TILES_AS_POINTS_LOCATION) uniform bool tilesAsPoints;
 
 layout(location = 0) flat out uvec2 lightRange;
 

@@ -420,8 +420,6 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
 void runBench(const BenchOptions& options)
 {
     const Scene scene = loadSceneForCommand(options.scenePath, options.strict, options.camera);
-    if (!options.lightCounts.empty() && scene.lightSets.empty())
-        throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
     // Before the sweep, which may take hours, rather than after it.
     if (!options.csvPath.empty())
         checkWritable(options.csvPath, "CSV");
@@ -447,7 +445,7 @@ void runBench(const BenchOptions& options)
         for (const ImageSize& size : options.sizes) {
             std::set<std::string> overBudget;
             for (const std::optional<int>& count : lightCounts) {
-                const std::vector<Light> lights = expandLights(scene, count);
+                const std::vector<Light> lights = lightsForCommand(scene, count);
                 for (const std::string& technique : techniques) {
                     if (!options.shard.has(caseNumber++))
                         continue;

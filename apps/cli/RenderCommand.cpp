@@ -192,9 +192,7 @@ void runRender(const RenderOptions& options)
     const Scene scene = loadSceneForCommand(options.scenePath, options.strict, options.camera);
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
-    if (options.lights && scene.lightSets.empty())
-        throw Error(scene.source + ": --lights needs a scene with light_sets to scale");
-    const std::vector<Light> lights = expandLights(scene, options.lights);
+    const std::vector<Light> lights = lightsForCommand(scene, options.lights);
 
     HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
     const DisplaySettings display = chooseDisplay(scene, options.display);

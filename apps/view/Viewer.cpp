@@ -1,3 +1,6 @@
+// The viewer (docs/viewer.md): a GLFW window drawing the Renderer's image each frame, the
+// Dear ImGui panels that change its RendererDesc, camera controls, scripted runs for the tests,
+// and shader reloading from --shader-dir.
 #include "apps/view/Viewer.h"
 
 #include <algorithm>
@@ -214,9 +217,7 @@ Viewer::Viewer(const ViewOptions& options)
       ambientOcclusion_(scene_.ssao),
       time_(options.time)
 {
-    if (options.lights && scene_.lightSets.empty())
-        throw Error(scene_.source + ": --lights needs a scene with light_sets to scale");
-    lights_ = expandLights(scene_, options.lights);
+    lights_ = lightsForCommand(scene_, options.lights);
     if (!options.scriptPath.empty())
         script_ = parseViewScript(readTextFile(options.scriptPath, "script"), options.scriptPath);
 

@@ -3,8 +3,9 @@
 // instanced draw; record instanceBase + gl_InstanceID belongs to the instance being drawn.
 // The base is a uniform rather than gl_BaseInstance, which needs GL 4.6 or
 // ARB_shader_draw_parameters: this way the shaders run on any GL 4.5 core driver.
-// SSBO binding 8 and uniform location 33 are in issue 6's ranges.
+// SSBO binding 8 and uniform location 33 (lib/locations.glsl) are in issue 6's ranges.
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 struct Instance {
     mat4 model;
     vec4 normalMatrix[3];   // columns of the inverse-transpose of the model's upper 3x3 (w unused)
@@ -18,7 +19,7 @@ layout(std430, binding = INSTANCES_BUFFER_BINDING) readonly buffer Instances {
     Instance instances[];
 };
 
-layout(location = 33) uniform int instanceBase;
+layout(location = INSTANCE_BASE_LOCATION) uniform int instanceBase;
 
 Instance currentInstance()
 {

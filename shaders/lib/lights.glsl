@@ -1,4 +1,4 @@
-// The local lights, all of them in one storage buffer (render/GpuScene.cpp packs it).
+// The local lights, all of them in one storage buffer (render/SceneLights.cpp packs it).
 #include "lib/bindings.glsl"
 struct GpuLight {
     vec4 positionRadius;     // xyz: position; w: culling radius (UNBOUNDED_RADIUS when none)

@@ -4,8 +4,9 @@
 // in both passes, so the texture lookups need no explicit LOD to agree.
 // The material constants come per instance from the vertex shader (shaders/mesh.vert reads
 // them from lib/instances.glsl), so one instanced draw can show many materials; the maps
-// below stay per draw, and only draws without maps are instanced (render/GpuScene.cpp).
+// below stay per draw, and only draws without maps are instanced (render/DrawList.cpp).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 layout(location = 4) flat in vec3 materialDiffuse;
 layout(location = 5) flat in vec3 materialSpecular;
 layout(location = 6) flat in float materialShininess;
@@ -33,17 +34,17 @@ layout(location = 9) flat in vec2 materialAlpha;  // opacity, alpha cutoff
 #if (MATERIAL_VARIANT & 64) != 0
 layout(location = 11) in vec4 vertexColour;  // glTF COLOR_0
 #endif
-layout(location = 15) uniform float materialNormalScale;  // glTF normalTexture.scale
+layout(location = MATERIAL_NORMAL_SCALE_LOCATION) uniform float materialNormalScale;  // glTF normalTexture.scale
 // glTF metallicFactor and roughnessFactor, for the metallic-roughness map's per-texel mapping.
-layout(location = 16) uniform vec2 materialMetallicRoughness;
+layout(location = MATERIAL_METALLIC_ROUGHNESS_LOCATION) uniform vec2 materialMetallicRoughness;
 // Each map's uv transform (glTF KHR_texture_transform; scene/Scene.h Material::uvTransforms),
 // after the light batch's location 40 (render/LightBatches.h):
 // uv' = M · (u, v, 1). Set per draw for the maps the draw binds.
-layout(location = 50) uniform mat3x2 diffuseUvTransform;
-layout(location = 53) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's
-layout(location = 56) uniform mat3x2 normalUvTransform;
-layout(location = 59) uniform mat3x2 emissiveUvTransform;
-layout(location = 62) uniform mat3x2 opacityUvTransform;
+layout(location = DIFFUSE_UV_TRANSFORM_LOCATION) uniform mat3x2 diffuseUvTransform;
+layout(location = SPECULAR_UV_TRANSFORM_LOCATION) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's
+layout(location = NORMAL_UV_TRANSFORM_LOCATION) uniform mat3x2 normalUvTransform;
+layout(location = EMISSIVE_UV_TRANSFORM_LOCATION) uniform mat3x2 emissiveUvTransform;
+layout(location = OPACITY_UV_TRANSFORM_LOCATION) uniform mat3x2 opacityUvTransform;
 
 layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
 // Linear. A Blinn-Phong specular map, or (bit 4) glTF's metallic-roughness map: G roughness,
@@ -99,12 +100,8 @@ vec3 normalMapped(vec3 N)
     return dot(mapped, mapped) > 0.0 ? normalize(mapped) : N;
 }
 
-// scene/GltfLoader.h blinnPhongExponent, to the same float operations.
-float blinnPhongExponent(float roughness)
-{
-    float r2 = max(roughness, 1e-3) * max(roughness, 1e-3);
-    return clamp(2.0 / (r2 * r2) - 2.0, 1.0, 2048.0);
-}
+// blinnPhongExponent, shared with the loaders (scene/Shininess.h).
+#include "lib/shininess.glsl"
 
 // The surface's coverage as meshSurface() found it: the opacity a blended (transparent)
 // material is drawn with (shaders/transparent.frag); 1 for other variants.

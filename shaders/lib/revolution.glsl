@@ -3,10 +3,11 @@
 // revolutionPosition / revolutionNormal on the CPU, which the tests compare it against:
 //     r(v, t) = radius + amplitude · sin(2π · (waves · v − fract(speed · t)))
 //     P = (r cos 2πu, height · v, r sin 2πu),  N ∝ (height cos 2πu, −∂r/∂v, height sin 2πu)
-// Needs lib/frame.glsl for the time. Uniform locations 30-32 (issue 6's range).
-layout(location = 30) uniform int revolutionEnabled;  // 0: an ordinary mesh
-layout(location = 31) uniform vec4 revolutionShape;   // radius, height, amplitude, waves
-layout(location = 32) uniform float revolutionSpeed;  // crests per second
+// Needs lib/frame.glsl for the time. Uniform locations in lib/locations.glsl (issue 6's range).
+#include "lib/locations.glsl"
+layout(location = REVOLUTION_ENABLED_LOCATION) uniform int revolutionEnabled;  // 0: an ordinary mesh
+layout(location = REVOLUTION_SHAPE_LOCATION) uniform vec4 revolutionShape;     // radius, height, amplitude, waves
+layout(location = REVOLUTION_SPEED_LOCATION) uniform float revolutionSpeed;    // crests per second
 
 const float kRevolutionTwoPi = 6.28318530718;
 

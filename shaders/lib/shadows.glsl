@@ -1,6 +1,6 @@
 // Shadow and ambient-occlusion factors (docs/shadows.md). lib/lighting.glsl multiplies them
 // into its terms, so every technique applies them the same way. render/ShadowMaps.cpp and
-// render/Ssao.cpp fill the maps; render/Shadowing.h has the same std140 layout for the block.
+// render/Ssao.cpp fill the maps; render/ShadowMaps.h (ShadowingUniforms) has the same std140 layout for the block.
 #include "lib/bindings.glsl"
 layout(std140, binding = SHADOWING_BLOCK_BINDING) uniform Shadowing {
     mat4 directionalShadowMatrix;  // world position -> shadow-map uv (xy) and depth (z), all in [0, 1]

@@ -1,4 +1,4 @@
-// Instanced drawing of the scene (render/GpuScene.cpp, shaders/lib/instances.glsl): the
+// Instanced drawing of the scene (render/DrawList.cpp, shaders/lib/instances.glsl): the
 // default scene's draw items collapse into a few instanced draws, and the GL really draws
 // every item (a primitives-generated query counts the triangles). Work counts, so exact.
 #include <gtest/gtest.h>

@@ -203,7 +203,7 @@ TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
     EXPECT_NE(plain.id(), textured.id());
     EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0}), &plain);
     // The normal map's scale is a uniform only of the programs that sample a normal map
-    // (render/GpuScene.cpp sets it only for them).
+    // (render/DrawList.cpp sets it only for them).
     EXPECT_EQ(glGetUniformLocation(textured.id(), "materialNormalScale"), -1);
     const gl::Program& normalMapped = program.variant(LightingFeatures{}, LightSource::StorageBuffer, kNormalMapBit);
     EXPECT_NE(glGetUniformLocation(normalMapped.id(), "materialNormalScale"), -1);

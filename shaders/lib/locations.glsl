@@ -1,0 +1,32 @@
+// Uniform locations that the C++ code sets by number (gl::Program::set) in the shaders whose
+// numbers used to be written twice: the one table the shaders (which include this file) and
+// the C++ code (render/Locations.h includes it as C++) both read. Written in the common
+// subset of GLSL and C++ (const int). Numbers are per program: two names share one only where
+// no program has both (each line says which shaders use it).
+
+// lib/material.glsl (render/DrawList.cpp binds a material's maps). The transforms are mat3x2,
+// two locations each, after the light batch's location 40 (render/LightBatches.h).
+const int MATERIAL_NORMAL_SCALE_LOCATION = 15;
+const int MATERIAL_METALLIC_ROUGHNESS_LOCATION = 16;
+const int DIFFUSE_UV_TRANSFORM_LOCATION = 50;  // also shadow_depth.frag's
+const int SPECULAR_UV_TRANSFORM_LOCATION = 53;  // also the metallic-roughness map's
+const int NORMAL_UV_TRANSFORM_LOCATION = 56;
+const int EMISSIVE_UV_TRANSFORM_LOCATION = 59;
+const int OPACITY_UV_TRANSFORM_LOCATION = 62;
+
+// lib/revolution.glsl and lib/instances.glsl (issue 6's range), for mesh.vert and
+// shadow_depth.vert.
+const int REVOLUTION_ENABLED_LOCATION = 30;
+const int REVOLUTION_SHAPE_LOCATION = 31;
+const int REVOLUTION_SPEED_LOCATION = 32;
+const int INSTANCE_BASE_LOCATION = 33;
+
+// shadow_depth.vert (render/ShadowMaps.cpp).
+const int LIGHT_VIEW_PROJECTION_LOCATION = 20;
+
+// tiled_quads.vert (render/TiledQuadsTechnique.cpp).
+const int TILE_FIRST_QUAD_LOCATION = 0;
+const int TILES_X_LOCATION = 1;
+const int TILE_SIZE_LOCATION = 2;
+const int TILE_VIEWPORT_SIZE_LOCATION = 3;
+const int TILES_AS_POINTS_LOCATION = 4;
