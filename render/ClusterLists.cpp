@@ -122,8 +122,10 @@ void ClusterLists::plan(std::uint32_t pairs)
             texels_ ? gl::BufferTexture("cluster list texels", GL_R32UI, lights_[i]) : gl::BufferTexture();
 }
 
-void ClusterLists::build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount)
+void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
 {
+    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
+    sceneTexels_ = scene.indexedLightSource() == LightSource::TexelBuffer;
     lightCount_ = lightCount;
     const std::uint32_t clusters = grid.clusterCount();
     const auto tiles = static_cast<std::uint32_t>(grid.gridWidth() * grid.gridHeight());
@@ -246,7 +248,7 @@ void ClusterLists::bind() const
     clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
     clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
     lights_[sorted_].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
-    if (texels_)
+    if (readsTexels())
         lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
@@ -256,7 +258,7 @@ void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid
     if (laterParts_ == 0)
         return;
     const LightSource source = scene.indexedLightSource();
-    const gl::Program& program = longLighting_[texels_ ? 1 : 0].variant(scene.lightingFeatures(), source);
+    const gl::Program& program = longLighting_[readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
     for (std::uint32_t part = 1; part <= laterParts_; ++part)
         passes.run({.name = "lighting",
                     .sampled = Resource::GBuffer,

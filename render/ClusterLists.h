@@ -59,14 +59,15 @@ public:
     // `lightingDefines` (the technique's, render/Technique.h shaderDefines).
     ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines);
 
-    // Builds the frame's lists for the first `lightCount` lights of the scene (bound by the
-    // passes) over `grid`, fitted to the frame's surfaces already. Passes named "clusters".
-    void build(FramePasses& passes, const ClusterGrid& grid, std::uint32_t lightCount);
+    // Builds the frame's lists for the scene's lights (bound by the passes) over `grid`, fitted
+    // to the frame's surfaces already.
+    void build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid);
     // Binds what the lighting programs read: the lists and the long lists' tiles.
     void bind() const;
-    // Whether the lighting reads the lists as R32UI texels (where the driver's texture buffers
-    // hold the planned storage), and so needs programs built with clusterListDefines(.., true).
-    bool readsTexels() const { return texels_; }
+    // Whether the lighting reads the lists as R32UI texels, and so needs programs built with
+    // clusterListDefines(.., true): where the scene reads its lights from texels too
+    // (RendererDesc::lightTexels) and the driver's texture buffers hold the planned storage.
+    bool readsTexels() const { return texels_ && sceneTexels_; }
     // After the lighting of part 0 of every list: the later parts of the long lists, as many
     // as planned for this frame, each an indirect dispatch of list_lighting.comp over the tiles
     // that have them, adding to the lit image. Passes named "lighting".
@@ -124,7 +125,8 @@ private:
     gl::Buffer lights_[2];
     int sorted_ = 0;                    // which of lights_ holds the sorted lists
     gl::BufferTexture lightTexels_[2];  // lights_ as R32UI texels, where texels_
-    bool texels_ = false;
+    bool texels_ = false;               // the driver's texture buffers hold the storage
+    bool sceneTexels_ = false;          // the scene of the last build reads its lights from texels
     gl::Buffer clusterCounts_;
     gl::Buffer clusterFirsts_;
     gl::Buffer longListTiles_;

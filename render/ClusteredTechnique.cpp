@@ -33,8 +33,8 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
         grid_.resize(targets.width, targets.height, 0);
         grid_.fitToSurfaces();
     });
+    lists_.build(scene, passes, grid_);
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
-    lists_.build(passes, grid_, lightCount);
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();
     const LightBatch allLights{0, lightCount};

@@ -30,7 +30,7 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
         grid_.resize(targets.width, targets.height, 0);
         grid_.fitToSurfaces();
     });
-    lists_.build(passes, grid_, static_cast<std::uint32_t>(scene.lightCount()));
+    lists_.build(scene, passes, grid_);
     const gl::Program& program =
         lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
     passes.run({.name = "lighting",
