@@ -31,6 +31,10 @@ static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopI
 static_assert(kClusterListPart + 1024 < kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
 constexpr std::uint32_t kMinimumCapacity = 1u << 16;
+// The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the
+// default scene has 6 per cluster at 1280x720, the courtyard 8 to 13 from 1,024 to 1,048,576
+// lights), so that a single image is rarely rendered twice.
+constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
 gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
 {
@@ -97,7 +101,6 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
                                     clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT)
 {
-    plan(kMinimumCapacity);
 }
 
 void ClusterLists::plan(std::uint32_t pairs)
@@ -128,6 +131,8 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     sceneTexels_ = scene.indexedLightSource() == LightSource::TexelBuffer;
     lightCount_ = lightCount;
     const std::uint32_t clusters = grid.clusterCount();
+    if (capacity_ == 0)
+        plan(clusters * kFirstPlanPairsPerCell);
     const auto tiles = static_cast<std::uint32_t>(grid.gridWidth() * grid.gridHeight());
     ensure(clusterCounts_, "cluster list counts", clusters);
     ensure(clusterFirsts_, "cluster list firsts", clusters);
