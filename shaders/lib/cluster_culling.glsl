@@ -82,7 +82,8 @@ uint lightSlicesOfTile(ViewLight light, uint tile)
 #endif
     if (!lightTouchesBox(light, lo, hi))
         return 0u;
-    if (light.unbounded)
+    // A grid of one slice per tile (tiled's) has tested its one box already.
+    if (light.unbounded || CLUSTER_SLICES == 1)
         return slices;
     // Only the slices within the sphere's depth span: a surface the light reaches lies within
     // its radius in depth too (courtyard, 4096 lights: 15 -> 12 ms, fewer box tests). The
