@@ -75,7 +75,7 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
         masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
     if (!summaries_ || summaries_.size() < summaryBytes)
         summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
-    const std::size_t boundsBytes = 2 * 4 * sizeof(float) * (clusterCount_ + tiles);
+    const std::size_t boundsBytes = 2 * 4 * sizeof(float) * clusterCount_;
     if (shape_.surfaceBounds && (!bounds_ || bounds_.size() != boundsBytes))
         bounds_ = gl::Buffer("cluster surface bounds", boundsBytes, nullptr, 0);
 }

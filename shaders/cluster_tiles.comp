@@ -1,15 +1,16 @@
 #version 450 core
-// Clustered, once per frame: one invocation per tile finds the nearest and farthest surface
-// seen through the tile (its slices divide that range), then marks the slices that hold a
-// pixel's surface. Only those get lights. With CLUSTER_SURFACE_BOUNDS it also keeps, per
-// occupied cluster and per tile, the view-space box around their surfaces (lib/clusters.glsl),
-// which the light lists test lights against (lib/cluster_culling.glsl).
+// A cluster grid fitted to the surfaces, once per frame (clustered, tiled): one invocation per
+// tile finds the nearest and farthest surface seen through the tile (its slices divide that
+// range), then marks the slices that hold a pixel's surface. Only those get lights. With
+// CLUSTER_SURFACE_BOUNDS it also keeps, per occupied cluster, the view-space box around its
+// surfaces (lib/clusters.glsl), which the light lists test lights against
+// (lib/cluster_culling.glsl).
 // A thread per tile walking its pixels, rather than a workgroup per tile meeting at
 // barriers: llvmpipe runs barriers by switching between the workgroup's invocations, which
 // cost more than the walk. The first walk keeps each pixel's view-space position for the
 // second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
-// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels and three of the slices:
-// 2 · (256 + 17) + 3 · 32 at most.
+// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels and two of the slices:
+// 2 · (256 + 17) + 2 · 32 at most.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 #include "lib/light_batch.glsl"
@@ -96,8 +97,6 @@ void main()
 #ifdef CLUSTER_SURFACE_BOUNDS
     // Grown by a little more than a view-space coordinate's rounding, so that a surface the
     // lighting pass finds in reach (in world space) is inside its cluster's box too.
-    vec3 tileLoBound = vec3(3.0e38);
-    vec3 tileHiBound = vec3(-3.0e38);
     uint clusterBase = tile * uint(CLUSTER_SLICES);
     for (int k = 0; k < CLUSTER_SLICES; ++k) {
         if ((occupied & (1u << uint(k))) == 0u)
@@ -105,11 +104,6 @@ void main()
         vec3 margin = vec3(1e-5) + 1e-5 * max(abs(lo[k]), abs(hi[k]));
         clusterBounds[2u * (clusterBase + uint(k))] = vec4(lo[k] - margin, 0.0);
         clusterBounds[2u * (clusterBase + uint(k)) + 1u] = vec4(hi[k] + margin, 0.0);
-        tileLoBound = min(tileLoBound, lo[k] - margin);
-        tileHiBound = max(tileHiBound, hi[k] + margin);
     }
-    uint tileBase = 2u * (grid.x * grid.y * uint(CLUSTER_SLICES) + tile);
-    clusterBounds[tileBase] = vec4(tileLoBound, 0.0);
-    clusterBounds[tileBase + 1u] = vec4(tileHiBound, 0.0);
 #endif
 }

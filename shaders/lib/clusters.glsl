@@ -20,9 +20,8 @@ layout(std430, binding = CLUSTER_TILE_SLICES_BUFFER_BINDING) buffer ClusterTileS
     uint tileOccupiedSlices[];  // bit k: slice k holds at least one pixel's surface
 };
 #ifdef CLUSTER_SURFACE_BOUNDS
-// The view-space box around the surfaces each occupied cluster holds, and each tile's around
-// all of its surfaces, set by cluster_tiles.comp: [2 · c] the low corner, [2 · c + 1] the high
-// one, clusters first, then the tiles. Far tighter than the frustum's section where lights
+// The view-space box around the surfaces each occupied cluster holds, set by
+// cluster_tiles.comp: [2 · c] the low corner, [2 · c + 1] the high one. Far tighter than the frustum's section where lights
 // are small: a light floating above the ground misses the box of the ground's pixels though
 // it reaches into their slice of the frustum.
 layout(std430, binding = CLUSTER_BOUNDS_BUFFER_BINDING) buffer ClusterBounds {
