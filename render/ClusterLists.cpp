@@ -25,8 +25,12 @@ constexpr int kSortChunksLocation = 56;
 constexpr int kSortCapacityLocation = 57;
 constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // The most tiles one invocation of cluster_pairs.comp walks for a light; lights covering
-// more are wide, a workgroup each (lib/light_tiles.glsl).
-constexpr std::uint32_t kNarrowLightTiles = 32;
+// more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64 measured alike
+// on the courtyard (256 was slower for clustered at 1,024 lights, its lanes out of step); 64
+// keeps 131,072 lights of 36 tiles each (tests/scenes/lights_on_one_spot.json, tiled) narrow:
+// as 262,144 workgroups they took 21 s and 20 GB under AddressSanitizer, whose allocator
+// llvmpipe's per-workgroup allocations then go through.
+constexpr std::uint32_t kNarrowLightTiles = 64;
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
 static_assert(kClusterListPart + 1024 < kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
