@@ -1,10 +1,11 @@
-// The clustered technique's light lists (issue 29): per cluster of a ClusterGrid, the lights
-// that may reach it, built on the GPU every frame in one sequence whatever the light count,
-// and read by one lighting pass (shaders/lib/cluster_lists.glsl).
+// The light lists of the clustered and tiled techniques (issue 29): per cluster of a
+// ClusterGrid, the lights that may reach it, built on the GPU every frame in one sequence
+// whatever the light count, and read by one lighting pass (shaders/lib/cluster_lists.glsl).
 //
-// The sequence (each step a pass named "clusters", like the grid's fit):
-// 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light
-//    and band of tile rows, the culling tests of lib/cluster_culling.glsl.
+// The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
+// 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
+//    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
+//    culling tests of lib/cluster_culling.glsl.
 // 2. A scan (render/GpuScan.h) of the counts gives each light its first slot, and the total.
 // 3. cluster_pairs.comp again writes the pairs there and counts each cluster's.
 // 4. cluster_long_lists.comp notes the longest list and the tiles of lists longer than a part.
