@@ -68,12 +68,12 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
-    const std::size_t words = std::max<std::size_t>(maskWordsFor(largestBatch), 1);
+    const std::size_t words = shape_.surfaceBounds ? 0 : std::max<std::size_t>(maskWordsFor(largestBatch), 1);
     const std::size_t maskBytes = sizeof(std::uint32_t) * clusterCount_ * words;
     const std::size_t summaryBytes = sizeof(std::uint32_t) * clusterCount_ * maskWordsFor(words);
-    if (!masks_ || masks_.size() < maskBytes)
+    if (words > 0 && (!masks_ || masks_.size() < maskBytes))
         masks_ = gl::Buffer("cluster light masks", maskBytes, nullptr, 0);
-    if (!summaries_ || summaries_.size() < summaryBytes)
+    if (words > 0 && (!summaries_ || summaries_.size() < summaryBytes))
         summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
     const std::size_t boundsBytes = 2 * 4 * sizeof(float) * clusterCount_;
     if (shape_.surfaceBounds && (!bounds_ || bounds_.size() != boundsBytes))
@@ -84,8 +84,10 @@ void ClusterGrid::bind() const
 {
     tileDepthRanges_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileDepthRangesBinding);
     tileSlices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileSlicesBinding);
-    masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
-    summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+    if (masks_) {
+        masks_.bindBase(GL_SHADER_STORAGE_BUFFER, kMasksBinding);
+        summaries_.bindBase(GL_SHADER_STORAGE_BUFFER, kSummariesBinding);
+    }
     if (bounds_)
         bounds_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_BOUNDS_BUFFER_BINDING);
 }
@@ -131,6 +133,7 @@ void ClusterGrid::coverDepthRanges(const std::vector<glm::vec2>& ranges)
 
 void ClusterGrid::assignLights(const LightBatch& batch)
 {
+    ML_ASSERT(masks_);  // a grid with surface bounds lists its lights (ClusterLists) instead
     // The draws that read the masks of the previous build are done with them: the pass waits
     // for them (FramePasses: llvmpipe queues draws but clears buffers and runs compute passes
     // at once; without the wait a transparent layer drawn before a rebuild read the next

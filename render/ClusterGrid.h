@@ -1,13 +1,14 @@
-// The cluster grid of shaders/lib/clusters.glsl: screen tiles of kClusterTileSize pixels, each
-// cut into kClusterSlices depth slices spaced exponentially over a depth range of its own, and
-// per cluster a bit mask over a light batch. Two users fill it differently:
-// - the clustered technique fits each tile's range to the opaque surfaces seen through it and
-//   gives lights only to the slices that hold one (fitToSurfaces): Olsson et al.'s compaction;
+// The cluster grid of shaders/lib/clusters.glsl: screen tiles of a shape's size, each cut into
+// depth slices spaced exponentially over a depth range of its own. Two users fill it differently:
+// - clustered and tiled fit each tile's range to the opaque surfaces seen through it and give
+//   lights only to the slices that hold one (fitToSurfaces): Olsson et al.'s compaction; they
+//   keep each cluster's surface box and list its lights with render/ClusterLists.h;
 // - the transparency pass (render/TransparencyPass.h) needs lights wherever a transparent
 //   surface may be, in front of, between or beyond the opaque ones: each tile spans the
-//   depths of the transparent objects over it, and every slice is occupied (coverDepthRanges).
-// The masks have a fixed size (a bit per light of the batch), so no light can be dropped,
-// nothing is read back and no pass loops more than a bounded number of times.
+//   depths of the transparent objects over it, every slice is occupied (coverDepthRanges), and
+//   each cluster has a bit mask over a light batch (assignLights). The masks have a fixed
+//   size (a bit per light of the batch), so no light can be dropped, nothing is read back and
+//   no pass loops more than a bounded number of times.
 #pragma once
 
 #include <cstdint>
@@ -52,7 +53,8 @@ public:
     // a grid of kClusterTileSize tiles.
     static std::uint32_t lightsPerBatch(int width, int height, int slices = kClusterSlices);
 
-    // Sizes the buffers for the image and the frame's largest light batch.
+    // Sizes the buffers for the image and, for a grid with masks, the frame's largest light
+    // batch. A grid with surface bounds has none: its lights are listed by ClusterLists.
     void resize(int width, int height, std::uint32_t largestBatch);
     // Binds the buffers at lib/clusters.glsl's binding points.
     void bind() const;

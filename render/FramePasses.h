@@ -29,7 +29,7 @@ enum class Resource : std::uint8_t {
     LitImage = 1,  // FrameTargets::lit (and the depth it is drawn with)
     // FrameTargets::gbuffer, the scene's depth, and what SSAO computes from them (render/Ssao.h)
     GBuffer = 2,
-    LightGrid = 4,   // a cluster grid's buffers (render/ClusterGrid.h), tiled's coarse tile masks
+    LightGrid = 4,   // a cluster grid's buffers (render/ClusterGrid.h) and its light lists (render/ClusterLists.h)
     WorkCounts = 8,  // the work-counting images and counters (--count-work)
 };
 inline constexpr int kResourceKinds = 4;

@@ -1,7 +1,7 @@
-// The passes that set each light's bit in per-tile masks: the cluster assignment
-// (render/ClusterGrid.h) and tiled's coarse tiles (render/TiledTechnique.h). Their shaders
-// include shaders/lib/light_tiles.glsl: one workgroup of kLightTileLanes invocations per
-// (light, band of tile rows), the invocations sharing out the light's tiles.
+// The passes that give lights to tiles a workgroup per light: the transparency grid's masks
+// (render/ClusterGrid.h) and the wide lights' pairs of the light lists (render/ClusterLists.h).
+// Their shaders include shaders/lib/light_tiles.glsl: one workgroup of kLightTileLanes
+// invocations per (light, band of tile rows), the invocations sharing out the light's tiles.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 #version 450 core
-// Clustered, once per light batch: the lights' bits in the masks of the clusters they
-// reach. One workgroup per (light, band of rows of tiles), its invocations sharing out the
+// The transparency grid, once per light batch: the lights' bits in the masks of the clusters
+// they reach. One workgroup per (light, band of rows of tiles), its invocations sharing out the
 // tiles the light's bounding sphere covers on screen (lib/light_tiles.glsl), each testing, in
 // its tiles, the occupied slices within the sphere's depth span whose box the sphere (and a
 // spot's cone) reaches. Loop iterations per invocation: at most 1,024 tiles (the bands of

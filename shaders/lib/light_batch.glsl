@@ -10,7 +10,7 @@ bool isFirstLightBatch()
 }
 
 // The words of a bit mask over the batch's lights (bit i: light lightBatch.x + i), as the
-// clusters, tiled's coarse tiles and tiles and the in-range count keep them, and of its
+// transparency grid's clusters and the in-range count keep them, and of its
 // summary (bit w % 32 of word w / 32: mask word w is not empty).
 uint lightBatchMaskWords()
 {

@@ -1,5 +1,5 @@
-// The screen tiles a light's bounding sphere covers, for the passes that set each light's bit
-// in per-tile masks (cluster_assign.comp, tiled_coarse.comp): one workgroup of
+// The screen tiles a light's bounding sphere covers, for the passes that give a light to
+// tiles a workgroup per light (cluster_assign.comp, cluster_pairs.comp's wide lights): one workgroup of
 // LIGHT_TILE_LANES invocations per (light, band of rows of tiles), its invocations sharing
 // out the light's tiles in the band (tile i of the run to invocation i % LIGHT_TILE_LANES).
 //

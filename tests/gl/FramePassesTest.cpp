@@ -5,23 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "GlContextTest.h"
-#include "render/FramePasses.h"
-#include "render/GpuScene.h"
-#include "scene/LightSets.h"
-#include "scene/SceneLoader.h"
+#include "OnePlaneFrameTest.h"
 
 namespace manylights {
 namespace {
 
-class FramePassesTest : public GlContextTest {
-protected:
-    const Scene scene_ =
-        parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<frame passes test>", ".");
-    GpuScene gpuScene_{scene_, expandLights(scene_), driverChoices(DriverProfile::Auto)};
-    FrameTargets targets_{32, 32};
-    PassProfiler profiler_;
-};
+class FramePassesTest : public OnePlaneFrameTest {};
 
 constexpr Pass kComputeStoresLit{.name = "store", .images = Resource::LitImage, .writes = Resource::LitImage};
 constexpr Pass kSamplesLit{.name = "sample", .target = Resource::GBuffer, .sampled = Resource::LitImage};

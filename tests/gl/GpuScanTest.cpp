@@ -8,25 +8,13 @@
 #include <random>
 #include <vector>
 
-#include "GlContextTest.h"
-#include "render/Bindings.h"
-#include "render/FramePasses.h"
+#include "OnePlaneFrameTest.h"
 #include "render/GpuScan.h"
-#include "render/GpuScene.h"
-#include "scene/LightSets.h"
-#include "scene/SceneLoader.h"
 
 namespace manylights {
 namespace {
 
-class GpuScanTest : public GlContextTest {
-protected:
-    const Scene scene_ =
-        parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<scan test>", ".");
-    GpuScene gpuScene_{scene_, expandLights(scene_), driverChoices(DriverProfile::Auto)};
-    FrameTargets targets_{8, 8};
-    PassProfiler profiler_;
-};
+class GpuScanTest : public OnePlaneFrameTest {};
 
 TEST_F(GpuScanTest, EqualsTheSumOfEverythingBeforeAtEveryLevel)
 {
