@@ -52,15 +52,19 @@ gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
     return defines;
 }
 
-gl::Defines sortDefines(bool scatter)
+enum class SortPass { Count, Scatter, ScatterGather };
+
+gl::Defines sortDefines(SortPass pass)
 {
     gl::Defines defines = {{"PAIR_SORT_SHIFT_LOCATION", std::to_string(kSortShiftLocation)},
                            {"PAIR_SORT_CHUNKS_LOCATION", std::to_string(kSortChunksLocation)},
                            {"PAIR_SORT_CAPACITY_LOCATION", std::to_string(kSortCapacityLocation)},
                            {"PAIR_SORT_CHUNK", std::to_string(kSortChunk)},
                            {"PAIR_SORT_RADIX", std::to_string(1 << kSortRadixBits)}};
-    if (scatter)
+    if (pass != SortPass::Count)
         defines.emplace_back("PAIR_SORT_SCATTER", "1");
+    if (pass == SortPass::ScatterGather)
+        defines.emplace_back("PAIR_SORT_GATHER", "1");
     return defines;
 }
 
@@ -97,8 +101,10 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
       widePairs_("cluster pairs of wide lights", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, true)),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
-      sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(false)),
-      sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(true)),
+      sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
+      sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Scatter)),
+      sortScatterGather_("pair sort scatter with spheres", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
+                         sortDefines(SortPass::ScatterGather)),
       longLighting_{LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
                                     clusterListDefines(clusterGridDefines(lightingDefines, shape), false)),
                     LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
@@ -120,6 +126,7 @@ void ClusterLists::plan(std::uint32_t pairs)
         keys_[i] = gl::Buffer("cluster pair keys", bytesOf(capacity_), nullptr, 0);
         lights_[i] = gl::Buffer("cluster pair lights", bytesOf(capacity_), nullptr, 0);
     }
+    spheres_ = gl::Buffer("cluster pair spheres", std::size_t{capacity_} * sizeof(float) * 4, nullptr, 0);
     const std::uint32_t chunks = (capacity_ + kSortChunk - 1) / kSortChunk;
     histogram_ = gl::Buffer("pair sort histogram", bytesOf(chunks << kSortRadixBits), nullptr, 0);
     // GL promises texture buffers of 65,536 texels only; desktop drivers have 2^27.
@@ -127,6 +134,7 @@ void ClusterLists::plan(std::uint32_t pairs)
     for (int i = 0; i < 2; ++i)
         lightTexels_[i] =
             texels_ ? gl::BufferTexture("cluster list texels", GL_R32UI, lights_[i]) : gl::BufferTexture();
+    sphereTexels_ = texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
 void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
@@ -235,6 +243,7 @@ void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
             lights_[from].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
             keys_[to].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_OUT_BUFFER_BINDING);
             lights_[to].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_LIGHTS_OUT_BUFFER_BINDING);
+            spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
         };
         const auto dispatch = [&](const gl::Program& program) {
             bindPairs();
@@ -246,7 +255,8 @@ void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
         };
         passes.run(listPass("pair sort"), [&] { dispatch(sortCount_); });
         scan_.run(passes, "pair sort", histogram_, chunks << kSortRadixBits);
-        passes.run(listPass("pair sort"), [&] { dispatch(sortScatter_); });
+        const bool lastDigit = shift + kSortRadixBits >= keyBits;
+        passes.run(listPass("pair sort"), [&] { dispatch(lastDigit ? sortScatterGather_ : sortScatter_); });
         sorted_ = to;
     }
 }
@@ -257,8 +267,11 @@ void ClusterLists::bind() const
     clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
     clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
     lights_[sorted_].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
-    if (readsTexels())
+    spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
+    if (readsTexels()) {
         lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
+        sphereTexels_.bindUnit(bindings::CLUSTER_LIST_SPHERES_UNIT);
+    }
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
 
@@ -308,7 +321,7 @@ std::size_t ClusterLists::memoryBytes() const
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
          {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
-          &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+          &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;
 }

@@ -12,7 +12,8 @@
 // 5. A scan of the clusters' counts gives each list its first entry.
 // 6. A stable radix sort by cluster (pair_sort.comp and the scan, kSortRadixBits a digit)
 //    puts each cluster's lights together, in the lights' order: the sum over a pixel's lights
-//    runs in one order on every run, so the image is a function of the scene alone.
+//    runs in one order on every run, so the image is a function of the scene alone. Its last
+//    digit also copies each pair's light sphere beside it, for the lighting's reach test.
 // Sorted pairs rather than bit masks over light batches (the grid's other user, the
 // transparency pass, keeps masks): a mask costs a bit per light for every cluster, so a frame
 // of a million lights needed 128 batches, each a mask clear, an assignment and a lighting pass
@@ -109,6 +110,7 @@ private:
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
+    gl::Program sortScatterGather_;  // the last digit: with the lights' spheres
     LightingProgram longLighting_[2];  // without and with the list texels
     GpuScan scan_;
 
@@ -126,6 +128,8 @@ private:
     gl::Buffer lights_[2];
     int sorted_ = 0;                    // which of lights_ holds the sorted lists
     gl::BufferTexture lightTexels_[2];  // lights_ as R32UI texels, where texels_
+    gl::Buffer spheres_;                // the sorted pairs' light spheres (vec4)
+    gl::BufferTexture sphereTexels_;    // spheres_ as RGBA32F texels, where texels_
     bool texels_ = false;               // the driver's texture buffers hold the storage
     bool sceneTexels_ = false;          // the scene of the last build reads its lights from texels
     gl::Buffer clusterCounts_;

@@ -6,7 +6,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const D
     : scene_(scene),
       driver_(driver),
       lights_(lights, scene.attenuationThreshold, driver),
-      draws_(scene, lights, driver),
+      draws_(scene, lights_.rest(), driver),  // the markers follow the lights in the lights' order
       frame_(scene, lights.size()),
       features_(lightingFeaturesOf(lights, scene.directional))
 {

@@ -7,6 +7,7 @@
 #include "render/Bindings.h"
 #include "scene/Animation.h"
 #include "scene/Falloff.h"
+#include "scene/SpatialOrder.h"
 
 namespace manylights {
 
@@ -36,31 +37,70 @@ GpuLight packLight(const Light& light, float attenuationThreshold)
     return packed;
 }
 
+namespace {
+
+// The lights in the order of their rest positions along a Morton curve (scene/SpatialOrder.h).
+std::vector<Light> inSpatialOrder(const std::vector<Light>& lights)
+{
+    std::vector<glm::vec3> positions;
+    positions.reserve(lights.size());
+    for (const Light& light : lights)
+        positions.push_back(light.position);
+    std::vector<Light> ordered;
+    ordered.reserve(lights.size());
+    for (std::size_t i : mortonOrder(positions))
+        ordered.push_back(lights[i]);
+    return ordered;
+}
+
+// Runs of animated lights closer than this are uploaded as one range: fewer calls for a few
+// more bytes.
+constexpr std::size_t kUploadRunGap = 64;
+
+}  // namespace
+
 SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver)
-    : rest_(lights),
-      posed_(lights),
+    : rest_(inSpatialOrder(lights)),
+      posed_(rest_),
       attenuationThreshold_(attenuationThreshold),
       texelsBeforeWindows_(driver.lightTexelsBeforeWindows)
 {
-    packed_.reserve(lights.size());
-    for (const Light& light : lights)
-        packed_.push_back(packLight(light, attenuationThreshold_));
-    // Dynamic storage: pose() rewrites it every frame of an animation.
-    // Whole windows (bindWindow), so that every window bound is backed by the buffer.
+    packed_.reserve(rest_.size());
+    for (std::size_t i = 0; i < rest_.size(); ++i) {
+        packed_.push_back(packLight(rest_[i], attenuationThreshold_));
+        if (rest_[i].animation)
+            animated_.push_back(i);
+    }
+    // Whole windows (bindWindow), so that every window bound is backed by the buffer. Dynamic
+    // storage: pose() rewrites the animated lights' part every frame of an animation.
     const std::size_t windows = std::max<std::size_t>(1, (packed_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
     buffer_ = gl::Buffer("lights", windows * kLightWindowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (!packed_.empty())
+        buffer_.update(0, packed_.size() * sizeof(GpuLight), packed_.data());
     setTexels(true);
     pose(0.0);
 }
 
 void SceneLights::pose(double t)
 {
-    for (std::size_t i = 0; i < rest_.size(); ++i)
+    // Lights at rest were packed and uploaded once: a frame pays for the lights that move.
+    if (animated_.empty() || (posedOnce_ && t == posedAt_))
+        return;
+    for (std::size_t i : animated_) {
         posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, t);
-    for (std::size_t i = 0; i < posed_.size(); ++i)
         packed_[i] = packLight(posed_[i], attenuationThreshold_);
-    if (!packed_.empty())
-        buffer_.update(0, packed_.size() * sizeof(GpuLight), packed_.data());
+    }
+    for (std::size_t run = 0; run < animated_.size();) {
+        std::size_t end = run + 1;
+        while (end < animated_.size() && animated_[end] - animated_[end - 1] <= kUploadRunGap)
+            ++end;
+        const std::size_t first = animated_[run];
+        const std::size_t count = animated_[end - 1] + 1 - first;
+        buffer_.update(first * sizeof(GpuLight), count * sizeof(GpuLight), &packed_[first]);
+        run = end;
+    }
+    posedOnce_ = true;
+    posedAt_ = t;
     ++version_;
 }
 

@@ -36,9 +36,15 @@ public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights),
     // at rest; `attenuationThreshold` the scene's (its classic lights' radii). `driver`: the
     // driver profile's choices (render/DriverProfile.h). Posed at time 0, with light texels.
+    // The lights are kept, and given to the shaders, in the order of their rest positions
+    // along a Morton curve (scene/SpatialOrder.h), not in `lights`' order: a cluster's lights
+    // are then neighbours in memory (docs/techniques.md, "The light lists of tiled and
+    // clustered"). Every index below is into that order.
     SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver);
 
-    // Poses the lights at time t (scene/Animation.h) and updates the buffer (one update).
+    // Poses the lights at time t (scene/Animation.h): repacks and uploads the animated lights
+    // only (a run of them per buffer update), and nothing when none animates or t is the last
+    // pose's. The version changes only when something moved.
     void pose(double t);
 
     std::size_t count() const { return rest_.size(); }
@@ -86,6 +92,9 @@ private:
     std::vector<Light> rest_;   // their animations move them
     std::vector<Light> posed_;  // at the last pose()
     std::vector<GpuLight> packed_;
+    std::vector<std::size_t> animated_;  // the lights with an animation, in order
+    bool posedOnce_ = false;
+    double posedAt_ = 0.0;
     float attenuationThreshold_;
     bool texelsBeforeWindows_;
     std::uint64_t version_ = 0;

@@ -10,8 +10,18 @@
 // lights stay in the order the lights were written in (cluster_pairs.comp) and the image does
 // not depend on the order in which invocations ran. Loop iterations: PAIR_SORT_CHUNK plus
 // 2 · PAIR_SORT_RADIX.
+//
+// With PAIR_SORT_GATHER too (the last digit), each pair's light sphere goes beside it: the
+// lighting's per-pixel reach test then reads the lists' spheres in order instead of the
+// lights' positions scattered over the light buffer (lib/cluster_lists.glsl).
 #include "lib/bindings.glsl"
 #include "lib/cluster_list_status.glsl"
+#ifdef PAIR_SORT_GATHER
+#include "lib/lights.glsl"
+layout(std430, binding = CLUSTER_LIST_SPHERES_BUFFER_BINDING) writeonly buffer PairSpheresOut {
+    vec4 sphereOut[];
+};
+#endif
 
 layout(local_size_x = 64) in;
 layout(location = PAIR_SORT_SHIFT_LOCATION) uniform uint shift;
@@ -59,7 +69,11 @@ void main()
 #ifdef PAIR_SORT_SCATTER
         uint to = place[d]++;
         keyOut[to] = key;
-        lightOut[to] = lightIn[i];
+        uint lightIndex = lightIn[i];
+        lightOut[to] = lightIndex;
+#ifdef PAIR_SORT_GATHER
+        sphereOut[to] = lights[lightIndex].positionRadius;
+#endif
 #else
         ++place[d];
 #endif

@@ -40,6 +40,7 @@ const int CLUSTER_LIST_FIRSTS_BUFFER_BINDING = 23;   // lib/cluster_lists.glsl
 const int CLUSTER_LONG_TILES_BUFFER_BINDING = 24;    // cluster_long_lists.comp, list_lighting.comp
 const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
+const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; pair_sort.comp PairSpheresOut
 
 // Texture units. 0-4 are the G-buffer's targets (render/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
@@ -54,6 +55,7 @@ const int SCENE_DEPTH_UNIT = 5;       // sceneDepth of the compute passes
 const int DIFFUSE_MAP_UNIT = 6;       // lib/material.glsl, shadow_depth.frag
 const int CLUSTER_LIST_TEXELS_UNIT = 6;  // lib/cluster_lists.glsl clusterListTexels (no material maps there)
 const int SPECULAR_MAP_UNIT = 7;      // lib/material.glsl (or the metallic-roughness map)
+const int CLUSTER_LIST_SPHERES_UNIT = 7;  // lib/cluster_lists.glsl clusterListSphereTexels (no material maps there)
 const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl

@@ -9,9 +9,11 @@
 // surface lies in the light's sphere, the same test as lib/lighting.glsl's lightReach (so it
 // only skips pairs whose A · S is zero). A cluster is a tile of pixels by a depth slice; a
 // light far smaller than that (the courtyard at a million lights: ranges of 0.1 to 0.2 m, a
-// few pixels) reaches few of its pixels, and the test costs one texel fetch and a length
-// where shading costs four fetches and the BRDF. Only the lights that pass are counted as
-// evaluated (--count-work); the entries walked are counted too, as cluster_list_visits.
+// few pixels) reaches few of its pixels. The lists carry each light's sphere beside its index
+// (pair_sort.comp gathers them), so the test costs one fetch, in list order, and a length;
+// the light's index and the rest of it are fetched only for the lights that pass. Only those
+// are counted as evaluated (--count-work); the entries walked are counted too, as
+// cluster_list_visits.
 // Needs lib/lighting.glsl and lib/clusters.glsl first.
 
 #ifdef COUNT_WORK
@@ -24,25 +26,39 @@ layout(std430, binding = CLUSTER_LIST_FIRSTS_BUFFER_BINDING) readonly buffer Clu
     uint clusterListFirst[];
 };
 #ifdef CLUSTER_LIST_TEXELS
-// The lists' lights as R32UI texels (render/ClusterLists.h): llvmpipe fetches a texel for 8
-// lanes at once where it loads from a storage buffer lane by lane, and every visit of a list
-// entry reads one (LearnOpenGL's scene at 512 lights, where every light is in every list:
-// lighting 512-538 -> 478-492 ms). Where the driver's texture buffers are too small for the
-// lists, the storage buffer.
+// The lists' lights as R32UI texels and their spheres as RGBA32F texels (render/ClusterLists.h):
+// llvmpipe fetches a texel for 8 lanes at once where it loads from a storage buffer lane by
+// lane, and every visit of a list entry reads one (LearnOpenGL's scene at 512 lights, where
+// every light is in every list: lighting 512-538 -> 478-492 ms). Where the driver's texture
+// buffers are too small for the lists, the storage buffers.
 layout(binding = CLUSTER_LIST_TEXELS_UNIT) uniform usamplerBuffer clusterListTexels;
+layout(binding = CLUSTER_LIST_SPHERES_UNIT) uniform samplerBuffer clusterListSphereTexels;
 
 uint clusterListLight(uint entry)
 {
     return texelFetch(clusterListTexels, int(entry)).r;
 }
+
+vec4 clusterListSphere(uint entry)
+{
+    return texelFetch(clusterListSphereTexels, int(entry));
+}
 #else
 layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) readonly buffer ClusterListLights {
     uint clusterListLights[];
+};
+layout(std430, binding = CLUSTER_LIST_SPHERES_BUFFER_BINDING) readonly buffer ClusterListSpheres {
+    vec4 clusterListSpheres[];
 };
 
 uint clusterListLight(uint entry)
 {
     return clusterListLights[entry];
+}
+
+vec4 clusterListSphere(uint entry)
+{
+    return clusterListSpheres[entry];
 }
 #endif
 
@@ -59,9 +75,9 @@ vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint
         atomicAdd(listVisits, end - begin);
 #endif
     for (uint i = begin; i < end; ++i) {
-        uint lightIndex = clusterListLight(first + i);
-        vec4 positionRadius = lightPositionRadius(lightIndex);
+        vec4 positionRadius = clusterListSphere(first + i);
         if (length(positionRadius.xyz - s.position) < positionRadius.w) {
+            uint lightIndex = clusterListLight(first + i);
             color += shadeLocalLight(lightIndex, lightWithPositionRadius(lightIndex, positionRadius), s, V);
             ++evaluated;
         }

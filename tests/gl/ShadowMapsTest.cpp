@@ -104,12 +104,15 @@ TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), kDirectionalPasses);
     EXPECT_TRUE(renderer.shadowMaps().shadowedLights().empty());
 
-    // One local light: the brightest on screen, the narrow spot (5 × its coverage wins).
+    // One local light: the brightest on screen, the narrow spot (5 × its coverage wins). The
+    // renderer keeps its lights in an order of its own (render/SceneLights.h): the index is
+    // into that order.
     desc.shadowLights = 1;
     renderer.apply(desc);
     renderer.renderFrame("forward", ViewMode::Final);
     ASSERT_EQ(renderer.shadowMaps().shadowedLights().size(), 1u);
-    EXPECT_EQ(renderer.shadowMaps().shadowedLights()[0], 0u);
+    const Light& chosen = renderer.gpuScene().lights()[renderer.shadowMaps().shadowedLights()[0]];
+    EXPECT_EQ(chosen.position, lights[0].position);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), kDirectionalPasses + kSpotPasses);
 
     // The directional switch of the viewer.
