@@ -134,7 +134,8 @@ void ClusterLists::plan(std::uint32_t pairs)
     for (int i = 0; i < 2; ++i)
         lightTexels_[i] =
             texels_ ? gl::BufferTexture("cluster list texels", GL_R32UI, lights_[i]) : gl::BufferTexture();
-    sphereTexels_ = texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
+    sphereTexels_ =
+        texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
 void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)

@@ -110,7 +110,7 @@ private:
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
-    gl::Program sortScatterGather_;  // the last digit: with the lights' spheres
+    gl::Program sortScatterGather_;    // the last digit: with the lights' spheres
     LightingProgram longLighting_[2];  // without and with the list texels
     GpuScan scan_;
 
