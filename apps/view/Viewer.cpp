@@ -298,6 +298,7 @@ RendererDesc Viewer::rendererDesc() const
             .ambientOcclusion = ambientOcclusion_,
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
             .display = shown,
+            .wireframe = wireframe_,
             .driverProfile = options_.driver.profile};
 }
 
@@ -606,11 +607,7 @@ void Viewer::renderScene()
     renderer_->setCamera(camera_);
     renderer_->setTime(time_);
     Technique& current = technique();
-    // Only the final image: the G-buffer views draw full-screen triangles that must stay filled.
-    if (wireframe_ && view_ == ViewMode::Final)
-        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     lastSample_ = renderer_->renderFrame(current, view_);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     frameMs_.push_back(static_cast<float>(lastSample_.wallMs));
     if (frameMs_.size() > kFrameHistory)
         frameMs_.pop_front();
@@ -637,7 +634,7 @@ void Viewer::showImage()
         displayFramebuffer_ = gl::Framebuffer("viewer display", {&displayTexture_}, nullptr);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(displayTexture_.id(), 0, 0, 0, width, height, GL_RGB, GL_FLOAT, shown.rgb.data());
+    displayTexture_.write(GL_RGB, GL_FLOAT, shown.rgb.data());
     // Image rows run top to bottom, GL's bottom to top: the blit flips them.
     glBlitNamedFramebuffer(displayFramebuffer_.id(), 0, 0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
