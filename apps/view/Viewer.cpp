@@ -210,7 +210,7 @@ Scene loadScene(const ViewOptions& options)
 Viewer::Viewer(const ViewOptions& options)
     : options_(options),
       scene_(loadScene(options)),
-      window_({options.width, options.height, "manylights — " + scene_.source, defaultDebugContext()}),
+      window_({options.size.width, options.size.height, "manylights — " + scene_.source, defaultDebugContext()}),
       techniqueName_(options.technique),
       view_(*parseViewMode(options.view)),
       camera_(scene_.camera),
