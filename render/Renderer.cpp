@@ -137,8 +137,8 @@ FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
         technique.render(gpuScene_, *targets_, passes);
         if (gpuScene_.hasTransparentObjects())
             transparencyPassFor(technique.options()).run(gpuScene_, *targets_, passes, technique.isReference());
-        if (view == ViewMode::Volumes)
-            drawVolumeOverlay(passes);
+        if (view == ViewMode::Volumes || view == ViewMode::VolumeCorners)
+            drawVolumeOverlay(passes, view == ViewMode::VolumeCorners);
     } else {
         targets_->gbuffer.fill(passes);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -150,7 +150,7 @@ FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
                 drawCoveredPixels(program);
             });
     }
-    displayed_ = desc_.display && (view == ViewMode::Final || view == ViewMode::Volumes);
+    displayed_ = desc_.display && showsFinalImage(view);
     // The identity needs no pass: the lit image is then the picture (and a PNG of it is
     // round(255 · clamp(colour, 0, 1)) exactly, as the contract's default look).
     displayPassRan_ = displayed_ && (!desc_.display->isIdentity() || desc_.supersample > 1);
@@ -277,7 +277,7 @@ void Renderer::countWork()
     workCounts_.inRangePairs = sumOfTexels(targets_->inRangeCounts);
 }
 
-void Renderer::drawVolumeOverlay(FramePasses& passes)
+void Renderer::drawVolumeOverlay(FramePasses& passes, bool cornersOnly)
 {
     if (!overlayDrawer_) {
         overlayDrawer_ = std::make_unique<VolumeDrawer>();
@@ -286,10 +286,14 @@ void Renderer::drawVolumeOverlay(FramePasses& passes)
     }
     VolumeDrawer& drawer = *overlayDrawer_;
     drawer.prepare(gpuScene_);
-    // Every volume's edges over the picture, whatever the depth.
-    constexpr PipelineState kEdgesOverEverything{
-        .depthTest = DepthTest::Off, .keepDepth = true, .polygonMode = PolygonMode::Lines};
-    passes.run({.name = "volume overlay", .target = Resource::LitImage, .state = kEdgesOverEverything}, [&] {
+    // Every volume's edges, or its corners as points large enough to find, over the picture
+    // whatever the depth.
+    constexpr float kCornerPixels = 5.0f;
+    const PipelineState overlay{.depthTest = DepthTest::Off,
+                                .keepDepth = true,
+                                .pointSize = cornersOnly ? kCornerPixels : 0.0f,
+                                .polygonMode = cornersOnly ? PolygonMode::Points : PolygonMode::Lines};
+    passes.run({.name = "volume overlay", .target = Resource::LitImage, .state = overlay}, [&] {
         drawer.drawVolumes(VolumeShape::Sphere, 0, drawer.groups().spheres.size(), overlayProgram_);
         drawer.drawVolumes(VolumeShape::Cone, 0, drawer.groups().cones.size(), overlayProgram_);
     });

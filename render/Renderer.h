@@ -159,7 +159,8 @@ private:
     // The program of a G-buffer, shadow or ssao view (made on first use).
     const gl::Program& gbufferViewProgram(ViewMode view);
     void countWork();
-    void drawVolumeOverlay(FramePasses& passes);
+    // Each light's volume over the lit image: its edges, or with `cornersOnly` its corners.
+    void drawVolumeOverlay(FramePasses& passes, bool cornersOnly);
 
     GpuScene gpuScene_;
     const AmbientOcclusion sceneAmbientOcclusion_;

@@ -143,8 +143,8 @@ int runCli(int argc, const char* const* argv)
     if (!render.statsPath.empty() && sameFile(render.output.path, render.statsPath))
         return usageError("--stats and -o name the same file '" + render.output.path + "'");
     render.view = *parseViewMode(view);
-    if (render.supersample > 1 && render.view != ViewMode::Final && render.view != ViewMode::Volumes)
-        return usageError("--supersample applies to the final and volumes views, not '" + view + "'");
+    if (render.supersample > 1 && !showsFinalImage(render.view))
+        return usageError("--supersample applies to the final, volumes and volume-corners views, not '" + view + "'");
     if (render.aovs && render.view != ViewMode::Final)
         return usageError("--aovs adds the G-buffer views to the final image; it does not combine with --view " + view);
     if (noLegend && render.view != ViewMode::LightCount)

@@ -104,7 +104,7 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
 {
     const ViewMode view = options.view;
     if (options.output.eightBit()) {
-        if (view == ViewMode::Final || view == ViewMode::Volumes)
+        if (showsFinalImage(view))
             return encodePng(renderer.readDisplayed());
         const Image raw = renderer.readColour();
         Image shown = displayableView(raw, view, renderer.readCoverage());

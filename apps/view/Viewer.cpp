@@ -269,7 +269,7 @@ void Viewer::showImage()
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
-    if (view_ == ViewMode::Final || view_ == ViewMode::Volumes) {
+    if (showsFinalImage(view_)) {
         glBlitNamedFramebuffer(renderer_->displayedFramebuffer()->id(), 0, 0, 0, width, height, 0, 0, width, height,
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
         return;

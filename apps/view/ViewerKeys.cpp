@@ -77,8 +77,9 @@ bool Viewer::onDeferredCourseKey(int key)
 // The stencil light-volume write-up's keys: 'w'/'s' forward and back, 'a'/'d' up and down, the
 // arrows look around (held keys, applyHeldKeys), 'r' turns the camera about the look-at point
 // until pressed again, 'v' the light volumes, 'u' the volumes in their colours without
-// lighting, 'p'/'o'/'i' ambient, diffuse, specular, 'q' quit. ('c', lighting the volumes'
-// corners only, has no counterpart here: docs/viewer.md says so.)
+// lighting, 'c' the volumes' corners only (the volume-corners view: each volume's vertices as
+// points over the lit image, where the write-up shows which corners its volumes have),
+// 'p'/'o'/'i' ambient, diffuse, specular, 'q' quit.
 bool Viewer::onStencilVolumesKey(int key)
 {
     switch (key) {
@@ -98,7 +99,7 @@ bool Viewer::onStencilVolumesKey(int key)
     case GLFW_KEY_S:
     case GLFW_KEY_A:
     case GLFW_KEY_D: return true;  // held keys
-    case GLFW_KEY_C: lastMessage_ = "c: lighting the volumes' corners only is not drawn by manylights"; return true;
+    case GLFW_KEY_C: view_ = view_ == ViewMode::VolumeCorners ? ViewMode::Final : ViewMode::VolumeCorners; return true;
     default: return false;
     }
 }
