@@ -70,7 +70,7 @@ struct ImageSize {
 // The defaults and bounds of the options `render`, `bench` and `view` share, each written once.
 inline constexpr ImageSize kDefaultImageSize{kDefaultImageWidth, kDefaultImageHeight};  // --size
 inline constexpr std::string_view kDefaultTechnique = "clustered";                      // --technique
-// --lights: 2^24, as many as a light index of the shaders' 24 bits can name.
+// --lights: at most 2^24 lights, the bound docs/cli.md states for render, bench and view.
 inline constexpr int kMaxLightCount = 16'777'216;
 
 // --size WxH (one size), parsed into `size` as the command line is parsed.
