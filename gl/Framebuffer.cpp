@@ -32,11 +32,13 @@ Framebuffer::Framebuffer(std::string_view label) : GlObject(detail::createName(g
     glNamedFramebufferDrawBuffer(id(), GL_NONE);
 }
 
-void Framebuffer::attachDepthLayer(GLuint texture, int layer) const
+void Framebuffer::attachDepthLayer(const DepthTextureArray& texture, int layer) const
 {
-    glNamedFramebufferTextureLayer(id(), GL_DEPTH_ATTACHMENT, texture, 0, layer);
+    glNamedFramebufferTextureLayer(id(), GL_DEPTH_ATTACHMENT, texture.id(), 0, layer);
     ML_ASSERT(glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
 }
+
+void Framebuffer::clearDepth(float depth) const { glClearNamedFramebufferfv(id(), GL_DEPTH, 0, &depth); }
 
 void Framebuffer::clearColour(int attachment, const float rgba[4]) const
 {

@@ -31,7 +31,7 @@ public:
     explicit Framebuffer(std::string_view label);
     // Attaches one layer of a depth texture array (or one face of a cube-map array's cube:
     // layer = 6 · cube + face) and checks that the framebuffer is complete.
-    void attachDepthLayer(GLuint texture, int layer) const;
+    void attachDepthLayer(const DepthTextureArray& texture, int layer) const;
 
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
     void clearColour(int attachment, const float rgba[4]) const;
@@ -39,6 +39,7 @@ public:
     // integer clear, the others the float clear.
     void clearColourToZero(int attachment) const;
     void clearDepthStencil(float depth, int stencil) const;
+    void clearDepth(float depth) const;
 
 private:
     // Each colour attachment's GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, for clearColourToZero.

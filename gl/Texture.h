@@ -4,6 +4,8 @@
 // bytes read as texels.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <string_view>
 
 #include "gl/Buffer.h"
@@ -28,6 +30,25 @@ public:
     int height() const { return height_; }
     GLenum format() const { return format_; }
     void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    // Binds the texture as an image of its own format for loads and stores (`access`:
+    // GL_READ_ONLY, GL_WRITE_ONLY or GL_READ_WRITE).
+    void bindImage(GLuint unit, GLenum access) const;
+
+    // Sampling: bilinear instead of nearest; what lies outside [0, 1] (GL_CLAMP_TO_EDGE, or
+    // GL_CLAMP_TO_BORDER with setBorderColour's colour); a depth texture compared with the
+    // reference coordinate by `function` (sampler2DShadow) instead of read.
+    void setLinearFiltering() const;
+    void setWrap(GLenum wrap) const;
+    void setBorderColour(const std::array<float, 4>& rgba) const;
+    void compareDepth(GLenum function) const;
+
+    // Every texel to `depth` (a depth format) or to zero (any format), as a GL command.
+    void clearDepth(float depth) const;
+    void clearToZero() const;
+    // The whole image from or to the CPU, as `format` and `type` (GL's rows, bottom to top);
+    // reading waits for the commands that write it.
+    void read(GLenum format, GLenum type, std::size_t bytes, void* data) const;
+    void write(GLenum format, GLenum type, const void* data) const;
 
 private:
     int width_ = 0;

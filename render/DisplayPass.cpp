@@ -43,10 +43,8 @@ void DisplayPass::resize(int width, int height)
     transformedFramebuffer_ = gl::Framebuffer();
     transformed_ = gl::Texture2D("display", GL_RGBA8, width, height);
     // FXAA samples it between texels.
-    glTextureParameteri(transformed_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(transformed_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(transformed_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(transformed_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    transformed_.setLinearFiltering();
+    transformed_.setWrap(GL_CLAMP_TO_EDGE);
     transformedFramebuffer_ = gl::Framebuffer("display", {&transformed_}, nullptr);
     antialiasedOutput_ = gl::Texture2D("display anti-aliased", GL_RGBA8, width, height);
     edgeStencil_ = gl::Texture2D("display edges", GL_DEPTH24_STENCIL8, width, height);
@@ -55,52 +53,61 @@ void DisplayPass::resize(int width, int height)
         gl::Framebuffer("display and its copy", {&transformed_, &antialiasedOutput_}, nullptr);
 }
 
-void DisplayPass::run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample,
-                      PassProfiler& profiler)
+void DisplayPass::run(FramePasses& passes, const DisplaySettings& settings, int supersample)
 {
+    const gl::Texture2D& lit = passes.targets().lit;
     ML_ASSERT(supersample >= 1 && supersample <= kMaxSupersample);
     ML_ASSERT(lit.width() % supersample == 0 && lit.height() % supersample == 0);
     const int width = lit.width() / supersample;
     const int height = lit.height() / supersample;
     resize(width, height);
     antialiased_ = settings.antialiasing == Antialiasing::Fxaa;
-    {
-        auto pass = profiler.pass("display");
-        const gl::Program& program = transformProgram(settings.toneCurve, settings.srgb, supersample, antialiased_);
-        program.set(kExposureScaleLocation, std::exp2(settings.exposure));
-        lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
-        (antialiased_ ? transformedAndCopyFramebuffer_ : transformedFramebuffer_).bind();
-        glViewport(0, 0, width, height);
-        emptyVertexArray_.bind();
-        applyPipelineState(kEveryPixel);
-        program.use();
-        glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
+    const PixelRect output{0, 0, width, height};
+    PipelineState everyPixel = kEveryPixel;
+    everyPixel.viewport = output;
+    passes.run({.name = "display",
+                .framebuffer = antialiased_ ? &transformedAndCopyFramebuffer_ : &transformedFramebuffer_,
+                .state = everyPixel,
+                .sampled = Resource::LitImage},
+               [&] {
+                   const gl::Program& program =
+                       transformProgram(settings.toneCurve, settings.srgb, supersample, antialiased_);
+                   program.set(kExposureScaleLocation, std::exp2(settings.exposure));
+                   lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
+                   emptyVertexArray_.bind();
+                   program.use();
+                   glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
+               });
+    if (!antialiased_)
+        return;
+    if (!fxaaProgram_) {
+        fxaaEdgesProgram_ =
+            gl::Program("fxaa edges", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa_edges.frag"}});
+        fxaaProgram_ = gl::Program("fxaa", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa.frag"}});
     }
-    if (antialiased_) {
-        auto pass = profiler.pass("fxaa");
-        if (!fxaaProgram_) {
-            fxaaEdgesProgram_ = gl::Program(
-                "fxaa edges", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa_edges.frag"}});
-            fxaaProgram_ =
-                gl::Program("fxaa", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "fxaa.frag"}});
-        }
-        // Most pixels are not on an edge and keep their colour, which the display pass wrote
-        // to the output as well; the edge test marks the others in the stencil buffer and the
-        // filter runs on those only (llvmpipe skips stencil-failed pixels before shading, not
-        // pixels that return early).
-        antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
-        transformed_.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
-        antialiasedFramebuffer_.bind();
-        applyPipelineState(
-            {.depthTest = DepthTest::Off, .keepDepth = true, .maskColour = true, .stencil = Stencil::MarkDrawn});
-        fxaaEdgesProgram_.use();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        applyPipelineState({.depthTest = DepthTest::Off, .keepDepth = true, .stencil = Stencil::PassMarked});
-        fxaaProgram_.use();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
-    applyPipelineState({});
-    glViewport(0, 0, lit.width(), lit.height());
+    // Most pixels are not on an edge and keep their colour, which the display pass wrote to
+    // the output as well; the edge test marks the others in the stencil buffer and the filter
+    // runs on those only (llvmpipe skips stencil-failed pixels before shading, not pixels that
+    // return early).
+    const auto fxaaPass = [&](Stencil stencil, bool maskColour, const gl::Program& program) {
+        passes.run({.name = "fxaa",
+                    .framebuffer = &antialiasedFramebuffer_,
+                    .state = {.depthTest = DepthTest::Off,
+                              .keepDepth = true,
+                              .maskColour = maskColour,
+                              .stencil = stencil,
+                              .viewport = output}},
+                   [&] {
+                       if (stencil == Stencil::MarkDrawn)
+                           antialiasedFramebuffer_.clearDepthStencil(1.0f, 0);
+                       transformed_.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
+                       emptyVertexArray_.bind();
+                       program.use();
+                       glDrawArrays(GL_TRIANGLES, 0, 3);
+                   });
+    };
+    fxaaPass(Stencil::MarkDrawn, true, fxaaEdgesProgram_);
+    fxaaPass(Stencil::PassMarked, false, fxaaProgram_);
 }
 
 float DisplayPass::logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth)
@@ -116,7 +123,7 @@ float DisplayPass::logAverageLuminance(const gl::Texture2D& lit, const gl::Textu
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     float value = 0.0f;
-    glGetNamedBufferSubData(luminance_.id(), 0, sizeof(value), &value);
+    luminance_.read(0, sizeof(value), &value);
     return value;
 }
 

@@ -13,15 +13,16 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
-#include "render/PassProfiler.h"
+#include "render/FramePasses.h"
 #include "scene/DisplaySettings.h"
 
 namespace manylights {
 
 class DisplayPass {
 public:
-    // `lit`'s size divided by `supersample` (which must divide it) is the output's size.
-    void run(const gl::Texture2D& lit, const DisplaySettings& settings, int supersample, PassProfiler& profiler);
+    // Passes of the frame from its lit image, whose size divided by `supersample` (which must
+    // divide it) is the output's size.
+    void run(FramePasses& passes, const DisplaySettings& settings, int supersample);
 
     // The last run's picture: RGBA8, display-encoded (alpha: luma, for FXAA); its framebuffer
     // is for blitting to a window. 8 bits: what every consumer of it shows.

@@ -347,8 +347,9 @@ void DrawList::drawObjects(const MeshProgramFor& programFor) const
     instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
     const gl::Program* current = nullptr;
     // Face state is changed only where it differs: on llvmpipe every state change revalidates
-    // the pipeline at the next draw. The renderer's default (Renderer.cpp): no culling, CCW.
-    FaceState faces{false, GL_CCW};
+    // the pipeline at the next draw. The pass's record set it (no culling, counter-clockwise
+    // unless the record says otherwise) and restores it when the pass ends.
+    std::optional<FaceState> faces;
     for (const std::size_t index : frontToBack_) {
         const DrawBatch& batch = batches_[index];
         // Every item of a batch of several has the same variant and face state, no maps and no
@@ -363,10 +364,13 @@ void DrawList::drawObjects(const MeshProgramFor& programFor) const
         }
         setObjectUniforms(program, first);
         bindMaterial(program, *first.material, *first.maps);
-        setFaceState(faceStateOf(first), faces);
+        const FaceState wanted = faceStateOf(first);
+        if (wanted != faces) {
+            applyFaceState(wanted.cull, wanted.frontFace);
+            faces = wanted;
+        }
         drawInstances(program, batch.firstItem, batch.itemCount);
     }
-    setFaceState({false, GL_CCW}, faces);
 }
 
 std::vector<DrawList::TransparentLayer> DrawList::transparentLayersBackToFront(const glm::vec3& eye,
@@ -406,14 +410,11 @@ void DrawList::drawTransparentLayer(const TransparentLayer& layer, const MeshPro
     program.use();
     setObjectUniforms(program, item);
     bindMaterial(program, *item.material, *item.maps);
-    // A transparent mesh's winding decides its layers, whatever its material's sides.
-    glFrontFace(item.mirrored ? GL_CW : GL_CCW);
-    glEnable(GL_CULL_FACE);
-    glCullFace(layer.backFaces ? GL_FRONT : GL_BACK);
+    // A transparent mesh's winding decides its layers, whatever its material's sides. The
+    // pass's record restores the faces' state when the pass ends.
+    applyFaceState(layer.backFaces ? Cull::FrontFaces : Cull::BackFaces,
+                   item.mirrored ? Winding::Clockwise : Winding::CounterClockwise);
     drawInstances(program, batch.firstItem, batch.itemCount);
-    glDisable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
 }
 
 std::vector<Bounds> DrawList::transparentWorldBounds() const
@@ -444,23 +445,10 @@ MaterialVariant DrawList::materialVariant(const Material& material, const Materi
 
 DrawList::FaceState DrawList::faceStateOf(const DrawItem& draw)
 {
-    // gl_FrontFacing (which Sides::BothFlipped lights by) follows glFrontFace too.
-    return {draw.material->sides == Sides::Front,
-            draw.mirrored && draw.material->sides != Sides::BothWithMeshNormal ? GLenum{GL_CW} : GLenum{GL_CCW}};
-}
-
-void DrawList::setFaceState(const FaceState& wanted, FaceState& current)
-{
-    if (wanted.cullBackFaces != current.cullBackFaces) {
-        if (wanted.cullBackFaces) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_BACK);  // the volume techniques cull front faces
-        } else
-            glDisable(GL_CULL_FACE);
-    }
-    if (wanted.frontFace != current.frontFace)
-        glFrontFace(wanted.frontFace);
-    current = wanted;
+    // gl_FrontFacing (which Sides::BothFlipped lights by) follows the winding too.
+    return {draw.material->sides == Sides::Front ? Cull::BackFaces : Cull::None,
+            draw.mirrored && draw.material->sides != Sides::BothWithMeshNormal ? Winding::Clockwise
+                                                                               : Winding::CounterClockwise};
 }
 
 void DrawList::bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const

@@ -17,6 +17,7 @@
 #include "gl/VertexArray.h"
 #include "render/DriverProfile.h"
 #include "render/LightingPrograms.h"
+#include "render/PipelineState.h"
 #include "render/TextureCache.h"
 #include "scene/Scene.h"
 
@@ -139,11 +140,11 @@ private:
     static MaterialVariant materialVariant(const Material& material, const MaterialMaps& maps, const MeshRange& range);
     // Culling and front-face winding for a batch's material and mirroring.
     struct FaceState {
-        bool cullBackFaces;
-        GLenum frontFace;
+        Cull cull;
+        Winding frontFace;
+        friend bool operator==(const FaceState&, const FaceState&) = default;
     };
     static FaceState faceStateOf(const DrawItem& draw);
-    static void setFaceState(const FaceState& wanted, FaceState& current);
     void loadMeshes(const Scene& scene);
     void loadMaterialMaps(const Scene& scene);
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;

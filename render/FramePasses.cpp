@@ -33,7 +33,7 @@ FramePasses::~FramePasses() { finish(); }
 
 GLbitfield FramePasses::barrierFor(const Pass& pass) const
 {
-    const bool compute = pass.target == Resource::None;
+    const bool compute = !draws(pass);
     GLbitfield bits = 0;
     // `access`: the bits of this kind of access; `afterDraws`: what a compute pass waits on
     // where draws used the resource.
@@ -70,12 +70,17 @@ void FramePasses::begin(const Pass& pass)
             resource.usedByQueuedDraws = false;
         }
     }
-    if (pass.target != Resource::None) {
-        if (pass.target == Resource::GBuffer)
+    if (draws(pass)) {
+        if (pass.framebuffer)
+            pass.framebuffer->bind();
+        else if (pass.target == Resource::GBuffer)
             targets_.gbuffer.framebuffer().bind();
         else
             targets_.litFramebuffer.bind();
-        applyPipelineState(pass.state);
+        PipelineState state = pass.state;
+        if (pass.target == Resource::LitImage && !pass.framebuffer && litImagePolygonMode_ != PolygonMode::Fill)
+            state.polygonMode = litImagePolygonMode_;
+        applyPipelineState(state, targets_.width, targets_.height);
     }
     scene_.bind();
     if (contains(pass.sampled, Resource::GBuffer)) {
@@ -83,18 +88,18 @@ void FramePasses::begin(const Pass& pass)
         targets_.depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
     }
     if (contains(pass.images, Resource::LitImage))
-        glBindImageTexture(bindings::LIT_IMAGE_UNIT, targets_.lit.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        targets_.lit.bindImage(bindings::LIT_IMAGE_UNIT, GL_READ_WRITE);
 }
 
 void FramePasses::end(const Pass& pass)
 {
     forEachResource(pass.writes, [&](int bit) { state(bit).unmadeVisible = kAllAccess; });
-    if (pass.target == Resource::None)
+    if (!draws(pass))
         return;
     forEachResource(pass.target | pass.sampled | pass.images | pass.storage,
                     [&](int bit) { state(bit).usedByQueuedDraws = true; });
     // Draws leave GL's default state behind them for code outside the passes.
-    applyPipelineState({});
+    applyPipelineState({}, targets_.width, targets_.height);
 }
 
 void FramePasses::finish()

@@ -48,6 +48,10 @@ struct Pass {
     // Draws: bound as the framebuffer (LitImage or GBuffer), with `state` applied. None: the
     // pass dispatches compute work or runs on the CPU, and `state` does not apply.
     Resource target = Resource::None;
+    // Draws into this framebuffer instead of a target of the frame (shadow maps, the display
+    // pass's images), with `state` applied. One of another size than the frame names its
+    // viewport in `state`.
+    const gl::Framebuffer* framebuffer = nullptr;
     PipelineState state{};
     // Read by texture fetches. GBuffer binds the G-buffer's targets for reading and the
     // scene's depth at SCENE_DEPTH_UNIT.
@@ -85,13 +89,10 @@ public:
     // Closes the last timed pass and waits for the passes' writes: before the CPU reads
     // resources back, or code outside the passes uses them.
     void finish();
-    // For the renderer's parts that time their own passes (shadow maps, the display pass):
-    // the profiler, with no pass of this sequence open.
-    PassProfiler& profilerForOwnScopes()
-    {
-        scope_.reset();
-        return profiler_;
-    }
+    // The viewer's wireframe: the passes that draw into the frame's lit image draw their
+    // polygons as `mode` says, whatever their records say (forward's meshes; the G-buffer, the
+    // shadow maps and the display pass stay filled).
+    void setLitImagePolygonMode(PolygonMode mode) { litImagePolygonMode_ = mode; }
 
     const GpuScene& scene() const { return scene_; }
     FrameTargets& targets() { return targets_; }
@@ -102,6 +103,7 @@ public:
 private:
     void begin(const Pass& pass);
     void end(const Pass& pass);
+    static bool draws(const Pass& pass) { return pass.target != Resource::None || pass.framebuffer != nullptr; }
 
     // Per resource: the barrier bits its last incoherent writes (image stores, storage writes)
     // still need for each kind of access, and whether draws used it since the last barrier
@@ -119,6 +121,7 @@ private:
     PassProfiler& profiler_;
     std::optional<PassProfiler::Scope> scope_;
     std::string_view scopeName_;
+    PolygonMode litImagePolygonMode_ = PolygonMode::Fill;
 };
 
 }  // namespace manylights

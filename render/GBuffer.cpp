@@ -62,9 +62,13 @@ void GBuffer::fill(FramePasses& passes)
 void GBuffer::fill(const GpuScene& scene) const
 {
     framebuffer_.bind();
-    applyPipelineState({});
+    const gl::Texture2D& target = targets_.front();  // every target has the frame's size
+    applyPipelineState({}, target.width(), target.height());
     scene.bind();
     clearAndDraw(scene);
+    // The draws may leave their items' culling and winding (render/DrawList.h): GL's defaults
+    // again for the code outside the passes that follows.
+    applyPipelineState({}, target.width(), target.height());
 }
 
 void GBuffer::clearAndDraw(const GpuScene& scene) const

@@ -29,7 +29,7 @@ std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t per
 
 void setLightBatch(const gl::Program& program, const LightBatch& batch)
 {
-    glProgramUniform2ui(program.id(), kLightBatchLocation, batch.first, batch.end);
+    program.set(kLightBatchLocation, glm::uvec2(batch.first, batch.end));
 }
 
 void addLightBatchDefines(gl::Defines& defines)

@@ -26,9 +26,29 @@ GLenum depthFunction(DepthTest test)
     return GL_LESS;
 }
 
+GLenum polygonMode(PolygonMode mode)
+{
+    switch (mode) {
+    case PolygonMode::Fill: return GL_FILL;
+    case PolygonMode::Lines: return GL_LINE;
+    case PolygonMode::Points: return GL_POINT;
+    }
+    return GL_FILL;
+}
+
+GLenum cullFace(Cull cull) { return cull == Cull::FrontFaces ? GL_FRONT : GL_BACK; }
+
 }  // namespace
 
-void applyPipelineState(const PipelineState& state)
+void applyFaceState(Cull cull, Winding frontFace)
+{
+    enable(GL_CULL_FACE, cull != Cull::None);
+    glCullFace(cullFace(cull));
+    // gl_FrontFacing (which two-sided materials light by) follows the winding too.
+    glFrontFace(frontFace == Winding::Clockwise ? GL_CW : GL_CCW);
+}
+
+void applyPipelineState(const PipelineState& state, int targetWidth, int targetHeight)
 {
     // The test stays enabled when off (GL_ALWAYS): a disabled test would also stop depth writes.
     glEnable(GL_DEPTH_TEST);
@@ -42,8 +62,19 @@ void applyPipelineState(const PipelineState& state)
     else
         glBlendFunc(GL_ONE, GL_ONE);
 
-    enable(GL_CULL_FACE, state.cullFrontFaces);
-    glCullFace(state.cullFrontFaces ? GL_FRONT : GL_BACK);
+    applyFaceState(state.cull, state.frontFace);
+    enable(GL_POLYGON_OFFSET_FILL, !state.depthBias.isZero());
+    glPolygonOffset(state.depthBias.slopeScaled, state.depthBias.constantUnits);
+    glPolygonMode(GL_FRONT_AND_BACK, polygonMode(state.polygonMode));
+    enable(GL_PROGRAM_POINT_SIZE, state.pointSizeFromShader);
+    glPointSize(state.pointSize > 0.0f ? state.pointSize : 1.0f);
+
+    const PixelRect viewport = state.viewport.isZero() ? PixelRect{0, 0, targetWidth, targetHeight} : state.viewport;
+    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+    // With the test off the rectangle has no effect: only the test is switched.
+    enable(GL_SCISSOR_TEST, !state.scissor.isZero());
+    if (!state.scissor.isZero())
+        glScissor(state.scissor.x, state.scissor.y, state.scissor.width, state.scissor.height);
     enable(GL_DEPTH_CLAMP, state.clampDepth);
     const GLboolean colour = state.maskColour ? GL_FALSE : GL_TRUE;
     glColorMask(colour, colour, colour, colour);

@@ -117,31 +117,28 @@ FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 
 FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
 {
-    glViewport(0, 0, targets_->width, targets_->height);
     ML_ASSERT(desc_.countWork || view != ViewMode::LightCount);
     // The technique's shaders read this renderer's G-buffer and, when counting, write the
     // counting images: they must have been made for both (technique() makes them so).
     ML_ASSERT(technique.options() == techniqueOptions());
     lastView_ = view;
     if (desc_.countWork) {
-        const GLuint zero = 0;
-        glClearTexImage(targets_->lightEvaluations.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glBindImageTexture(bindings::LIGHT_EVALUATIONS_IMAGE_UNIT, targets_->lightEvaluations.id(), 0, GL_FALSE, 0,
-                           GL_READ_WRITE, GL_R32UI);
+        targets_->lightEvaluations.clearToZero();
+        targets_->lightEvaluations.bindImage(bindings::LIGHT_EVALUATIONS_IMAGE_UNIT, GL_READ_WRITE);
     }
     profiler_.beginFrame();
     targets_->gbuffer.invalidate();
     FramePasses passes(gpuScene_, *targets_, profiler_);
+    if (desc_.wireframe && view == ViewMode::Final)
+        passes.setLitImagePolygonMode(PolygonMode::Lines);
     prepareShadowing(view, passes);
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
         technique.render(gpuScene_, *targets_, passes);
         if (gpuScene_.hasTransparentObjects())
             transparencyPassFor(technique.options()).run(gpuScene_, *targets_, passes, technique.isReference());
-        if (view == ViewMode::Volumes) {
-            passes.finish();
-            drawVolumeOverlay();
-        }
+        if (view == ViewMode::Volumes || view == ViewMode::VolumeCorners)
+            drawVolumeOverlay(passes, view == ViewMode::VolumeCorners);
     } else {
         targets_->gbuffer.fill(passes);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -153,13 +150,13 @@ FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
                 drawCoveredPixels(program);
             });
     }
-    passes.finish();
-    displayed_ = desc_.display && (view == ViewMode::Final || view == ViewMode::Volumes);
+    displayed_ = desc_.display && showsFinalImage(view);
     // The identity needs no pass: the lit image is then the picture (and a PNG of it is
     // round(255 · clamp(colour, 0, 1)) exactly, as the contract's default look).
     displayPassRan_ = displayed_ && (!desc_.display->isIdentity() || desc_.supersample > 1);
     if (displayPassRan_)
-        displayPass_.run(targets_->lit, *desc_.display, desc_.supersample, profiler_);
+        displayPass_.run(passes, *desc_.display, desc_.supersample);
+    passes.finish();
     FrameSample sample = profiler_.endFrame();
     if (desc_.countWork)
         countWork();
@@ -194,7 +191,7 @@ const gl::Program& Renderer::gbufferViewProgram(ViewMode view)
 
 void Renderer::prepareShadowing(ViewMode view, FramePasses& passes)
 {
-    shadowMaps_.update(gpuScene_, passes.profilerForOwnScopes());
+    shadowMaps_.update(passes);
     // The ssao view shows the occlusion the scene's settings would give, even where the scene
     // leaves it off.
     const AmbientOcclusion& occlusion = ambientOcclusion();
@@ -216,8 +213,7 @@ std::vector<T> readTopDown(const gl::Texture2D& texture, GLenum format, GLenum t
     const std::size_t row = static_cast<std::size_t>(texture.width()) * components;
     const auto height = static_cast<std::size_t>(texture.height());
     std::vector<T> bottomUp(row * height);
-    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(bottomUp.size() * sizeof(T)),
-                      bottomUp.data());
+    texture.read(format, type, bottomUp.size() * sizeof(T), bottomUp.data());
     std::vector<T> topDown(bottomUp.size());
     for (std::size_t y = 0; y < height; ++y)
         std::copy_n(&bottomUp[row * (height - 1 - y)], row, &topDown[row * y]);
@@ -255,8 +251,7 @@ void Renderer::countWork()
     gpuScene_.bind();
     targets_->gbuffer.bindForReading();
     targets_->depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
-    glBindImageTexture(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, targets_->inRangeCounts.id(), 0, GL_FALSE, 0,
-                       GL_READ_WRITE, GL_R32UI);
+    targets_->inRangeCounts.bindImage(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, GL_READ_WRITE);
     if (!inRangeProgram_) {
         gl::Defines defines = gbufferDefines(desc_.gbufferLayout);
         addLightBatchDefines(defines);
@@ -282,7 +277,7 @@ void Renderer::countWork()
     workCounts_.inRangePairs = sumOfTexels(targets_->inRangeCounts);
 }
 
-void Renderer::drawVolumeOverlay()
+void Renderer::drawVolumeOverlay(FramePasses& passes, bool cornersOnly)
 {
     if (!overlayDrawer_) {
         overlayDrawer_ = std::make_unique<VolumeDrawer>();
@@ -291,14 +286,17 @@ void Renderer::drawVolumeOverlay()
     }
     VolumeDrawer& drawer = *overlayDrawer_;
     drawer.prepare(gpuScene_);
-    targets_->litFramebuffer.bind();
-    gpuScene_.bind();
-    applyPipelineState(kEveryPixel);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    drawer.drawVolumes(VolumeShape::Sphere, 0, drawer.groups().spheres.size(), overlayProgram_);
-    drawer.drawVolumes(VolumeShape::Cone, 0, drawer.groups().cones.size(), overlayProgram_);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    applyPipelineState({});
+    // Every volume's edges, or its corners as points large enough to find, over the picture
+    // whatever the depth.
+    constexpr float kCornerPixels = 5.0f;
+    const PipelineState overlay{.depthTest = DepthTest::Off,
+                                .keepDepth = true,
+                                .pointSize = cornersOnly ? kCornerPixels : 0.0f,
+                                .polygonMode = cornersOnly ? PolygonMode::Points : PolygonMode::Lines};
+    passes.run({.name = "volume overlay", .target = Resource::LitImage, .state = overlay}, [&] {
+        drawer.drawVolumes(VolumeShape::Sphere, 0, drawer.groups().spheres.size(), overlayProgram_);
+        drawer.drawVolumes(VolumeShape::Cone, 0, drawer.groups().cones.size(), overlayProgram_);
+    });
 }
 
 Image Renderer::readColour() const

@@ -66,6 +66,9 @@ struct RendererDesc {
     // through the uniform windows or the storage buffer, as on a driver without them (the
     // tests compare the sources).
     bool lightTexels = true;
+    // The viewer's wireframe: the final view's lit-image passes draw their polygons as edges
+    // (FramePasses::setLitImagePolygonMode; the viewer draws it with forward, whose are meshes).
+    bool wireframe = false;
     // --driver-profile: whose choices the renderer makes (render/DriverProfile.h). Read when the
     // Renderer is made; apply() keeps it.
     DriverProfile driverProfile = DriverProfile::Auto;
@@ -156,7 +159,8 @@ private:
     // The program of a G-buffer, shadow or ssao view (made on first use).
     const gl::Program& gbufferViewProgram(ViewMode view);
     void countWork();
-    void drawVolumeOverlay();
+    // Each light's volume over the lit image: its edges, or with `cornersOnly` its corners.
+    void drawVolumeOverlay(FramePasses& passes, bool cornersOnly);
 
     GpuScene gpuScene_;
     const AmbientOcclusion sceneAmbientOcclusion_;

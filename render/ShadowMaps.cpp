@@ -8,10 +8,9 @@
 
 #include "core/Error.h"
 #include "gl/Debug.h"
+#include "render/FramePasses.h"
 #include "render/GpuScene.h"
 #include "render/Locations.h"
-#include "render/PassProfiler.h"
-#include "render/PipelineState.h"
 #include "scene/Falloff.h"
 #include "scene/ShadowSelection.h"
 
@@ -37,14 +36,10 @@ constexpr GLint kLightViewProjectionLocation = locations::LIGHT_VIEW_PROJECTION_
 gl::Texture2D makeShadowTexture(std::string_view label, int size)
 {
     gl::Texture2D texture(label, GL_DEPTH_COMPONENT24, size, size);
-    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const std::array<float, 4> farthest = {1.0f, 1.0f, 1.0f, 1.0f};
-    glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, farthest.data());
+    texture.setLinearFiltering();
+    texture.compareDepth(GL_LEQUAL);
+    texture.setWrap(GL_CLAMP_TO_BORDER);
+    texture.setBorderColour({1.0f, 1.0f, 1.0f, 1.0f});
     return texture;
 }
 
@@ -97,8 +92,7 @@ ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     // always see a depth texture with comparison on, even when shadows are off. The local
     // lights' arrays start with one layer for the same reason.
     directionalMap_ = makeShadowTexture("directional shadow map (unused, 1x1)", 1);
-    const float farthest = 1.0f;
-    glClearTexImage(directionalMap_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &farthest);
+    directionalMap_.clearDepth(1.0f);
     ensureArrays(0, 0);
     localFramebuffer_ = gl::Framebuffer("local shadow maps");
 }
@@ -110,8 +104,9 @@ void ShadowMaps::invalidate()
         slot.valid = false;
 }
 
-void ShadowMaps::update(const GpuScene& scene, PassProfiler& profiler)
+void ShadowMaps::update(FramePasses& passes)
 {
+    const GpuScene& scene = passes.scene();
     if (rebuildEveryFrame_)
         invalidate();
     const Scene& description = scene.scene();
@@ -123,23 +118,23 @@ void ShadowMaps::update(const GpuScene& scene, PassProfiler& profiler)
                                  scene.frameUniforms().viewProjection, directionalMapSize_, kFilterReachTexels + 1.0f);
         if (!directionalValid_ || lightViewProjection != directionalRenderedMatrix_ ||
             scene.transformsVersion() != directionalRenderedVersion_)
-            renderDirectional(scene, lightViewProjection, profiler);
+            renderDirectional(passes, lightViewProjection);
         uniforms_.directionalShadowMatrix = kNdcToUnit * lightViewProjection;
         uniforms_.directionalShadowParams = glm::vec4(1.0f, 1.0f / static_cast<float>(directionalMapSize_), 0.0f, 0.0f);
     }
-    updateLocal(scene, profiler);
+    updateLocal(passes);
 }
 
-void ShadowMaps::renderDirectional(const GpuScene& scene, const glm::mat4& lightViewProjection, PassProfiler& profiler)
+void ShadowMaps::renderDirectional(FramePasses& passes, const glm::mat4& lightViewProjection)
 {
+    const GpuScene& scene = passes.scene();
     if (directionalMap_.width() != directionalMapSize_) {
         directionalMap_ = makeShadowTexture("directional shadow map", directionalMapSize_);
         directionalFramebuffer_ = gl::Framebuffer("directional shadow map", {}, &directionalMap_);
     }
-    auto pass = profiler.pass("shadow directional");
     // Every object: an orthographic light has no volume to cull against beyond the fitted
     // box, which the rasteriser clips.
-    drawDepthPass(scene, directionalFramebuffer_.id(), directionalMapSize_, lightViewProjection,
+    drawDepthPass(passes, "shadow directional", directionalFramebuffer_, directionalMapSize_, lightViewProjection,
                   [](const Bounds&) { return true; });
     directionalValid_ = true;
     directionalRenderedMatrix_ = lightViewProjection;
@@ -199,8 +194,9 @@ void ShadowMaps::ensureArrays(int spotLayers, int cubes)
     }
 }
 
-void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
+void ShadowMaps::updateLocal(FramePasses& passes)
 {
+    const GpuScene& scene = passes.scene();
     const std::vector<Light>& lights = scene.lights();
     lightCount_ = lights.size();
     shadowedLights_.clear();
@@ -249,8 +245,7 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
         const GpuLight& packed = scene.packedLights()[slot.light];
         if (slot.valid && sameLight(slot.renderedFor, packed) && slot.renderedVersion == scene.transformsVersion())
             continue;
-        auto pass = profiler.pass(slot.cube ? "shadow point" : "shadow spot");
-        slot.cube ? renderCube(scene, slot) : renderSpot(scene, slot);
+        slot.cube ? renderCube(passes, slot) : renderSpot(passes, slot);
         slot.renderedFor = packed;
         slot.renderedVersion = scene.transformsVersion();
         slot.valid = true;
@@ -259,8 +254,9 @@ void ShadowMaps::updateLocal(const GpuScene& scene, PassProfiler& profiler)
                                             1.0f / static_cast<float>(sizes_.cubeFace), 0.0f);
 }
 
-void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
+void ShadowMaps::renderSpot(FramePasses& passes, LocalSlot& slot)
 {
+    const GpuScene& scene = passes.scene();
     const Light& light = scene.lights()[slot.light];
     const glm::vec3 position = light.position;
     const glm::vec3 axis = glm::normalize(light.direction);
@@ -270,14 +266,15 @@ void ShadowMaps::renderSpot(const GpuScene& scene, LocalSlot& slot)
     const glm::mat4 viewProjection =
         glm::perspective(glm::radians(2.0f * cutoff + kSpotFovMarginDegrees), 1.0f, kNearFraction * far, far) *
         glm::lookAt(position, position + axis, up);
-    renderDepth(scene, spotArray_.id(), slot.layer, sizes_.spot, viewProjection,
+    renderDepth(passes, "shadow spot", spotArray_, slot.layer, sizes_.spot, viewProjection,
                 [&](const Bounds& box) { return boxMayIntersectCone(box, position, axis, cutoff, far); });
     slot.gpu.viewProjection = viewProjection;
     slot.gpu.params = glm::vec4(1.0f, static_cast<float>(slot.layer), kNearFraction * far, far);
 }
 
-void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
+void ShadowMaps::renderCube(FramePasses& passes, LocalSlot& slot)
 {
+    const GpuScene& scene = passes.scene();
     const Light& light = scene.lights()[slot.light];
     const glm::vec3 position = light.position;
     const float far = shadowFar(light, scene);
@@ -295,42 +292,38 @@ void ShadowMaps::renderCube(const GpuScene& scene, LocalSlot& slot)
     const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
     const auto inRange = [&](const Bounds& box) { return boxIntersectsSphere(box, position, far); };
     for (int face = 0; face < 6; ++face)
-        renderDepth(scene, cubeArray_.id(), slot.layer * 6 + face, sizes_.cubeFace,
+        renderDepth(passes, "shadow point", cubeArray_, slot.layer * 6 + face, sizes_.cubeFace,
                     projection * glm::lookAt(position, position + faces[face].first, faces[face].second), inRange);
     slot.gpu.viewProjection = glm::mat4(1.0f);
     slot.gpu.params = glm::vec4(2.0f, static_cast<float>(slot.layer), near, far);
 }
 
-void ShadowMaps::renderDepth(const GpuScene& scene, GLuint texture, int layer, int size,
-                             const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep)
+void ShadowMaps::renderDepth(FramePasses& passes, std::string_view name, const gl::DepthTextureArray& texture,
+                             int layer, int size, const glm::mat4& viewProjection,
+                             const std::function<bool(const Bounds&)>& keep)
 {
-    const GLuint framebuffer = localFramebuffer_.id();
     localFramebuffer_.attachDepthLayer(texture, layer);
-    drawDepthPass(scene, framebuffer, size, viewProjection, keep);
+    drawDepthPass(passes, name, localFramebuffer_, size, viewProjection, keep);
 }
 
-void ShadowMaps::drawDepthPass(const GpuScene& scene, GLuint framebuffer, int size, const glm::mat4& viewProjection,
-                               const std::function<bool(const Bounds&)>& keep)
+void ShadowMaps::drawDepthPass(FramePasses& passes, std::string_view name, const gl::Framebuffer& framebuffer, int size,
+                               const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep)
 {
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glViewport(0, 0, size, size);
-    applyPipelineState({});  // before the clear, which the depth mask would stop
-    const float farthest = 1.0f;
-    glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &farthest);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(kSlopeScaledBias, kConstantBiasUnits);
-    scene.bind();
-    scene.drawObjectsDepthOnly(
-        [&](MaterialVariant variant) -> const gl::Program& {
-            const gl::Program& program = depthProgram(variant);
-            program.set(kLightViewProjectionLocation, viewProjection);
-            return program;
-        },
-        keep);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    const Pass depthPass{
+        .name = name,
+        .framebuffer = &framebuffer,
+        .state = {.depthBias = {kSlopeScaledBias, kConstantBiasUnits}, .viewport = {0, 0, size, size}}};
+    // The pass's state writes depth, so the clear (which the depth mask would stop) clears.
+    passes.run(depthPass, [&] {
+        framebuffer.clearDepth(1.0f);
+        passes.scene().drawObjectsDepthOnly(
+            [&](MaterialVariant variant) -> const gl::Program& {
+                const gl::Program& program = depthProgram(variant);
+                program.set(kLightViewProjectionLocation, viewProjection);
+                return program;
+            },
+            keep);
+    });
     ++passesRendered_;
 }
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -29,7 +30,7 @@ namespace manylights {
 inline constexpr int kMaxShadowLights = 256;
 
 class GpuScene;
-class PassProfiler;
+class FramePasses;
 
 // std140 layout of the Shadowing block in shaders/lib/shadows.glsl.
 struct ShadowingUniforms {
@@ -87,8 +88,8 @@ public:
     bool directionalShadows() const { return directionalEnabled_; }
 
     // Renders each map whose inputs changed since it was last rendered (the light, the view it
-    // is fitted to, the scene's transforms), as profiled passes, and uploads the uniform block.
-    void update(const GpuScene& scene, PassProfiler& profiler);
+    // is fitted to, the scene's transforms), as passes of the frame (of `passes`' scene).
+    void update(FramePasses& passes);
     // Forgets every cached map: the next update renders all of them.
     void invalidate();
     // Renders every map every frame, as when everything moves (for measuring the cost of
@@ -119,17 +120,18 @@ private:
         GpuShadowSlot gpu;
     };
 
-    void renderDirectional(const GpuScene& scene, const glm::mat4& lightViewProjection, PassProfiler& profiler);
-    void updateLocal(const GpuScene& scene, PassProfiler& profiler);
+    void renderDirectional(FramePasses& passes, const glm::mat4& lightViewProjection);
+    void updateLocal(FramePasses& passes);
     void ensureArrays(int spotLayers, int cubes);
-    void renderSpot(const GpuScene& scene, LocalSlot& slot);
-    void renderCube(const GpuScene& scene, LocalSlot& slot);
-    // Clears `framebuffer`'s depth and draws the casters `keep` accepts into it (slope-scaled
-    // bias on), restoring the viewport after.
-    void drawDepthPass(const GpuScene& scene, GLuint framebuffer, int size, const glm::mat4& viewProjection,
-                       const std::function<bool(const Bounds&)>& keep);
-    void renderDepth(const GpuScene& scene, GLuint texture, int layer, int size, const glm::mat4& viewProjection,
-                     const std::function<bool(const Bounds&)>& keep);
+    void renderSpot(FramePasses& passes, LocalSlot& slot);
+    void renderCube(FramePasses& passes, LocalSlot& slot);
+    // One pass named `name`: clears `framebuffer`'s depth (`size` square) and draws the
+    // casters `keep` accepts into it, with the slope-scaled bias.
+    void drawDepthPass(FramePasses& passes, std::string_view name, const gl::Framebuffer& framebuffer, int size,
+                       const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep);
+    // The same into one layer of `texture`.
+    void renderDepth(FramePasses& passes, std::string_view name, const gl::DepthTextureArray& texture, int layer,
+                     int size, const glm::mat4& viewProjection, const std::function<bool(const Bounds&)>& keep);
 
     ShadowMapSizes sizes_;
     int directionalMapSize_;

@@ -93,13 +93,13 @@ void Ssao::run(const AmbientOcclusion& settings, FramePasses& passes)
         samples_.bindBase(GL_SHADER_STORAGE_BUFFER, kSamplesBinding);
         occlusionProgram_.set(kParamsLocation,
                               glm::vec4(settings.radius, settings.strength, kBiasFraction * settings.radius, 0.0f));
-        glBindImageTexture(kOcclusionImageUnit, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        raw_.bindImage(kOcclusionImageUnit, GL_WRITE_ONLY);
         occlusionProgram_.use();
         glDispatchCompute(groupsX, groupsY, 1);
     });
     passes.run(kSsaoPass, [&] {
         raw_.bindUnit(kRawOcclusionUnit);
-        glBindImageTexture(kOcclusionImageUnit, blurred_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        blurred_.bindImage(kOcclusionImageUnit, GL_WRITE_ONLY);
         blurProgram_.use();
         glDispatchCompute(groupsX, groupsY, 1);
     });

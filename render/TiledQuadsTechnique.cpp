@@ -120,25 +120,11 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
     const TileLightLists& lists = culler_.lists();
     tileQuads_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileQuadsBinding);
     lightIndices_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
-    // Each tile is one point where the driver draws points of the tile's size (every driver
-    // we know of; GL promises only 1 pixel), else a quad of two triangles. A software
-    // rasteriser shades each triangle in whole 4x4 blocks, so the blocks the quad's diagonal
-    // cuts run the fragment shader twice: 12% more runs with 32-pixel tiles, 25% with 16. A
-    // point is one primitive (courtyard, 4096 lights, 1280x720: lighting 125 -> 101 ms,
-    // docs/performance.md).
     const bool points = drawsTilesAsPoints(lists);
-    glm::vec2 viewportSize(static_cast<float>(targets.width), static_cast<float>(targets.height));
-    if (points) {
-        // The viewport spans every tile, so that each point's centre lies inside it: GL may
-        // drop a point whose centre is outside (llvmpipe, like many GPUs, draws it anyway,
-        // so no test here can tell). The scissor keeps the image's pixels only.
-        viewportSize = glm::vec2(static_cast<float>(lists.tilesX * lists.tileSize),
-                                 static_cast<float>(lists.tilesY * lists.tileSize));
-        glViewport(0, 0, lists.tilesX * lists.tileSize, lists.tilesY * lists.tileSize);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(0, 0, targets.width, targets.height);
-        glEnable(GL_PROGRAM_POINT_SIZE);
-    }
+    const glm::vec2 viewportSize =
+        points ? glm::vec2(static_cast<float>(lists.tilesX * lists.tileSize),
+                           static_cast<float>(lists.tilesY * lists.tileSize))
+               : glm::vec2(static_cast<float>(targets.width), static_cast<float>(targets.height));
     for (std::size_t v = 0; v < kVariants; ++v) {
         const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
         if (tiles == 0)
@@ -155,11 +141,6 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
         else
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(tiles));
     }
-    if (points) {
-        glDisable(GL_PROGRAM_POINT_SIZE);
-        glDisable(GL_SCISSOR_TEST);
-        glViewport(0, 0, targets.width, targets.height);
-    }
 }
 
 void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
@@ -172,9 +153,24 @@ void TiledQuadsTechnique::render(const GpuScene& scene, FrameTargets& targets, F
                [&] { drawCoveredPixels(global_.variant(scene.lightingFeatures())); });
     // The quads lie at depth 1, so GL_GREATER passes only where a surface was drawn, and the
     // background is never shaded.
-    passes.run(
-        {.name = "lighting", .target = Resource::LitImage, .state = kAddToCoveredPixels, .sampled = Resource::GBuffer},
-        [&] { drawTiles(scene, targets); });
+    PipelineState lighting = kAddToCoveredPixels;
+    // Each tile is one point where the driver draws points of the tile's size (every driver
+    // we know of; GL promises only 1 pixel), else a quad of two triangles. A software
+    // rasteriser shades each triangle in whole 4x4 blocks, so the blocks the quad's diagonal
+    // cuts run the fragment shader twice: 12% more runs with 32-pixel tiles, 25% with 16. A
+    // point is one primitive (courtyard, 4096 lights, 1280x720: lighting 125 -> 101 ms,
+    // docs/performance.md).
+    const TileLightLists& lists = culler_.lists();
+    if (drawsTilesAsPoints(lists)) {
+        // The viewport spans every tile, so that each point's centre lies inside it: GL may
+        // drop a point whose centre is outside (llvmpipe, like many GPUs, draws it anyway,
+        // so no test here can tell). The scissor keeps the image's pixels only.
+        lighting.viewport = {0, 0, lists.tilesX * lists.tileSize, lists.tilesY * lists.tileSize};
+        lighting.scissor = {0, 0, targets.width, targets.height};
+        lighting.pointSizeFromShader = true;
+    }
+    passes.run({.name = "lighting", .target = Resource::LitImage, .state = lighting, .sampled = Resource::GBuffer},
+               [&] { drawTiles(scene, targets); });
 }
 
 }  // namespace manylights

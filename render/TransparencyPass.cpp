@@ -176,7 +176,7 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
         // The count is read back: the frame's passes are done first.
         passes.finish();
         std::uint32_t count = 0;
-        glGetNamedBufferSubData(evaluations_.id(), 0, sizeof count, &count);
+        evaluations_.read(0, sizeof count, &count);
         lastEvaluations_ = count;
     }
 }

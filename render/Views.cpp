@@ -8,7 +8,7 @@
 namespace manylights {
 
 namespace {
-const std::array<std::pair<ViewMode, std::string_view>, 11> kViews = {{
+const std::array<std::pair<ViewMode, std::string_view>, 12> kViews = {{
     {ViewMode::Final, "final"},
     {ViewMode::Position, "position"},
     {ViewMode::Normal, "normal"},
@@ -18,6 +18,7 @@ const std::array<std::pair<ViewMode, std::string_view>, 11> kViews = {{
     {ViewMode::Depth, "depth"},
     {ViewMode::LightCount, "light-count"},
     {ViewMode::Volumes, "volumes"},
+    {ViewMode::VolumeCorners, "volume-corners"},
     {ViewMode::Shadow, "shadow"},
     {ViewMode::Ssao, "ssao"},
 }};

@@ -23,13 +23,19 @@ enum class ViewMode {
     Volumes = 8,     // the final image with every light's volume as a wireframe
     Shadow = 9,      // the directional light's shadow factor (1 lit, 0 umbra; 1 without shadows)
     Ssao = 10,       // the blurred ambient-occlusion factor (1 open, 0 occluded)
+    // The final image with every light volume's corners (its proxy mesh's vertices) as points:
+    // where the volume techniques' geometry lies, without its edges hiding the picture.
+    VolumeCorners = 11,
 };
 
-// Whether the view shows a G-buffer quantity (rendered by the geometry pass alone).
-inline bool isGBufferView(ViewMode mode)
+// Whether the view shows the lit picture (the final image, with or without an overlay).
+inline bool showsFinalImage(ViewMode mode)
 {
-    return mode != ViewMode::Final && mode != ViewMode::LightCount && mode != ViewMode::Volumes;
+    return mode == ViewMode::Final || mode == ViewMode::Volumes || mode == ViewMode::VolumeCorners;
 }
+
+// Whether the view shows a G-buffer quantity (rendered by the geometry pass alone).
+inline bool isGBufferView(ViewMode mode) { return !showsFinalImage(mode) && mode != ViewMode::LightCount; }
 
 // The heat-map colour of a light-evaluation count (docs/techniques.md has the legend): black
 // for 0, then blue, cyan, green, yellow, red and white at 1, 4, 16, 64, 256 and 1024 or more.

@@ -31,7 +31,7 @@ constexpr Pass kBackFaceVolumes{.name = "lighting",
                                 .state = {.depthTest = DepthTest::GreaterOrEqual,
                                           .keepDepth = true,
                                           .blend = Blend::Add,
-                                          .cullFrontFaces = true,
+                                          .cull = Cull::FrontFaces,
                                           .clampDepth = true},
                                 .sampled = Resource::GBuffer};
 

@@ -8,10 +8,10 @@
 #include <optional>
 #include <set>
 #include <type_traits>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
+#include "apps/cli/Progress.h"
 #include "apps/cli/SvgPlot.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
@@ -25,7 +25,6 @@ namespace manylights {
 namespace {
 
 // Within what `render --lights` and `--frames` accept.
-constexpr int kMaxLights = 16'777'216;
 constexpr int kMaxFrames = 100'000;
 
 // One combination of the sweep.
@@ -99,56 +98,11 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     return result;
 }
 
-// The progress line on stderr: rewritten in place on a terminal, one line per finished
-// combination otherwise (a log file or CI output gets no carriage returns).
-class Progress {
-public:
-    explicit Progress(std::size_t total) : total_(total), terminal_(::isatty(::fileno(stderr)) != 0) {}
-    ~Progress()
-    {
-        // Also on an error: the one-line message that follows must start on its own line.
-        if (pending_)
-            std::fputc('\n', stderr);
-    }
-    Progress(const Progress&) = delete;
-    Progress& operator=(const Progress&) = delete;
-
-    void start(const std::string& label)
-    {
-        ++index_;
-        if (terminal_) {
-            std::fprintf(stderr, "\r[%zu/%zu] %s ...\033[K", index_, total_, label.c_str());
-            std::fflush(stderr);
-            pending_ = true;
-        }
-    }
-
-    void finish(const std::string& label, double ms)
-    {
-        if (terminal_) {
-            std::fprintf(stderr, "\r[%zu/%zu] %s: %.1f ms\033[K", index_, total_, label.c_str(), ms);
-        } else {
-            std::fprintf(stderr, "[%zu/%zu] %s: %.1f ms\n", index_, total_, label.c_str(), ms);
-        }
-        std::fflush(stderr);
-    }
-
-    void skip(const std::string& label)
-    {
-        ++index_;
-        std::fprintf(stderr,
-                     terminal_ ? "\r[%zu/%zu] %s: skipped, over the budget\033[K"
-                               : "[%zu/%zu] %s: skipped, over the budget\n",
-                     index_, total_, label.c_str());
-        std::fflush(stderr);
-    }
-
-private:
-    std::size_t total_;
-    std::size_t index_ = 0;
-    bool terminal_;
-    bool pending_ = false;
-};
+// "[3/12] deferred 4096 lights 1280x720": the sweep's case number before its label.
+std::string caseLabel(std::size_t index, std::size_t total, const std::string& label)
+{
+    return "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + label;
+}
 
 std::string formatMs(double ms)
 {
@@ -345,7 +299,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
             "Comma-separated totals for the scene's light sets (default: the scene's own)")
         ->delimiter(',')
         ->allow_extra_args(false)
-        ->check(CLI::Range(0, kMaxLights));
+        ->check(CLI::Range(0, kMaxLightCount));
     bench
         ->add_option_function<std::vector<std::string>>(
             "--size",
@@ -358,20 +312,10 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
                     options.sizes.push_back(size);
                 }
             },
-            "Comma-separated image sizes WxH (default: 1280x720)")
+            "Comma-separated image sizes WxH (default: " + formatSize(kDefaultImageSize) + ")")
         ->delimiter(',')
         ->allow_extra_args(false)
-        ->check(
-            [](const std::string& text) {
-                ImageSize size;
-                std::string problem = parseSize(text, size);
-                // CLI11 puts the option's name in front already.
-                const std::string name = "--size ";
-                if (problem.compare(0, name.size(), name) == 0)
-                    problem.erase(0, name.size());
-                return problem;
-            },
-            "WxH");
+        ->check(sizeValidator());
     bench->add_option("--frames", options.frames, "Frames timed per combination")
         ->check(CLI::Range(1, kMaxFrames))
         ->capture_default_str();
@@ -387,11 +331,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check([](const std::string& path) {
             return hasExtension(path, ".svg") ? std::string() : "must end in .svg, got '" + path + "'";
         });
-    bench
-        ->add_option_function<std::string>(
-            "--gbuffer", [&options](const std::string& name) { options.gbufferLayout = *parseGBufferLayout(name); },
-            "G-buffer layout of the deferred techniques (seed or compact; default compact)")
-        ->check(CLI::IsMember({"seed", "compact"}));
+    addGBufferOption(*bench, options.gbufferLayout);
     addAnisotropyOption(*bench, options.anisotropy);
     addDriverOptions(*bench, options.driver);
     bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
@@ -438,8 +378,9 @@ void runBench(const BenchOptions& options)
         std::size_t shardCases = 0;
         for (std::size_t c = 0; c < cases; ++c)
             shardCases += options.shard.has(c) ? 1 : 0;
-        Progress progress(shardCases);
+        ProgressLine progress;
         std::size_t caseNumber = 0;
+        std::size_t shardCase = 0;
         // Sizes outermost and techniques innermost: the techniques at one light count finish
         // together, so an interrupted sweep has compared them all up to where it stopped.
         for (const ImageSize& size : options.sizes) {
@@ -450,14 +391,17 @@ void runBench(const BenchOptions& options)
                     if (!options.shard.has(caseNumber++))
                         continue;
                     const std::string label =
-                        technique + " " + std::to_string(lights.size()) + " lights " + formatSize(size);
+                        caseLabel(++shardCase, shardCases,
+                                  technique + " " + std::to_string(lights.size()) + " lights " + formatSize(size));
                     if (overBudget.contains(technique)) {
-                        progress.skip(label);
+                        progress.showAndLog(label + ": skipped, over the budget");
                         continue;
                     }
-                    progress.start(label);
+                    progress.show(label + " ...");
                     results.push_back(measure(scene, lights, technique, size, options));
-                    progress.finish(label, results.back().measured.wallMs.median);
+                    char ms[32];
+                    std::snprintf(ms, sizeof ms, ": %.1f ms", results.back().measured.wallMs.median);
+                    progress.showAndLog(label + ms);
                     if (options.budgetMs > 0.0 && results.back().measured.wallMs.median > options.budgetMs)
                         overBudget.insert(technique);
                 }

@@ -20,7 +20,7 @@ struct BenchOptions {
     std::string scenePath;                // empty: the built-in default scene
     std::vector<std::string> techniques;  // empty: every technique there is (techniqueNames())
     std::vector<int> lightCounts;         // empty: the scene's own lights
-    std::vector<ImageSize> sizes{{1280, 720}};
+    std::vector<ImageSize> sizes{kDefaultImageSize};
     int frames = 5;
     int warmup = 1;
     std::string csvPath;   // empty: no CSV

@@ -28,16 +28,12 @@ int runCli(int argc, const char* const* argv)
     app.add_subcommand("view", "Show the scene in a window, interactively (manylights view --help)");
 
     RenderOptions render;
-    std::string size = "1280x720";
     std::string view = "final";
-    std::string gbufferLayout(gbufferLayoutName(kDefaultGBufferLayout));
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to an image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON); the built-in default scene if absent");
-    renderCommand->add_option("-o,--output", render.output, "Output image: .png, .pfm or .exr")->required();
-    renderCommand->add_option("--size", size, "Image size WxH")->capture_default_str();
-    renderCommand->add_option("--technique", render.technique, "Lighting technique")
-        ->check(CLI::IsMember(techniqueNames()))
-        ->capture_default_str();
+    renderCommand->add_option("-o,--output", render.output.path, "Output image: .png, .pfm or .exr")->required();
+    addSizeOption(*renderCommand, render.size, "Image size WxH");
+    addTechniqueOption(*renderCommand, render.technique);
     renderCommand->add_option("--view", view, "What to show")
         ->check(CLI::IsMember(viewModeNames()))
         ->capture_default_str();
@@ -59,14 +55,11 @@ int runCli(int argc, const char* const* argv)
         "--shard", shard, "Render only the frames k with k mod N = I-1 of a --time-range recording (I/N)");
     renderCommand->add_flag("--skip-existing", render.skipExisting,
                             "Render only the frames of a --time-range recording whose files are missing");
-    renderCommand->add_option("--lights", render.lights, "Replace the total count of the scene's light sets")
-        ->check(CLI::Range(0, 16777216));
+    addLightCountOption(*renderCommand, render.lights);
     renderCommand->add_option("--frames", render.frames, "Frames to render and time (after one warm-up frame)")
         ->check(CLI::Range(1, 100000));
     renderCommand->add_option("--stats", render.statsPath, "Write timings and work counts as JSON");
-    renderCommand->add_option("--gbuffer", gbufferLayout, "G-buffer layout of the deferred techniques")
-        ->check(CLI::IsMember({"seed", "compact"}))
-        ->capture_default_str();
+    addGBufferOption(*renderCommand, render.gbufferLayout);
     addAnisotropyOption(*renderCommand, render.anisotropy);
     addDriverOptions(*renderCommand, render.driver);
     renderCommand
@@ -117,11 +110,6 @@ int runCli(int argc, const char* const* argv)
         return reportingErrors([&] { runBench(bench); }, "benchmarking");
     }
 
-    ImageSize renderSize;
-    if (std::string problem = parseSize(size, renderSize); !problem.empty())
-        return usageError(problem);
-    render.width = renderSize.width;
-    render.height = renderSize.height;
     if (fpsOption->count() > 0 && timeRangeOption->count() == 0)
         return usageError("--fps applies only to a --time-range recording");
     if (timeRangeOption->count() == 0 && (shardOption->count() > 0 || render.skipExisting))
@@ -133,7 +121,7 @@ int runCli(int argc, const char* const* argv)
         TimeRange range;
         std::string problem = parseTimeRange(timeRange, range);
         if (problem.empty())
-            problem = checkFramePattern(render.output);
+            problem = checkFramePattern(render.output.path);
         if (problem.empty())
             problem = checkRecordingFrameCount(range, render.fps);
         if (problem.empty() && !render.statsPath.empty())
@@ -142,30 +130,28 @@ int runCli(int argc, const char* const* argv)
             return usageError(problem);
         render.timeRange = range;
     }
-    const bool eightBit = hasExtension(render.output, ".png");
-    const bool exr = hasExtension(render.output, ".exr");
-    if (!eightBit && !exr && !hasExtension(render.output, ".pfm"))
-        return usageError("the output must end in .png, .pfm or .exr, got '" + render.output + "'");
+    const std::optional<ImageFormat> format = imageFormatOf(render.output.path);
+    if (!format)
+        return usageError("the output must end in .png, .pfm or .exr, got '" + render.output.path + "'");
+    render.output.format = *format;
     const DisplayOptions& display = render.display;
-    if (!eightBit && (display.exposure || display.toneCurve || display.srgb || display.antialiasing))
+    if (!render.output.eightBit() && (display.exposure || display.toneCurve || display.srgb || display.antialiasing))
         return usageError("--exposure, --tonemap, --srgb, --no-srgb, --classic and --aa apply to .png outputs; .pfm "
                           "and .exr stay linear");
-    if (!exr && (render.exrFloat || render.aovs))
+    if (render.output.format != ImageFormat::Exr && (render.exrFloat || render.aovs))
         return usageError("--exr-float and --aovs apply to .exr outputs");
-    if (!render.statsPath.empty() && sameFile(render.output, render.statsPath))
-        return usageError("--stats and -o name the same file '" + render.output + "'");
+    if (!render.statsPath.empty() && sameFile(render.output.path, render.statsPath))
+        return usageError("--stats and -o name the same file '" + render.output.path + "'");
     render.view = *parseViewMode(view);
-    if (render.supersample > 1 && render.view != ViewMode::Final && render.view != ViewMode::Volumes)
-        return usageError("--supersample applies to the final and volumes views, not '" + view + "'");
+    if (render.supersample > 1 && !showsFinalImage(render.view))
+        return usageError("--supersample applies to the final, volumes and volume-corners views, not '" + view + "'");
     if (render.aovs && render.view != ViewMode::Final)
         return usageError("--aovs adds the G-buffer views to the final image; it does not combine with --view " + view);
-    render.gbufferLayout = *parseGBufferLayout(gbufferLayout);
     if (noLegend && render.view != ViewMode::LightCount)
         return usageError("--no-legend applies to --view light-count, not '" + view + "'");
     render.legend = !noLegend;
 
-    return reportingErrors([&] { runRender(render); },
-                           "rendering " + std::to_string(render.width) + "x" + std::to_string(render.height));
+    return reportingErrors([&] { runRender(render); }, "rendering " + formatSize(render.size));
 }
 
 }  // namespace manylights

@@ -14,6 +14,8 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
+#include "render/Image.h"
+#include "render/Technique.h"
 #include "render/TextureCache.h"
 #include "scene/DefaultScene.h"
 #include "scene/SceneLoader.h"
@@ -26,7 +28,7 @@ std::string parseSize(const std::string& text, ImageSize& size)
     static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
     std::smatch match;
     if (!std::regex_match(text, match, pattern))
-        return "--size must look like 1280x720, got '" + text + "'";
+        return "--size must look like " + formatSize(kDefaultImageSize) + ", got '" + text + "'";
     const int width = std::stoi(match[1]);
     const int height = std::stoi(match[2]);
     if (width < 1 || height < 1 || width > kMaxImageDimension || height > kMaxImageDimension)
@@ -34,6 +36,71 @@ std::string parseSize(const std::string& text, ImageSize& size)
                std::to_string(kMaxImageDimension) + ", got " + text;
     size = {width, height};
     return {};
+}
+
+CLI::Validator sizeValidator()
+{
+    return CLI::Validator(
+        [](const std::string& text) {
+            ImageSize size;
+            std::string problem = parseSize(text, size);
+            // CLI11 puts the option's name in front already.
+            const std::string name = "--size ";
+            if (problem.compare(0, name.size(), name) == 0)
+                problem.erase(0, name.size());
+            return problem;
+        },
+        "WxH");
+}
+
+void addSizeOption(CLI::App& command, ImageSize& size, const std::string& description)
+{
+    command
+        .add_option_function<std::string>(
+            "--size", [&size](const std::string& text) { parseSize(text, size); },  // the check has accepted it
+            description)
+        ->check(sizeValidator())
+        ->default_str(formatSize(kDefaultImageSize));
+}
+
+void addTechniqueOption(CLI::App& command, std::string& technique)
+{
+    command.add_option("--technique", technique, "Lighting technique")
+        ->check(CLI::IsMember(techniqueNames()))
+        ->capture_default_str();
+}
+
+void addLightCountOption(CLI::App& command, std::optional<int>& lights)
+{
+    command.add_option("--lights", lights, "Replace the total count of the scene's light sets")
+        ->check(CLI::Range(0, kMaxLightCount));
+}
+
+std::vector<std::string> gbufferLayoutNames()
+{
+    return {std::string(gbufferLayoutName(GBufferLayout::Seed)),
+            std::string(gbufferLayoutName(GBufferLayout::Compact))};
+}
+
+void addGBufferOption(CLI::App& command, GBufferLayout& layout)
+{
+    command
+        .add_option_function<std::string>(
+            "--gbuffer", [&layout](const std::string& name) { layout = *parseGBufferLayout(name); },
+            "G-buffer layout of the deferred techniques")
+        ->check(CLI::IsMember(gbufferLayoutNames()))
+        ->default_str(std::string(gbufferLayoutName(kDefaultGBufferLayout)));
+}
+
+std::optional<ImageFormat> imageFormatOf(const std::string& path)
+{
+    if (hasExtension(path, ".png"))
+        return ImageFormat::Png;
+    if (hasExtension(path, ".pfm"))
+        return ImageFormat::Pfm;
+    if (hasExtension(path, ".exr"))
+        return ImageFormat::Exr;
+    return std::nullopt;
 }
 
 void addAnisotropyOption(CLI::App& command, int& level)

@@ -9,6 +9,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,7 +17,9 @@
 #include "core/Error.h"
 
 #include "render/DriverProfile.h"
+#include "render/GBuffer.h"
 #include "render/PassProfiler.h"
+#include "render/Renderer.h"    // kDefaultImageWidth, kDefaultImageHeight
 #include "render/ShadowMaps.h"  // kMaxShadowLights
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
@@ -63,6 +66,34 @@ struct ImageSize {
     int width = 0;
     int height = 0;
 };
+
+// The defaults and bounds of the options `render`, `bench` and `view` share, each written once.
+inline constexpr ImageSize kDefaultImageSize{kDefaultImageWidth, kDefaultImageHeight};  // --size
+inline constexpr std::string_view kDefaultTechnique = "clustered";                      // --technique
+// --lights: at most 2^24 lights, the bound docs/cli.md states for render, bench and view.
+inline constexpr int kMaxLightCount = 16'777'216;
+
+// --size WxH (one size), parsed into `size` as the command line is parsed.
+void addSizeOption(CLI::App& command, ImageSize& size, const std::string& description);
+// The check of one WxH (parseSize's problem, without the option's name: CLI11 adds it).
+CLI::Validator sizeValidator();
+// --technique NAME, one of techniqueNames().
+void addTechniqueOption(CLI::App& command, std::string& technique);
+// --lights N: the total count of the scene's light sets, replaced.
+void addLightCountOption(CLI::App& command, std::optional<int>& lights);
+// --gbuffer NAME: the deferred techniques' G-buffer layout; gbufferLayoutNames() lists them.
+void addGBufferOption(CLI::App& command, GBufferLayout& layout);
+std::vector<std::string> gbufferLayoutNames();
+
+// An output image: its path and, from the path's extension (any case), its format.
+enum class ImageFormat { Png, Pfm, Exr };
+struct OutputImage {
+    std::string path;
+    ImageFormat format = ImageFormat::Png;
+    bool eightBit() const { return format == ImageFormat::Png; }  // display-encoded; the others linear
+};
+// The format of `path`, or none when it ends in neither .png, .pfm nor .exr.
+std::optional<ImageFormat> imageFormatOf(const std::string& path);
 
 // "WxH" with both in 1..kMaxImageDimension. Returns the problem as one line (naming --size),
 // or an empty string when `text` is a size; then `size` holds it.

@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <unistd.h>
 
+#include "apps/cli/Progress.h"
 #include "core/Numbers.h"
 
 namespace manylights {
@@ -130,27 +130,20 @@ std::string formatFramePath(const std::string& pattern, int frame)
     return path;
 }
 
-void printRecordingProgress(int done, int total)
+void printRecordingProgress(ProgressLine& progress, int done, int total)
 {
-    // A bar redrawn in place on a terminal; in a log (stderr not a terminal) a plain line at
-    // every tenth of the frames, with no carriage returns.
-    static const bool terminal = ::isatty(STDERR_FILENO) != 0;
-    if (!terminal) {
-        const int step = std::max(1, total / 10);
-        if (done > 0 && (done % step == 0 || done == total))
-            std::fprintf(stderr, "recorded %d/%d frames\n", done, total);
-        return;
-    }
+    const int step = std::max(1, total / 10);
+    if (done > 0 && (done % step == 0 || done == total))
+        progress.log("recorded " + std::to_string(done) + "/" + std::to_string(total) + " frames");
     constexpr int kBarWidth = 30;
     const int filled = total > 0 ? static_cast<int>(static_cast<long long>(done) * kBarWidth / total) : kBarWidth;
     std::string bar(static_cast<std::size_t>(filled), '=');
     if (filled < kBarWidth)
         bar += '>';
     bar.resize(kBarWidth, ' ');
-    std::fprintf(stderr, "\r[%s] %d/%d frames", bar.c_str(), done, total);
+    progress.show("[" + bar + "] " + std::to_string(done) + "/" + std::to_string(total) + " frames");
     if (done == total)
-        std::fputc('\n', stderr);
-    std::fflush(stderr);
+        progress.endLine();
 }
 
 }  // namespace manylights

@@ -6,6 +6,8 @@
 
 namespace manylights {
 
+class ProgressLine;
+
 struct TimeRange {
     double start = 0.0;
     double end = 0.0;
@@ -30,7 +32,8 @@ std::string checkFramePattern(const std::string& pattern);
 // The pattern with its conversion replaced by `frame` (zero-padded to N digits for %0Nd).
 std::string formatFramePath(const std::string& pattern, int frame);
 
-// "\r[=======>      ]  12/48 frames" on stderr, and a newline after the last frame.
-void printRecordingProgress(int done, int total);
+// "[=======>      ] 12/48 frames" as `progress`'s status, the line ended after the last frame;
+// in a log, "recorded 12/48 frames" at every tenth of the frames.
+void printRecordingProgress(ProgressLine& progress, int done, int total);
 
 }  // namespace manylights

@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/cli/CommandSupport.h"
+#include "apps/cli/Progress.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
@@ -37,8 +37,8 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["view"] = std::string(viewModeName(options.view));
     stats["scene"] = scene.source;
     stats["device"] = device;
-    stats["width"] = options.width;
-    stats["height"] = options.height;
+    stats["width"] = options.size.width;
+    stats["height"] = options.size.height;
     stats["lights"] = lightCount;
     stats["frames"] = frames.size();
     stats["shadow_lights"] = options.shadowLights;
@@ -95,17 +95,16 @@ const std::vector<AovLayer>& aovLayers()
     return layers;
 }
 
-// The renderer's last frame encoded for `path`: .pfm and .exr as linear floats (box-filtered
+// The renderer's last frame encoded as the output's format: .pfm and .exr as linear floats (box-filtered
 // down when supersampled), .png through the display pass (the final and volumes views) or as
 // the view's displayable image (the light-count view's with its legend unless --no-legend). --aovs renders each
 // G-buffer view after the frame and adds it to the EXR file (the renderer then holds the last view's frame: nothing
 // reads it after).
-std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options,
-                            const std::string& path)
+std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options)
 {
     const ViewMode view = options.view;
-    if (hasExtension(path, ".png")) {
-        if (view == ViewMode::Final || view == ViewMode::Volumes)
+    if (options.output.eightBit()) {
+        if (showsFinalImage(view))
             return encodePng(renderer.readDisplayed());
         const Image raw = renderer.readColour();
         Image shown = displayableView(raw, view, renderer.readCoverage());
@@ -118,7 +117,7 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
         return encodePng(shown);
     }
     Image linear = boxDownsample(renderer.readColour(), options.supersample);
-    if (hasExtension(path, ".pfm"))
+    if (options.output.format == ImageFormat::Pfm)
         return encodePfm(linear);
     std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, std::move(linear)}};
     if (options.aovs) {
@@ -141,7 +140,7 @@ std::vector<int> framesToRecord(const RenderOptions& options)
         if (!options.shard.has(static_cast<std::size_t>(frame)))
             continue;
         std::error_code error;
-        if (options.skipExisting && std::filesystem::exists(formatFramePath(options.output, frame), error))
+        if (options.skipExisting && std::filesystem::exists(formatFramePath(options.output.path, frame), error))
             continue;
         frames.push_back(frame);
     }
@@ -155,14 +154,15 @@ void recordFrames(Renderer& renderer, Technique& technique, const RenderOptions&
                   const std::vector<int>& frames)
 {
     const int count = static_cast<int>(frames.size());
-    printRecordingProgress(0, count);
+    ProgressLine progress;
+    printRecordingProgress(progress, 0, count);
     for (int done = 0; done < count; ++done) {
         const int frame = frames[static_cast<std::size_t>(done)];
         renderer.setTime(recordingFrameTime(*options.timeRange, options.fps, frame));
         renderer.renderFrame(technique, options.view);
-        const std::string path = formatFramePath(options.output, frame);
-        writeFileAtomically(path, "image", encodeLastFrame(renderer, technique, options, path));
-        printRecordingProgress(done + 1, count);
+        const std::string path = formatFramePath(options.output.path, frame);
+        writeFileAtomically(path, "image", encodeLastFrame(renderer, technique, options));
+        printRecordingProgress(progress, done + 1, count);
     }
 }
 
@@ -174,7 +174,7 @@ void runRender(const RenderOptions& options)
     // recording's folder is made as other tools make theirs.
     std::vector<int> recorded;
     if (options.timeRange) {
-        const std::filesystem::path first = formatFramePath(options.output, 0);
+        const std::filesystem::path first = formatFramePath(options.output.path, 0);
         createOutputFolder(first);
         checkWritable(first, "image");
         recorded = framesToRecord(options);
@@ -184,7 +184,7 @@ void runRender(const RenderOptions& options)
             return;
         }
     } else {
-        checkWritable(options.output, "image");
+        checkWritable(options.output.path, "image");
         if (!options.statsPath.empty())
             checkWritable(options.statsPath, "statistics");
     }
@@ -198,14 +198,14 @@ void runRender(const RenderOptions& options)
     const DisplaySettings display = chooseDisplay(scene, options.display);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount || options.aovs;
     Renderer renderer(scene, lights,
-                      {.width = options.width * options.supersample,
-                       .height = options.height * options.supersample,
+                      {.width = options.size.width * options.supersample,
+                       .height = options.size.height * options.supersample,
                        .gbufferLayout = options.gbufferLayout,
                        .countWork = countWork,
                        .shadowLights = options.shadowLights,
                        .rebuildShadowsEveryFrame = options.rebuildShadows,
                        .anisotropy = options.anisotropy,
-                       .display = hasExtension(options.output, ".png") ? std::optional(display) : std::nullopt,
+                       .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
                        .supersample = options.supersample,
                        .driverProfile = options.driver.profile});
     renderer.setTime(options.time);
@@ -219,16 +219,15 @@ void runRender(const RenderOptions& options)
     const bool measuring = !options.statsPath.empty();
     // A frame at 1920x1080 with thousands of lights can take minutes on a software rasteriser:
     // on a terminal, a status line says what is running (erased when done); logs stay clean.
-    const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    ProgressLine progress;
     const int total = options.frames + (measuring ? kWarmupFrames : 0);
     int started = 0;
     const auto renderOneFrame = [&] {
-        if (terminal)
-            std::fprintf(stderr, "\rrendering frame %d/%d (%s, %dx%d) ...\033[K", ++started, total,
-                         options.technique.c_str(), options.width, options.height);
+        progress.show("rendering frame " + std::to_string(++started) + "/" + std::to_string(total) + " (" +
+                      options.technique + ", " + formatSize(options.size) + ") ...");
         FrameSample sample = renderer.renderFrame(technique, options.view);
-        if (terminal && started == total)
-            std::fprintf(stderr, "\r\033[K");
+        if (started == total)
+            progress.erase();
         return sample;
     };
     for (int i = 0; measuring && i < kWarmupFrames; ++i)
@@ -241,7 +240,7 @@ void runRender(const RenderOptions& options)
     AtomicFileSet outputs;
     // The work counts before --aovs renders its views.
     const WorkCounts work = renderer.lastWorkCounts();
-    outputs.stage(options.output, "image", encodeLastFrame(renderer, technique, options, options.output));
+    outputs.stage(options.output.path, "image", encodeLastFrame(renderer, technique, options));
     if (measuring) {
         nlohmann::json stats =
             statisticsJson(options, scene, lights.size(), frames, context.description(), renderer.anisotropy(),
@@ -251,7 +250,7 @@ void runRender(const RenderOptions& options)
                             {"srgb", display.srgb},
                             {"aa", std::string(antialiasingName(display.antialiasing))},
                             {"supersample", options.supersample},
-                            {"applied", hasExtension(options.output, ".png")}};
+                            {"applied", options.output.eightBit()}};
         stats["load_ms"] = loadMs;
         outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }

@@ -16,10 +16,9 @@ namespace manylights {
 
 struct RenderOptions {
     std::string scenePath;  // empty: the built-in default scene
-    std::string output;
-    int width = 1280;
-    int height = 720;
-    std::string technique = "clustered";
+    OutputImage output;     // with a time range, a pattern of paths (apps/cli/Recording.h)
+    ImageSize size = kDefaultImageSize;
+    std::string technique{kDefaultTechnique};
     ViewMode view = ViewMode::Final;
     double time = 0.0;
     std::optional<int> lights;

@@ -20,20 +20,16 @@ int runViewCommand(int argc, const char* const* argv)
 {
     CLI::App app{"manylights view: the scene in a window (docs/viewer.md)", "manylights view"};
     ViewOptions options;
-    std::string size = "1280x720";
     // The source tree's shaders, when the binary runs where it was built: editing them reloads.
     options.shaderDirectory = MANYLIGHTS_SOURCE_DIR "/shaders";
     app.add_option("scene", options.scenePath, "Scene file (JSON); the built-in default scene if absent");
-    app.add_option("--size", size, "Window size WxH")->capture_default_str();
-    app.add_option("--technique", options.technique, "Lighting technique")
-        ->check(CLI::IsMember(techniqueNames()))
-        ->capture_default_str();
+    addSizeOption(app, options.size, "Window size WxH");
+    addTechniqueOption(app, options.technique);
     app.add_option("--view", options.view, "What to show")
         ->check(CLI::IsMember(viewModeNames()))
         ->capture_default_str();
     app.add_option("--time", options.time, "Animation start time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
-    app.add_option("--lights", options.lights, "Replace the total count of the scene's light sets")
-        ->check(CLI::Range(0, 16777216));
+    addLightCountOption(app, options.lights);
     app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
     app.add_option_function<std::string>(
            "--keymap",
@@ -52,13 +48,6 @@ int runViewCommand(int argc, const char* const* argv)
         ->capture_default_str();
     if (const std::optional<int> status = parseCommandLine(app, argc, argv))
         return *status;
-    ImageSize windowSize;
-    if (std::string problem = parseSize(size, windowSize); !problem.empty()) {
-        std::fprintf(stderr, "manylights: %s\n", printableLine(problem).c_str());
-        return kExitUsage;
-    }
-    options.width = windowSize.width;
-    options.height = windowSize.height;
     return reportingErrors([&] { runView(options); }, "in the viewer");
 }
 

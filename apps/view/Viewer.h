@@ -18,10 +18,9 @@ enum class Keymap { Default, DeferredCourse, StencilVolumes };
 const std::vector<std::string>& keymapNames();  // "default", "deferred-course", "stencil-volumes"
 
 struct ViewOptions {
-    std::string scenePath;  // empty: the built-in default scene
-    int width = 1280;
-    int height = 720;
-    std::string technique = "clustered";
+    std::string scenePath;               // empty: the built-in default scene
+    ImageSize size = kDefaultImageSize;  // the window's
+    std::string technique{kDefaultTechnique};
     std::string view = "final";
     std::optional<int> lights;
     double time = 0.0;                // the animation's start time

@@ -13,38 +13,55 @@
 
 #include "GlContextTest.h"
 #include "render/DisplayPass.h"
+#include "render/GpuScene.h"
 #include "render/Image.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
 
 namespace manylights {
 namespace {
 
 class DisplayPassTest : public GlContextTest {};
 
-// An RGBA32F texture holding `image` (rows top to bottom, as Image stores them).
-gl::Texture2D uploadLinear(const Image& image)
+// `image` (rows top to bottom, as Image stores them) into an RGBA32F texture of its size.
+void writeLinear(const Image& image, const gl::Texture2D& texture)
 {
-    gl::Texture2D texture("display test input", GL_RGBA32F, image.width, image.height);
     std::vector<float> rgba(static_cast<std::size_t>(image.width) * image.height * 4, 1.0f);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
             std::copy_n(image.pixel(x, y), 3,
                         &rgba[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4]);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
+    texture.write(GL_RGBA, GL_FLOAT, rgba.data());
+}
+
+// An RGBA32F texture holding `image`.
+gl::Texture2D uploadLinear(const Image& image)
+{
+    gl::Texture2D texture("display test input", GL_RGBA32F, image.width, image.height);
+    writeLinear(image, texture);
     return texture;
 }
 
 // The pass's 8-bit output, rows top to bottom, RGB.
 std::vector<unsigned char> runDisplay(const Image& input, const DisplaySettings& settings, int supersample = 1)
 {
-    const gl::Texture2D lit = uploadLinear(input);
+    // The pass runs as a pass of a frame: a frame of one plane whose lit image is `input`.
+    const Scene scene =
+        parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<one plane>", ".");
+    const GpuScene gpuScene(scene, expandLights(scene), driverChoices(DriverProfile::Auto));
+    FrameTargets targets(input.width, input.height);
+    writeLinear(input, targets.lit);
     DisplayPass pass;
     PassProfiler profiler;
     profiler.beginFrame();
-    pass.run(lit, settings, supersample, profiler);
+    {
+        FramePasses passes(gpuScene, targets, profiler);
+        pass.run(passes, settings, supersample);
+    }
     profiler.endFrame();
     const gl::Texture2D& out = pass.output();
     std::vector<unsigned char> rgba(static_cast<std::size_t>(out.width()) * out.height() * 4);
-    glGetTextureImage(out.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rgba.size()), rgba.data());
+    out.read(GL_RGBA, GL_UNSIGNED_BYTE, rgba.size(), rgba.data());
     std::vector<unsigned char> rgb;
     for (int y = out.height() - 1; y >= 0; --y)
         for (int x = 0; x < out.width(); ++x)

@@ -75,9 +75,12 @@ TEST_F(ShadowMapsTest, MovedObjectsRebuildEveryMap)
     ShadowMaps maps;
     maps.setLocalLightBudget(3);
     PassProfiler profiler;
+    FrameTargets targets(96, 64);
     const auto update = [&] {
         profiler.beginFrame();
-        maps.update(gpuScene, profiler);
+        FramePasses passes(gpuScene, targets, profiler);
+        maps.update(passes);
+        passes.finish();
         profiler.endFrame();
     };
     const std::uint64_t all = kDirectionalPasses + kSpotPasses + 2 * kCubePasses;

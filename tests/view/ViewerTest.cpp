@@ -404,7 +404,7 @@ TEST(Viewer, NoDisplayIsOneLineExitOne)
 
 // The seeds' keymaps (docs/viewer.md): the deferred-rendering course's 'd' deferred, 't'
 // textured forward and 'q' quit; the stencil light-volume write-up's 'v' light volumes,
-// 'p'/'o'/'i' ambient, diffuse and specular, and 'q' quit. Each screenshot equals render's
+// 'c' their corners, 'p'/'o'/'i' ambient, diffuse and specular, and 'q' quit. Each screenshot equals render's
 // picture of the same settings.
 TEST(Viewer, SeedKeymapsDoWhatTheirTablesSay)
 {
@@ -433,7 +433,23 @@ TEST(Viewer, SeedKeymapsDoWhatTheirTablesSay)
     // Without ambient, diffuse and specular light the surfaces under the wireframes go dark,
     // and the final view keeps only the emissive light markers.
     EXPECT_NE(readPng(dir / "unlit.png").rgb, volumes.rgb);
-    EXPECT_LT(meanValue(readPng(dir / "dark.png")), meanValue(renderAtWindowSize(dir / "final.png", "")) / 4);
+    const Png final = renderAtWindowSize(dir / "final.png", "");
+    EXPECT_LT(meanValue(readPng(dir / "dark.png")), meanValue(final) / 4);
+
+    // 'c': the volumes' corners only (render's volume-corners view), points where 'v' draws
+    // edges; again, the lit final view.
+    ASSERT_EQ(runViewer(dir,
+                        "pause\nframes 2\nkey c\nframes 2\nscreenshot corners.png\nkey c\nframes 2\n"
+                        "screenshot corners-off.png\nkey q\nframes 100000\n",
+                        "--keymap stencil-volumes"),
+              0)
+        << readText(dir / "viewer.log");
+    const Png corners = readPng(dir / "corners.png");
+    expectEqualWithinOneLevel(corners, renderAtWindowSize(dir / "corners-reference.png", "--view volume-corners"),
+                              "volume corners");
+    EXPECT_NE(corners.rgb, volumes.rgb);
+    EXPECT_NE(corners.rgb, final.rgb);
+    expectEqualWithinOneLevel(readPng(dir / "corners-off.png"), final, "final after c twice");
 }
 
 TEST(Viewer, BadCommandLineIsExitTwo)
