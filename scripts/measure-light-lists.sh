@@ -8,8 +8,10 @@
 #
 #   scripts/measure-light-lists.sh
 #   OLD=/tmp/before/build/manylights scripts/measure-light-lists.sh
-#        also that build's frames at 1,024, 4,096 and 16,384 lights, interleaved with this
-#        build's (e.g. git worktree add /tmp/before 029410a && make -C /tmp/before build)
+#        also that build's frames at 1,024, 4,096 and 16,384 lights (OLD_LIGHTS), interleaved
+#        with this build's (e.g. git worktree add /tmp/before 029410a && make -C /tmp/before build)
+#   OLD=... OLD_ONLY=1 OLD_LIGHTS=1024,16384,1048576 scripts/measure-light-lists.sh
+#        that comparison alone
 #   LIGHTS=1024,16384 SIZE=640x360 FRAMES=1 scripts/measure-light-lists.sh   a quicker look
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,13 +22,21 @@ mkdir -p out docs/images
 source scripts/measure-common.sh
 if [ -n "${OLD:-}" ]; then
   echo "== the build before against this one, interleaved (frame ms, median of $frames)"
+  old_lights=${OLD_LIGHTS:-1024,4096,16384}
+  cases=$((2 * $(echo "$old_lights" | tr ',' '\n' | wc -l)))
+  # A build from before the display pass (029410a) has no --classic and no display pass to leave out.
+  classic() { "$1" bench --help | grep -q -- --classic && echo --classic || true; }
   for round in 1 2; do
     for binary in "$OLD" "$ML"; do
-      "$binary" bench bench/courtyard.json --techniques clustered,tiled --lights 1024,4096,16384 --size "$size" \
-        --frames "$frames" --warmup 1 $([ "$binary" = "$ML" ] && echo --classic) | tail -n 6 |
+      "$binary" bench bench/courtyard.json --techniques clustered,tiled --lights "$old_lights" --size "$size" \
+        --frames "$frames" --warmup 1 $(classic "$binary") | tail -n "$cases" |
         sed "s|^|round $round $([ "$binary" = "$ML" ] && echo this || echo before): |"
     done
   done
+  if [ -n "${OLD_ONLY:-}" ]; then
+    echo "machine after: load average $(cut -d' ' -f1-3 /proc/loadavg)"
+    exit 0
+  fi
 fi
 echo "== $ML bench bench/courtyard.json --techniques clustered,tiled --lights $lights --size $size --classic"
 "$ML" bench bench/courtyard.json --techniques clustered,tiled --lights "$lights" --size "$size" \
