@@ -35,7 +35,6 @@
 #include "core/InputFile.h"
 #include "scene/GltfFieldChecks.h"
 #include "scene/Meshes.h"
-#include "scene/Shininess.h"
 
 namespace manylights {
 
@@ -350,8 +349,9 @@ private:
                 fail(where + ": color needs 3 numbers, has " + std::to_string(source.color.size()));
             colour = glm::vec3(source.color[0], source.color[1], source.color[2]);
         }
-        // Candela are taken as the scene's unit-less intensity, one to one.
-        const glm::vec3 intensity = colour * static_cast<float>(source.intensity);
+        // Candela divided by π (docs/lighting.md, "Units"): with the lighting's k = π, a pixel is
+        // then the physical radiance, in nits, of the surfaces the light reaches.
+        const glm::vec3 intensity = colour * static_cast<float>(source.intensity / std::numbers::pi);
         if (!std::isfinite(intensity.x + intensity.y + intensity.z) ||
             glm::any(glm::lessThan(intensity, glm::vec3{0.0f})))
             fail(where + ": color and intensity must be finite and not negative");
@@ -746,14 +746,10 @@ private:
             fail(where + ": metallicFactor and roughnessFactor must be in [0, 1]");
         Material material;
         material.name = displayName_ + "#" + (source.name.empty() ? where : source.name);
-        // Metallic-roughness to Blinn-Phong: metals have no diffuse and a specular of the base
-        // colour, dielectrics a 4% grey specular (Material::specularTint holds the base-colour
-        // part); roughness gives the exponent (blinnPhongExponent). The shader repeats this per
-        // texel when the material has a metallic-roughness map (shaders/lib/material.glsl).
-        material.diffuse = baseColour * (1.0f - metallic);
-        material.specular = glm::vec3{0.04f * (1.0f - metallic)};
-        material.specularTint = baseColour * metallic;
-        material.shininess = blinnPhongExponent(roughness);
+        // glTF's own model (docs/lighting.md); scene/MaterialModels.h maps it to Blinn-Phong for
+        // a scene that asks for it (`"model_materials": "blinn-phong"`).
+        material.model = ShadingModel::MetallicRoughness;
+        material.baseColor = baseColour;
         material.metallicFactor = metallic;
         material.roughnessFactor = roughness;
         material.emissive = colour(source.emissiveFactor, 3, "emissiveFactor");
@@ -765,6 +761,11 @@ private:
         material.normalScale = static_cast<float>(source.normalTexture.scale);
         if (!std::isfinite(material.normalScale))
             fail(where + ".normalTexture: scale is not finite");
+        material.occlusionMap =
+            texturePath(source.occlusionTexture, where + ".occlusionTexture", material, kOcclusionSlot);
+        material.occlusionStrength = static_cast<float>(source.occlusionTexture.strength);
+        if (!(material.occlusionStrength >= 0.0f && material.occlusionStrength <= 1.0f))
+            fail(where + ".occlusionTexture: strength must be in [0, 1]");
         if (const auto found = source.extensions.find("KHR_materials_emissive_strength");
             found != source.extensions.end() && found->second.Has("emissiveStrength")) {
             const tinygltf::Value& strength = found->second.Get("emissiveStrength");

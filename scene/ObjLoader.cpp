@@ -439,6 +439,37 @@ void readTextureOptions(const tinyobj::texture_option_t& options, const MtlLibra
         material.wraps[slot] = {TextureWrap::ClampToEdge, TextureWrap::ClampToEdge};
 }
 
+// MTL's PBR extension (Pr roughness, Pm metallic, map_Pr, map_Pm) makes the material a
+// metallic-roughness one (docs/scene-format.md, "Model files"), its base colour Kd and map_Kd.
+// tinyobjloader reads an absent Pr or Pm as 0, so a material with both at 0 and neither map stays
+// Blinn-Phong. The shader reads one metallic-roughness map with glTF's channels (G roughness,
+// B metallic): map_Pr and map_Pm naming the same image are read so; other maps are noted and
+// left out (their factors stand).
+void readPbrKeys(const tinyobj::material_t& source, MtlLibrary& library, Material& material)
+{
+    const bool hasMaps = !source.roughness_texname.empty() || !source.metallic_texname.empty();
+    if (source.roughness == 0.0f && source.metallic == 0.0f && !hasMaps)
+        return;
+    const float roughness = source.roughness;
+    const float metallic = source.metallic;
+    if (!(roughness >= 0.0f && roughness <= 1.0f) || !(metallic >= 0.0f && metallic <= 1.0f))
+        fail(library.displayName, "material '" + source.name + "': Pr and Pm must be in [0, 1]");
+    material.model = ShadingModel::MetallicRoughness;
+    material.baseColor = material.diffuse;
+    // A map without its factor is taken at face value (factor 1), as glTF's default factors are.
+    material.roughnessFactor = source.roughness_texname.empty() || roughness > 0.0f ? roughness : 1.0f;
+    material.metallicFactor = source.metallic_texname.empty() || metallic > 0.0f ? metallic : 1.0f;
+    if (source.roughness_texname == source.metallic_texname) {
+        material.metallicRoughnessMap = mapPath(library, source.name, "map_Pr", source.roughness_texname);
+        readTextureOptions(source.roughness_texopt, library, source.name, material, kSpecularSlot);
+    } else {
+        library.warnings.noteFile("map_Pr map_Pm", "material '" + source.name +
+                                                       "': map_Pr and map_Pm in separate images are not read "
+                                                       "(one image with glTF's channels is: G roughness, B metallic)");
+    }
+    material.specularMap.clear();
+}
+
 Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library, const std::string& objName)
 {
     Material material;
@@ -480,6 +511,7 @@ Material convertMaterial(const tinyobj::material_t& source, MtlLibrary& library,
     // texture with no Kd is taken at face value (Kd = 1).
     if (!material.diffuseMap.empty() && material.diffuse == glm::vec3{0.0f})
         material.diffuse = glm::vec3{1.0f};
+    readPbrKeys(source, library, material);
     return material;
 }
 

@@ -99,6 +99,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::Sampler, "rawOcclusion"}, RAW_OCCLUSION_UNIT},
         {{Kind::Sampler, "emissiveMap"}, EMISSIVE_MAP_UNIT},
         {{Kind::Sampler, "opacityMap"}, OPACITY_MAP_UNIT},
+        {{Kind::Sampler, "occlusionMap"}, OCCLUSION_MAP_UNIT},
         {{Kind::Sampler, "lightTexels"}, LIGHT_TEXELS_UNIT},
         {{Kind::Sampler, "clusterListTexels"}, CLUSTER_LIST_TEXELS_UNIT},
         {{Kind::Image, "lightEvaluations"}, LIGHT_EVALUATIONS_IMAGE_UNIT},
