@@ -52,13 +52,9 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
 const char* const kTopCamera = R"("camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1],
                                       "fov_y": 60, "near": 0.1, "far": 100})";
 
-// A glTF file of one quad: `corners` in order (glTF's front face is counter-clockwise seen from
-// the side it faces), one `normal` for all four, glTF uvs (0, 1), (1, 1), (1, 0), (0, 0) (the
-// texture's bottom-left, bottom-right, top-right, top-left) and RGBA vertex colours if given,
-// drawn with `material`; `images` are paths for the textures 0, 1, ... in that order.
 void writeQuadGltf(const std::filesystem::path& path, const std::array<glm::vec3, 4>& corners, const glm::vec3& normal,
                    const std::optional<std::array<glm::vec4, 4>>& colours, const nlohmann::json& material,
-                   const std::vector<std::string>& images = {})
+                   const std::vector<std::string>& images)
 {
     std::vector<float> floats;
     for (const glm::vec3& corner : corners)

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <string>
 
-#include "core/Error.h"
 #include "scene/MaterialModels.h"
 #include "scene/SceneLoader.h"
 #include "scene/Shininess.h"
+#include "tests/unit/ErrorOf.h"
 
 namespace manylights {
 namespace {
@@ -21,15 +21,10 @@ const fs::path kSceneDir = fs::path(MANYLIGHTS_TEST_DATA_DIR) / "scene";
 
 Scene parse(const std::string& json) { return parseScene(json, "scene.json", kSceneDir); }
 
+// The message of the Error that parsing `json` throws (tests/unit/ErrorOf.h).
 std::string errorOf(const std::string& json)
 {
-    try {
-        parse(json);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no error for " << json;
-    return {};
+    return test::errorOf([&] { parse(json); });
 }
 
 TEST(MetallicRoughnessMaterials, KeysMakeAMetallicRoughnessMaterial)
@@ -83,16 +78,17 @@ constexpr const char* kMixing = "': a material is either Blinn-Phong (diffuse, s
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadMetallicRoughness,
-    ::testing::Values(BadMaterial{"MetallicAboveOne", R"json({"materials": {"m": {"metallic": 1.5}}})json",
-                                  "scene.json: /materials/m/metallic: must be in [0, 1], got 1.5"},
-                      BadMaterial{"RoughnessBelowZero", R"json({"materials": {"m": {"roughness": -0.25}}})json",
-                                  "scene.json: /materials/m/roughness: must be in [0, 1], got -0.25"},
-                      BadMaterial{"MetallicString", R"json({"materials": {"m": {"metallic": "1"}}})json",
-                                  "scene.json: /materials/m/metallic: expected a number, got a string"},
-                      BadMaterial{"BaseColorTooShort", R"json({"materials": {"m": {"base_color": [1, 1]}}})json",
-                                  "scene.json: /materials/m/base_color: expected 3 numbers, got 2"},
-                      BadMaterial{"BaseColorNegative", R"json({"materials": {"m": {"base_color": [1, -1, 1]}}})json",
-                                  "scene.json: /materials/m/base_color/1: must be >= 0, got -1"}),
+    ::testing::Values(
+        BadMaterial{"MetallicAboveOne", R"json({"materials": {"m": {"metallic": 1.5}}})json",
+                    "scene.json: /materials/m/metallic: must be in [0, 1], got 1.5"},
+        BadMaterial{"RoughnessBelowZero", R"json({"materials": {"m": {"roughness": -0.25}}})json",
+                    "scene.json: /materials/m/roughness: must be in [0, 1], got -0.25"},
+        BadMaterial{"MetallicString", R"json({"materials": {"m": {"metallic": "1"}}})json",
+                    "scene.json: /materials/m/metallic: expected a number, got a string"},
+        BadMaterial{"BaseColorTooShort", R"json({"materials": {"m": {"base_color": [1, 1]}}})json",
+                    "scene.json: /materials/m/base_color: expected an array of 3 numbers, got an array of 2 elements"},
+        BadMaterial{"BaseColorNegative", R"json({"materials": {"m": {"base_color": [1, -1, 1]}}})json",
+                    "scene.json: /materials/m/base_color/1: must be >= 0, got -1"}),
     [](const ::testing::TestParamInfo<BadMaterial>& param) { return param.param.name; });
 
 TEST(MetallicRoughnessMaterials, MixingNamesBothKeys)
