@@ -166,7 +166,8 @@ INSTANTIATE_TEST_SUITE_P(
         // past one light batch, the grid rebuilt per layer and batch.
         AgreementCase{"glass_transparency", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json", {"--size", "320x180"}},
         // Both reflection models in one scene (issue 31): Blinn-Phong and metallic-roughness
-        // surfaces side by side under every kind of light, and the textured glTF bottle of
+        // surfaces side by side under every kind of light (a transparent metallic-roughness
+        // ball in the transparency pass), and the textured glTF bottle of
         // scenes/pbr-models.json (base colour, occlusion-roughness-metallic, normal and
         // emissive maps) under its coloured lights.
         AgreementCase{"mixed_models", kScenes + "mixed_models.json", {"--size", "200x120"}},
