@@ -143,7 +143,8 @@ void DrawList::loadMaterialMaps(const Scene& scene)
              load(material.normalMap, TextureColourSpace::Linear, "normal_map"),
              load(material.emissiveMap, TextureColourSpace::Srgb, "emissive map"),
              load(material.metallicRoughnessMap, TextureColourSpace::Linear, "metallic-roughness map"),
-             load(material.opacityMap, TextureColourSpace::Linear, "opacity_map")});
+             load(material.opacityMap, TextureColourSpace::Linear, "opacity_map"),
+             load(material.occlusionMap, TextureColourSpace::Linear, "occlusion_map")});
         // The two share the specular map's unit (scene/Scene.h MaterialMapSlot).
         ML_ASSERT(!materialMaps_.back().specular || !materialMaps_.back().metallicRoughness);
     }
@@ -155,6 +156,11 @@ SpecularExponents DrawList::specularExponents() const
     for (const DrawItem& draw : draws_)
         drawnMaterials.push_back(draw.material);
     return specularExponentsOf(drawnMaterials);
+}
+
+bool DrawList::drawsModel(ShadingModel model) const
+{
+    return std::ranges::any_of(draws_, [&](const DrawItem& draw) { return draw.material->model == model; });
 }
 
 Mesh DrawList::lightMarkerMesh() { return makeSphere(1.0f, kMarkerSlices, kMarkerStacks); }
@@ -301,8 +307,16 @@ void DrawList::writeInstances()
         for (int column = 0; column < 3; ++column)
             instance.normalMatrix[column] = glm::vec4(draw.normalMatrix[column], 0.0f);
         const Material& material = *draw.material;
-        instance.diffuse = glm::vec4(material.diffuse, material.opacity);
-        instance.specularShininess = glm::vec4(material.specular, material.shininess);
+        if (material.model == ShadingModel::MetallicRoughness) {
+            // shaders/lib/material.glsl reads them as base colour and (metallic, roughness,
+            // occlusion strength).
+            instance.diffuse = glm::vec4(material.baseColor, material.opacity);
+            instance.specularShininess =
+                glm::vec4(material.metallicFactor, material.roughnessFactor, material.occlusionStrength, 1.0f);
+        } else {
+            instance.diffuse = glm::vec4(material.diffuse, material.opacity);
+            instance.specularShininess = glm::vec4(material.specular, material.shininess);
+        }
         instance.emissive = glm::vec4(material.emissive, material.alphaCutoff);
         instance.specularTint = glm::vec4(material.specularTint, 0.0f);
     }
@@ -435,12 +449,18 @@ MaterialVariant DrawList::materialVariant(const Material& material, const Materi
         (maps.normal ? kNormalMapBit : 0) | (maps.emissive ? kEmissiveMapBit : 0) |
         (maps.metallicRoughness ? kMetallicRoughnessMapBit : 0) | (maps.opacity ? kOpacityMapBit : 0) |
         (material.alphaMode == AlphaMode::Mask ? kAlphaMaskBit : 0) | (range.vertexColours ? kVertexColoursBit : 0) |
-        // The metallic-roughness map's per-texel mapping reads the base colour as diffuse + tint.
-        (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness ? kSpecularTintBit : 0) |
+        // The metallic-roughness map's per-texel mapping to Blinn-Phong reads the base colour as
+        // diffuse + tint.
+        (material.model == ShadingModel::BlinnPhong &&
+                 (material.specularTint != glm::vec3{0.0f} || maps.metallicRoughness)
+             ? kSpecularTintBit
+             : 0) |
         (material.sides == Sides::BothFlipped ? kFlipBackFacesBit : 0) | (isTransparent(material) ? kBlendBit : 0) |
         (std::ranges::any_of(material.uvTransforms, [](const glm::mat3& m) { return m != glm::mat3{1.0f}; })
              ? kUvTransformsBit
-             : 0));
+             : 0) |
+        (material.model == ShadingModel::MetallicRoughness ? kMetallicRoughnessModelBit : 0) |
+        (maps.occlusion ? kOcclusionMapBit : 0));
 }
 
 DrawList::FaceState DrawList::faceStateOf(const DrawItem& draw)
@@ -464,12 +484,14 @@ void DrawList::bindMaterial(const gl::Program& program, const Material& material
         kNormalUvTransform = locations::NORMAL_UV_TRANSFORM_LOCATION,
         kEmissiveUvTransform = locations::EMISSIVE_UV_TRANSFORM_LOCATION,
         kOpacityUvTransform = locations::OPACITY_UV_TRANSFORM_LOCATION,
+        kOcclusionUvTransform = locations::OCCLUSION_UV_TRANSFORM_LOCATION,
     };
     constexpr GLuint kDiffuseUnit = bindings::DIFFUSE_MAP_UNIT;
     constexpr GLuint kSpecularUnit = bindings::SPECULAR_MAP_UNIT;
     constexpr GLuint kNormalUnit = bindings::NORMAL_MAP_UNIT;
     constexpr GLuint kEmissiveUnit = bindings::EMISSIVE_MAP_UNIT;
     constexpr GLuint kOpacityUnit = bindings::OPACITY_MAP_UNIT;
+    constexpr GLuint kOcclusionUnit = bindings::OCCLUSION_MAP_UNIT;
     const auto glWrap = [](TextureWrap wrap) -> GLenum {
         switch (wrap) {
         case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
@@ -490,12 +512,16 @@ void DrawList::bindMaterial(const gl::Program& program, const Material& material
     };
     bind(maps.diffuse, kDiffuseUnit, kDiffuseUvTransform, kDiffuseSlot);
     bind(maps.specular, kSpecularUnit, kSpecularUvTransform, kSpecularSlot);
-    if (bind(maps.metallicRoughness, kSpecularUnit, kSpecularUvTransform, kSpecularSlot))
+    // The metallic-roughness model reads its factors from the instance record; the mapping to
+    // Blinn-Phong from this uniform.
+    if (bind(maps.metallicRoughness, kSpecularUnit, kSpecularUvTransform, kSpecularSlot) &&
+        material.model == ShadingModel::BlinnPhong)
         program.set(kMetallicRoughness, glm::vec2(material.metallicFactor, material.roughnessFactor));
     if (bind(maps.normal, kNormalUnit, kNormalUvTransform, kNormalSlot))
         program.set(kNormalScale, material.normalScale);
     bind(maps.emissive, kEmissiveUnit, kEmissiveUvTransform, kEmissiveSlot);
     bind(maps.opacity, kOpacityUnit, kOpacityUvTransform, kOpacitySlot);
+    bind(maps.occlusion, kOcclusionUnit, kOcclusionUvTransform, kOcclusionSlot);
 }
 
 Bounds DrawList::objectsWorldBounds() const

@@ -93,6 +93,8 @@ public:
     static Mesh lightMarkerMesh();
     // The shininesses the drawn materials raise N·H to (specularExponentsOf).
     SpecularExponents specularExponents() const;
+    // Whether any drawn item (light markers included) is shaded by `model`.
+    bool drawsModel(ShadingModel model) const;
 
     const TextureCache& textures() const { return textures_; }
     // Material textures' anisotropic filtering (TextureCache::setAnisotropy).
@@ -119,6 +121,7 @@ private:
         const gl::MipmappedTexture2D* emissive = nullptr;
         const gl::MipmappedTexture2D* metallicRoughness = nullptr;  // in the specular map's unit
         const gl::MipmappedTexture2D* opacity = nullptr;
+        const gl::MipmappedTexture2D* occlusion = nullptr;
     };
     struct DrawItem {
         glm::mat4 model;

@@ -25,6 +25,8 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
 {
     std::set<float> shininesses;
     for (const Material* material : materials) {
+        if (material->model == ShadingModel::MetallicRoughness)
+            continue;
         if (!material->metallicRoughnessMap.empty())
             return {};
         if (material->specular != glm::vec3{0.0f} || material->specularTint != glm::vec3{0.0f})
@@ -58,6 +60,11 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
     if (!features.ambientOcclusion)
         defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
+    // A program for no surfaces at all (a scene without objects) keeps Blinn-Phong.
+    if (!features.metallicRoughness)
+        defines.emplace_back("NO_METALLIC_ROUGHNESS", "1");
+    else if (!features.blinnPhong)
+        defines.emplace_back("NO_BLINN_PHONG", "1");
     if (!features.specularExponents.empty()) {
         std::string list;
         for (const std::uint16_t exponent : features.specularExponents)

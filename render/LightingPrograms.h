@@ -57,6 +57,11 @@ struct LightingFeatures {
     // integers to raise N·H to by multiplications (specularExponentsOf), else empty: pow() costs
     // a quarter of a lighting pass on llvmpipe (docs/performance.md).
     SpecularExponents specularExponents{};
+    // The reflection models the drawn surfaces use (DrawList::shadingModels): a program for one
+    // of them leaves the other out (NO_BLINN_PHONG, NO_METALLIC_ROUGHNESS), so that a scene of
+    // one model pays nothing for the other's code (llvmpipe runs both sides of a select).
+    bool blinnPhong = true;
+    bool metallicRoughness = true;
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
@@ -71,11 +76,13 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
 // and their integerPowerMultiplications sum to at most kSpecularMultiplicationBudget; else none.
 // A material without a specular term (its specular colour and tint zero, as a light
 // marker's) is shaded the same by any exponent and does not count; one with a
-// metallic-roughness map has a shininess per texel and rules them out.
+// metallic-roughness map has a shininess per texel and rules them out. Metallic-roughness
+// materials (ShadingModel::MetallicRoughness) have no shininess and do not count.
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, and SPECULAR_EXPONENT_COUNT
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, NO_BLINN_PHONG,
+// NO_METALLIC_ROUGHNESS, and SPECULAR_EXPONENT_COUNT
 // with SPECULAR_EXPONENTS, as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
@@ -108,14 +115,16 @@ inline constexpr MaterialVariant kEmissiveMapBit = 8;
 inline constexpr MaterialVariant kMetallicRoughnessMapBit = 16;  // in the specular map's unit
 inline constexpr MaterialVariant kAlphaMaskBit = 32;
 inline constexpr MaterialVariant kVertexColoursBit = 64;
-inline constexpr MaterialVariant kSpecularTintBit = 128;   // Material::specularTint not zero
-inline constexpr MaterialVariant kFlipBackFacesBit = 256;  // Sides::BothFlipped
-inline constexpr MaterialVariant kBlendBit = 512;          // AlphaMode::Blend: the coverage is the opacity
-inline constexpr MaterialVariant kOpacityMapBit = 1024;    // Material::opacityMap
-inline constexpr MaterialVariant kUvTransformsBit = 2048;  // a Material::uvTransforms other than the identity
+inline constexpr MaterialVariant kSpecularTintBit = 128;             // Material::specularTint not zero
+inline constexpr MaterialVariant kFlipBackFacesBit = 256;            // Sides::BothFlipped
+inline constexpr MaterialVariant kBlendBit = 512;                    // AlphaMode::Blend: the coverage is the opacity
+inline constexpr MaterialVariant kOpacityMapBit = 1024;              // Material::opacityMap
+inline constexpr MaterialVariant kUvTransformsBit = 2048;            // a Material::uvTransforms other than the identity
+inline constexpr MaterialVariant kMetallicRoughnessModelBit = 4096;  // ShadingModel::MetallicRoughness
+inline constexpr MaterialVariant kOcclusionMapBit = 8192;            // Material::occlusionMap
 // The bits that mean a texture is bound per draw (such draws are not instanced).
-inline constexpr MaterialVariant kTextureBits =
-    kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit | kMetallicRoughnessMapBit | kOpacityMapBit;
+inline constexpr MaterialVariant kTextureBits = kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit |
+                                                kMetallicRoughnessMapBit | kOpacityMapBit | kOcclusionMapBit;
 // What a depth-only pass (shaders/shadow_depth.*) needs of a variant: a masked surface's coverage.
 inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
 {

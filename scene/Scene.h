@@ -118,8 +118,14 @@ enum MaterialMapSlot : std::size_t {
     kNormalSlot,
     kEmissiveSlot,
     kOpacitySlot,
+    kOcclusionSlot,
     kMaterialMapSlots
 };
+
+// The reflection model that shades a material (docs/lighting.md): the classic Blinn-Phong of
+// `diffuse`/`specular`/`shininess`, or glTF 2.0's metallic-roughness BRDF of `baseColor`,
+// `metallicFactor` and `roughnessFactor`.
+enum class ShadingModel : std::uint8_t { BlinnPhong, MetallicRoughness };
 
 // Opaque ignores the coverage; Mask cuts the surface where it is below alphaCutoff; Blend draws
 // the surface see-through, "over" what lies behind it with the coverage as its opacity
@@ -173,10 +179,20 @@ struct Material {
     float metallicFactor = 0.0f;
     float roughnessFactor = 1.0f;
 
+    // The model that shades the material. A MetallicRoughness material is shaded by glTF's BRDF
+    // from baseColor, metallicFactor and roughnessFactor (times the base colour and
+    // metallic-roughness maps), and ignores diffuse, specular, specularTint and shininess.
+    ShadingModel model = ShadingModel::BlinnPhong;
+    glm::vec3 baseColor{1.0f};
+    // glTF occlusionTexture (red channel, linear): ambient occlusion baked into the model, which
+    // dims the ambient term by 1 + strength · (texel − 1). MetallicRoughness materials only.
+    std::string occlusionMap;
+    float occlusionStrength = 1.0f;
+
     // Texture-coordinate transforms per map slot (glTF KHR_texture_transform), in the mesh's uv
     // convention (origin at the bottom left): uv' = M · (u, v, 1). Identity unless a file says.
     std::array<glm::mat3, kMaterialMapSlots> uvTransforms{glm::mat3{1.0f}, glm::mat3{1.0f}, glm::mat3{1.0f},
-                                                          glm::mat3{1.0f}, glm::mat3{1.0f}};
+                                                          glm::mat3{1.0f}, glm::mat3{1.0f}, glm::mat3{1.0f}};
     std::array<MapWrap, kMaterialMapSlots> wraps{};  // repeat unless a file's sampler says
 
     // Coverage: opacity (the scene file's `opacity`, glTF baseColorFactor's alpha, MTL `d`)

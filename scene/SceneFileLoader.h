@@ -78,6 +78,9 @@ private:
     // --- SceneFileMaterials.cpp --------------------------------------------------
     void readMaterials(const Node& node);
     Material readMaterial(const Node& node) const;
+    // The keys of one model (readMaterial has checked that the other's are absent).
+    void readBlinnPhong(const Node& node, Material& material) const;
+    void readMetallicRoughness(const Node& node, Material& material) const;
 
     // Textures are only checked to exist for now; the render layer loads them.
     std::string texturePath(const Node& material, std::string_view key) const;
@@ -110,6 +113,9 @@ private:
     std::map<std::string, std::size_t> meshCache_;
     std::optional<RevolutionProfile> dynamicRevolution_;  // set by the mesh of the object being read
     std::map<std::string, LoadedModel> modelCache_;
+    // `"model_materials": "blinn-phong"`: model files' metallic-roughness materials are mapped to
+    // Blinn-Phong as before issue 31 (scene/MaterialModels.h).
+    bool modelMaterialsAsBlinnPhong_ = false;
 };
 
 }  // namespace manylights::scene_file

@@ -1,6 +1,8 @@
 // The scene file's materials (scene/SceneFileLoader.h has the index).
 #include "scene/SceneFileLoader.h"
 
+#include <array>
+
 namespace manylights::scene_file {
 
 using namespace scene_json;  // the wording of messages (scene/JsonText.h)
@@ -19,21 +21,42 @@ void Loader::readMaterials(const Node& node)
     }
 }
 
+namespace {
+
+// The keys of each reflection model (docs/scene-format.md, "Materials"); the others (emissive,
+// normal map, opacity) belong to both.
+constexpr std::array kBlinnPhongKeys{"diffuse", "specular", "shininess", "diffuse_map", "specular_map"};
+constexpr std::array kMetallicRoughnessKeys{
+    "base_color", "metallic", "roughness", "base_color_map", "metallic_roughness_map", "occlusion_map"};
+
+}  // namespace
+
 Material Loader::readMaterial(const Node& node) const
 {
     expectKeys(node, {"diffuse", "specular", "shininess", "emissive", "diffuse_map", "specular_map", "normal_map",
-                      "normal_scale", "opacity", "opacity_map"});
+                      "normal_scale", "opacity", "opacity_map", "base_color", "metallic", "roughness", "base_color_map",
+                      "metallic_roughness_map", "occlusion_map"});
+    // A material is of one model: a key of the other would be silently ignored.
+    const auto firstOf = [&](const auto& keys) -> const char* {
+        for (const char* key : keys)
+            if (member(node, key))
+                return key;
+        return nullptr;
+    };
+    const char* blinnPhongKey = firstOf(kBlinnPhongKeys);
+    const char* metallicRoughnessKey = firstOf(kMetallicRoughnessKeys);
+    if (blinnPhongKey && metallicRoughnessKey)
+        fail(*member(node, blinnPhongKey), std::string("'") + blinnPhongKey + "' cannot be mixed with '" +
+                                               metallicRoughnessKey +
+                                               "': a material is either Blinn-Phong (diffuse, specular, "
+                                               "shininess) or metallic-roughness (base_color, metallic, roughness)");
     Material material;
-    if (const auto diffuse = member(node, "diffuse"))
-        material.diffuse = colour(*diffuse);
-    if (const auto specular = member(node, "specular"))
-        material.specular = colour(*specular);
-    if (const auto value = member(node, "shininess"))
-        material.shininess = shininess(*value);
+    if (metallicRoughnessKey)
+        readMetallicRoughness(node, material);
+    else
+        readBlinnPhong(node, material);
     if (const auto emissive = member(node, "emissive"))
         material.emissive = colour(*emissive);
-    material.diffuseMap = texturePath(node, "diffuse_map");
-    material.specularMap = texturePath(node, "specular_map");
     material.normalMap = texturePath(node, "normal_map");
     if (const auto value = member(node, "normal_scale"))
         material.normalScale = number(*value);
@@ -50,6 +73,43 @@ Material Loader::readMaterial(const Node& node) const
     if (!material.opacityMap.empty())
         material.alphaMode = AlphaMode::Blend;
     return material;
+}
+
+void Loader::readBlinnPhong(const Node& node, Material& material) const
+{
+    if (const auto diffuse = member(node, "diffuse"))
+        material.diffuse = colour(*diffuse);
+    if (const auto specular = member(node, "specular"))
+        material.specular = colour(*specular);
+    if (const auto value = member(node, "shininess"))
+        material.shininess = shininess(*value);
+    material.diffuseMap = texturePath(node, "diffuse_map");
+    material.specularMap = texturePath(node, "specular_map");
+}
+
+void Loader::readMetallicRoughness(const Node& node, Material& material) const
+{
+    material.model = ShadingModel::MetallicRoughness;
+    // The defaults: the Blinn-Phong default's grey, a dielectric, fully rough (glTF's roughness).
+    material.baseColor = glm::vec3{0.8f};
+    material.metallicFactor = 0.0f;
+    material.roughnessFactor = 1.0f;
+    if (const auto value = member(node, "base_color"))
+        material.baseColor = colour(*value);
+    const auto unitInterval = [&](const char* key, float& field) {
+        if (const auto value = member(node, key)) {
+            field = number(*value);
+            if (!(field >= 0.0f && field <= 1.0f))
+                fail(*value, "must be in [0, 1], got " + describeValue(*value->json));
+        }
+    };
+    unitInterval("metallic", material.metallicFactor);
+    unitInterval("roughness", material.roughnessFactor);
+    // The base colour map is sRGB colour in the diffuse map's slot; the metallic-roughness map
+    // has glTF's channels (G roughness, B metallic) in the specular map's.
+    material.diffuseMap = texturePath(node, "base_color_map");
+    material.metallicRoughnessMap = texturePath(node, "metallic_roughness_map");
+    material.occlusionMap = texturePath(node, "occlusion_map");
 }
 
 std::string Loader::texturePath(const Node& material, std::string_view key) const

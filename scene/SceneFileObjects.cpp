@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/GltfLoader.h"
+#include "scene/MaterialModels.h"
 #include "scene/Meshes.h"
 #include "scene/ObjLoader.h"
 #include "scene/Tangents.h"
@@ -167,7 +168,7 @@ const Loader::LoadedModel& Loader::modelFile(const Node& node)
     const std::size_t materialOffset = scene_.materials.size();
     const std::size_t meshOffset = scene_.meshes.size();
     for (Material& material : model.materials)
-        scene_.materials.push_back(std::move(material));
+        scene_.materials.push_back(modelMaterialsAsBlinnPhong_ ? blinnPhongMapping(material) : std::move(material));
     for (Mesh& mesh : model.meshes) {
         for (SubMesh& range : mesh.subMeshes)
             if (range.material)

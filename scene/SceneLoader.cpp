@@ -18,7 +18,10 @@ Scene Loader::load(const Json& root)
     if (!root.is_object())
         fail(top, "the top level must be a JSON object, got " + describeType(root));
     expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights", "light_sets",
-                     "materials", "objects", "light_markers", "ssao", "display"});
+                     "materials", "objects", "light_markers", "ssao", "display", "model_materials"});
+    // Before the objects, which load the model files it applies to.
+    if (const auto node = member(top, "model_materials"))
+        modelMaterialsAsBlinnPhong_ = oneOf(*node, {"metallic-roughness", "blinn-phong"}) == "blinn-phong";
     if (const auto node = member(top, "camera"))
         readCamera(*node);
     if (const auto node = member(top, "background"))

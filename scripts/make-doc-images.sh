@@ -32,6 +32,9 @@ $ml render scenes/glass.json -o $out/scene-glass.png --size 960x540 --technique 
 $ml render scenes/glass.json -o $out/glass-light-count-clustered.png --size 640x360 --technique clustered \
   --view light-count
 
+# The metallic-roughness model beside the old Blinn-Phong mapping (docs/lighting.md).
+scripts/make-pbr-images.sh
+
 # The techniques side by side (docs/techniques.md).
 for technique in forward deferred volumes stencil tiled-quads tiled clustered; do
   $ml render -o $out/technique-$technique.png --size 640x360 --technique $technique

@@ -19,13 +19,19 @@ layout(location = 4) out vec4 outEmissive;
 void main()
 {
     Surface s = meshSurface();
+    // s.metallicRoughness is the material variant's constant: each program packs one model.
 #ifdef GBUFFER_COMPACT
-    outSurface = packSurface(viewDepth(s.position), s.normal, s.diffuse, s.specular, s.shininess);
+    // The base colour from c_diff + F0 − 0.04 · (1 − metallic) (lib/lighting.glsl Surface).
+    vec3 baseColour = s.diffuse + s.specular - vec3(0.04 * (1.0 - s.metallic));
+    outSurface = s.metallicRoughness
+                     ? packMetallicRoughnessSurface(viewDepth(s.position), s.normal, baseColour, s.metallic, s.roughness)
+                     : packSurface(viewDepth(s.position), s.normal, s.diffuse, s.specular, s.shininess);
 #else
-    outPositionShininess = vec4(s.position, s.shininess);
+    // The seed layout keeps c_diff and F0 as floats, and roughness in the shininess's place.
+    outPositionShininess = vec4(s.position, s.metallicRoughness ? s.roughness : s.shininess);
     outNormal = vec4(s.normal, 0.0);
     outDiffuse = vec4(s.diffuse, 1.0);
     outSpecular = vec4(s.specular, 1.0);
 #endif
-    outEmissive = vec4(s.emissive, 1.0);
+    outEmissive = vec4(s.emissive, packModelOcclusion(s.metallicRoughness, s.occlusion));
 }

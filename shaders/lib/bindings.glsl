@@ -64,8 +64,9 @@ const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
-// The 17th unit: GL promises 16 per stage, drivers have 32 (render/LightBatches.h checks).
+// The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/LightBatches.h checks).
 const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/LightBatches.h: light texels)
+const int OCCLUSION_MAP_UNIT = 17;  // lib/material.glsl: glTF occlusionTexture
 
 // Image units.
 const int LIGHT_EVALUATIONS_IMAGE_UNIT = 0;  // lib/lighting.glsl (--count-work)

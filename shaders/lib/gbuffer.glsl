@@ -15,6 +15,18 @@ layout(binding = GBUFFER_EMISSIVE_UNIT) uniform sampler2D gEmissive;
 Surface gbufferSurface(ivec2 pixel)
 {
     Surface s;
+    vec4 emissive = texelFetch(gEmissive, pixel, 0);
+    // The model from the emissive alpha (lib/gbuffer_packing.glsl packModelOcclusion), unless the
+    // program is built for one model only (lib/lighting.glsl isMetallicRoughness).
+#if defined(NO_METALLIC_ROUGHNESS)
+    s.metallicRoughness = false;
+#elif defined(NO_BLINN_PHONG)
+    s.metallicRoughness = true;
+#else
+    s.metallicRoughness = emissive.a < 0.0;
+#endif
+    s.occlusion = s.metallicRoughness ? -1.0 - emissive.a : 1.0;
+    s.metallic = 0.0;
 #ifdef GBUFFER_COMPACT
     // One texel fetch for the whole surface: llvmpipe's cost per fetch, not per byte, is what
     // a light volume's fragment pays for every (pixel, light) pair (docs/gbuffer.md).
@@ -24,13 +36,21 @@ Surface gbufferSurface(ivec2 pixel)
     s.diffuse = surfaceDiffuse(stored);
     s.specular = surfaceSpecular(stored);
     s.shininess = surfaceShininess(stored);
+    s.roughness = surfaceRoughness(stored);
+    if (s.metallicRoughness) {
+        vec3 baseColour = surfaceBaseColour(stored);
+        s.metallic = surfaceMetallic(stored);
+        s.diffuse = baseColour * (1.0 - s.metallic);
+        s.specular = mix(vec3(0.04), baseColour, s.metallic);
+    }
 #else
     s.position = gbufferPosition(pixel);
     s.normal = texelFetch(gNormal, pixel, 0).xyz;
     s.diffuse = texelFetch(gDiffuse, pixel, 0).rgb;
     s.specular = texelFetch(gSpecular, pixel, 0).rgb;
     s.shininess = texelFetch(gPositionShininess, pixel, 0).w;
+    s.roughness = s.shininess;
 #endif
-    s.emissive = texelFetch(gEmissive, pixel, 0).rgb;
+    s.emissive = emissive.rgb;
     return withTermSwitches(s);
 }

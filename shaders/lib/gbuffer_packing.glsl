@@ -79,3 +79,38 @@ float surfaceShininess(uvec4 texel)
 {
     return decodeShininess((texel.z >> 24u) << 8u | texel.w >> 24u);
 }
+
+// A metallic-roughness surface's texel (docs/gbuffer.md): the kd word holds the base colour and
+// the ks word metallic in its first byte, and the 16-bit code roughness in [0, 1] (steps of
+// 1.5e-5). c_diff and F0 are rebuilt from them on reading, so a dielectric's F0 stays 0.04
+// exactly where 8 bits of F0 would have been 0.0392.
+uvec4 packMetallicRoughnessSurface(float viewDepth, vec3 normal, vec3 baseColour, float metallic, float roughness)
+{
+    uint code = uint(round(clamp(roughness, 0.0, 1.0) * 65535.0));
+    return uvec4(floatBitsToUint(viewDepth), packUnorm2x16(octahedralEncode(normal)),
+                 packUnorm4x8(vec4(baseColour, 0.0)) | (code >> 8u) << 24u,
+                 packUnorm4x8(vec4(metallic, 0.0, 0.0, 0.0)) | (code & 255u) << 24u);
+}
+
+vec3 surfaceBaseColour(uvec4 texel)
+{
+    return unpackUnorm4x8(texel.z).rgb;
+}
+
+float surfaceMetallic(uvec4 texel)
+{
+    return unpackUnorm4x8(texel.w).x;
+}
+
+float surfaceRoughness(uvec4 texel)
+{
+    return float((texel.z >> 24u) << 8u | texel.w >> 24u) / 65535.0;
+}
+
+// The emissive target's alpha (both layouts) says the model: 1 for Blinn-Phong (as it always
+// was), −1 − occlusion for metallic-roughness, whose baked occlusion it carries (a half float in
+// [−2, −1] has steps of 2^-10).
+float packModelOcclusion(bool metallicRoughness, float occlusion)
+{
+    return metallicRoughness ? -1.0 - occlusion : 1.0;
+}

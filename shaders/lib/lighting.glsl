@@ -7,27 +7,60 @@
 #include "lib/shadows.glsl"
 #include "lib/specular_power.glsl"
 
+// A surface of either reflection model (docs/lighting.md). Blinn-Phong reads diffuse (kd),
+// specular (ks) and shininess; metallic-roughness reads diffuse as c_diff = base · (1 − metallic),
+// specular as F0 = mix(0.04, base, metallic), roughness and occlusion (metallic is kept for the
+// compact G-buffer, which stores the base colour and metallic rather than c_diff and F0).
 struct Surface {
     vec3 position;  // world space
     vec3 normal;    // world space, unit
-    vec3 diffuse;   // kd
-    vec3 specular;  // ks
+    vec3 diffuse;   // kd, or c_diff
+    vec3 specular;  // ks, or F0
     float shininess;
     vec3 emissive;  // ke
+    bool metallicRoughness;  // the model: glTF's metallic-roughness BRDF, else Blinn-Phong
+    float metallic;
+    float roughness;
+    float occlusion;  // the material's baked ambient occlusion (1 for Blinn-Phong)
     // kd and ks times the viewer's switches of the diffuse and specular terms (frame.terms.y,
     // .z), computed once per pixel by withTermSwitches(), which every Surface's maker calls:
     // multiplied inside the light loop, the switches (read from the frame's uniform block)
     // cost 18% of a deferred lighting pass on llvmpipe (docs/performance.md).
     vec3 switchedDiffuse;
     vec3 switchedSpecular;
+    float specularSwitch;  // frame.terms.z: metallic-roughness's Fresnel term is not F0 alone
+    // α² = roughness⁴ of the metallic-roughness BRDF, computed once per pixel as the switches are.
+    float alphaSquared;
 };
+
+// glTF's roughness is raised to at least this: at 0 the distribution D is a Dirac peak (0/0
+// at N·H = 1). At 0.03 its peak 1/(π α²) is 3.9e5, within float range, and a point light's
+// highlight is narrower than a pixel at any distance a scene frames.
+const float kMinRoughness = 0.03;
 
 Surface withTermSwitches(Surface s)
 {
     vec2 switches = frameValues().diffuseSpecularSwitches;
     s.switchedDiffuse = switches.x * s.diffuse;
     s.switchedSpecular = switches.y * s.specular;
+    s.specularSwitch = switches.y;
+    float alpha = max(s.roughness, kMinRoughness) * max(s.roughness, kMinRoughness);
+    s.alphaSquared = alpha * alpha;
     return s;
+}
+
+// Whether the surface is shaded by the metallic-roughness model. A program built with
+// NO_METALLIC_ROUGHNESS or NO_BLINN_PHONG (render/LightingPrograms.h: the scene draws one
+// model only) evaluates one model and selects nothing: llvmpipe pays both sides of a select.
+bool isMetallicRoughness(Surface s)
+{
+#if defined(NO_METALLIC_ROUGHNESS)
+    return false;
+#elif defined(NO_BLINN_PHONG)
+    return true;
+#else
+    return s.metallicRoughness;
+#endif
 }
 
 // brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
@@ -42,15 +75,79 @@ vec3 blinnPhong(Surface s, vec3 L, vec3 V)
     return NdotL > 0.0 ? brdf : vec3(0.0);
 }
 
-// The light-independent terms: ke + ambient ⊙ kd · ao + the directional light times its
+const float kPi = 3.14159265358979;
+// N·V is raised to at least this: a normal map may turn a visible point's normal away from the
+// eye, where the visibility term would divide by zero.
+const float kMinNdotV = 1e-4;
+
+// k · ((1 − F) c_diff / π + F D Vis) · max(N·L, 0) with k = π (docs/lighting.md: so that a white
+// matte surface facing a light of intensity 1 at A = 1 is lit to 1 in both models, up to 1 − F):
+// glTF 2.0's BRDF (Appendix B) with the height-correlated Smith visibility. Without branches,
+// for the reason blinnPhong() gives; the select drops the NaN of H = normalize(0) where L = −V.
+vec3 metallicRoughnessBrdf(Surface s, vec3 L, vec3 V)
+{
+    float NdotL = dot(s.normal, L);
+    vec3 H = normalize(L + V);
+    float NdotH = max(dot(s.normal, H), 0.0);
+    float oneMinusVdotH = 1.0 - max(dot(V, H), 0.0);
+    float NdotV = max(dot(s.normal, V), kMinNdotV);
+    float a2 = s.alphaSquared;
+    float t = NdotH * NdotH * (a2 - 1.0) + 1.0;
+    // π · D · Vis: D's 1/π cancels k.
+    float piDVis = a2 / (t * t) * 0.5 /
+                   (NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2) + NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2));
+    float w2 = oneMinusVdotH * oneMinusVdotH;
+    vec3 F = s.specular + (1.0 - s.specular) * (w2 * w2 * oneMinusVdotH);
+    vec3 brdf = ((1.0 - F) * s.switchedDiffuse + (s.specularSwitch * piDVis) * F) * NdotL;
+    return NdotL > 0.0 ? brdf : vec3(0.0);
+}
+
+// brdf(L) · (N·L) of the surface's model.
+vec3 surfaceBrdf(Surface s, vec3 L, vec3 V)
+{
+#if defined(NO_METALLIC_ROUGHNESS)
+    return blinnPhong(s, L, V);
+#elif defined(NO_BLINN_PHONG)
+    return metallicRoughnessBrdf(s, L, V);
+#else
+    return s.metallicRoughness ? metallicRoughnessBrdf(s, L, V) : blinnPhong(s, L, V);
+#endif
+}
+
+// What the metallic-roughness surface reflects of a uniform environment of radiance 1: all of
+// c_diff (a uniform environment's irradiance is π, which k = π's units already hold), and the
+// split-sum specular F0 · A + B with Karis's analytic fit of the (A, B) integral ("Physically
+// based shading on mobile", 2014), times the material's baked occlusion.
+vec3 metallicRoughnessAmbient(Surface s, vec3 V)
+{
+    float NdotV = max(dot(s.normal, V), kMinNdotV);
+    vec4 r = s.roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+    float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
+    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    return (s.diffuse + s.specular * ab.x + ab.y) * s.occlusion;
+}
+
+// What the surface reflects of the ambient term: kd for Blinn-Phong.
+vec3 ambientReflectance(Surface s, vec3 V)
+{
+#if defined(NO_METALLIC_ROUGHNESS)
+    return s.diffuse;
+#elif defined(NO_BLINN_PHONG)
+    return metallicRoughnessAmbient(s, V);
+#else
+    return s.metallicRoughness ? metallicRoughnessAmbient(s, V) : s.diffuse;
+#endif
+}
+
+// The light-independent terms: ke + ambient ⊙ kd · ao (kd: ambientReflectance()) + the directional light times its
 // shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off). A program
 // built with NO_DIRECTIONAL_LIGHT (lightingFeatureDefines) is for scenes without one, whose
 // term is zero.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
-    vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * s.diffuse * ambientOcclusion(s.position);
+    vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * ambientReflectance(s, V) * ambientOcclusion(s.position);
 #ifndef NO_DIRECTIONAL_LIGHT
-    color += frame.directionalIntensity.rgb * blinnPhong(s, frame.directionalToLight.xyz, V) *
+    color += frame.directionalIntensity.rgb * surfaceBrdf(s, frame.directionalToLight.xyz, V) *
              directionalShadow(s.position);
 #endif
     return color;
@@ -100,7 +197,7 @@ vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
     // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
     // skips its texture taps for the pairs out of reach.
     float shadow = reach.w != 0.0 ? localShadow(lightIndex, light.positionRadius.xyz, s.position) : 0.0;
-    vec3 color = light.intensityExponent.rgb * blinnPhong(s, reach.xyz, V) * reach.w * shadow;
+    vec3 color = light.intensityExponent.rgb * surfaceBrdf(s, reach.xyz, V) * reach.w * shadow;
     return reach.w != 0.0 ? color : vec3(0.0);
 }
 

@@ -13,6 +13,7 @@ const int SPECULAR_UV_TRANSFORM_LOCATION = 53;  // also the metallic-roughness m
 const int NORMAL_UV_TRANSFORM_LOCATION = 56;
 const int EMISSIVE_UV_TRANSFORM_LOCATION = 59;
 const int OPACITY_UV_TRANSFORM_LOCATION = 62;
+const int OCCLUSION_UV_TRANSFORM_LOCATION = 65;
 
 // lib/revolution.glsl and lib/instances.glsl (issue 6's range), for mesh.vert and
 // shadow_depth.vert.

@@ -13,8 +13,8 @@ layout(location = 6) flat in float materialShininess;
 layout(location = 7) flat in vec3 materialEmissive;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
 // 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
-// with the reversed normal, 9 blended, 10 opacity map, 11 uv transforms (render/LightingPrograms.h:
-// MaterialVariant). A missing map leaves
+// with the reversed normal, 9 blended, 10 opacity map, 11 uv transforms, 12 the metallic-roughness
+// model, 13 occlusion map (render/LightingPrograms.h: MaterialVariant). A missing map leaves
 // the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
 // sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
 // for every fragment, a discard that can never run would still keep the depth test from running
@@ -45,6 +45,7 @@ layout(location = SPECULAR_UV_TRANSFORM_LOCATION) uniform mat3x2 specularUvTrans
 layout(location = NORMAL_UV_TRANSFORM_LOCATION) uniform mat3x2 normalUvTransform;
 layout(location = EMISSIVE_UV_TRANSFORM_LOCATION) uniform mat3x2 emissiveUvTransform;
 layout(location = OPACITY_UV_TRANSFORM_LOCATION) uniform mat3x2 opacityUvTransform;
+layout(location = OCCLUSION_UV_TRANSFORM_LOCATION) uniform mat3x2 occlusionUvTransform;
 
 layout(binding = DIFFUSE_MAP_UNIT) uniform sampler2D diffuseMap;   // sRGB storage: samples are linear kd
 // Linear. A Blinn-Phong specular map, or (bit 4) glTF's metallic-roughness map: G roughness,
@@ -54,6 +55,8 @@ layout(binding = NORMAL_MAP_UNIT) uniform sampler2D normalMap;    // tangent spa
 // Unit 15: units 9-14 hold the shadow and occlusion maps (shaders/lib/shadows.glsl).
 layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;
 layout(binding = OPACITY_MAP_UNIT) uniform sampler2D opacityMap;  // red channel: a coverage factor  // sRGB storage (glTF emissiveTexture, MTL map_Ke)
+// Linear, red channel: glTF occlusionTexture, the metallic-roughness model's baked occlusion.
+layout(binding = OCCLUSION_MAP_UNIT) uniform sampler2D occlusionMap;
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -83,6 +86,8 @@ const int kHasVertexColours = 64;
 const int kHasSpecularTint = 128;
 const int kFlipBackFaces = 256;
 const int kHasOpacityMap = 1024;
+const int kMetallicRoughnessModel = 4096;
+const int kHasOcclusionMap = 8192;
 
 // The normal map's tangent-space normal, taken to world space: the interpolated tangent is
 // re-orthogonalised against the interpolated normal (Gram-Schmidt) and B = w · cross(N, T),
@@ -146,7 +151,7 @@ Surface meshSurface()
     if ((materialVariant & kHasSpecularTint) != 0)
         s.specular += materialSpecularTint * base;
     s.shininess = materialShininess;
-    if ((materialVariant & kHasMetallicRoughnessMap) != 0) {
+    if ((materialVariant & (kHasMetallicRoughnessMap | kMetallicRoughnessModel)) == kHasMetallicRoughnessMap) {
         // The loader's mapping (scene/Scene.h Material) per texel: diffuse + tint is the base
         // colour, the factors times the texel are this point's metallic and roughness.
         vec2 roughnessMetallic = texture(specularMap, mapUv(specularUvTransform)).gb;
@@ -155,6 +160,29 @@ Surface meshSurface()
         s.diffuse = baseColour * (1.0 - metallic);
         s.specular = vec3(0.04 * (1.0 - metallic)) + baseColour * metallic;
         s.shininess = blinnPhongExponent(materialMetallicRoughness.y * roughnessMetallic.x);
+    }
+    s.metallicRoughness = false;
+    s.metallic = 0.0;
+    s.roughness = 1.0;
+    s.occlusion = 1.0;
+    if ((materialVariant & kMetallicRoughnessModel) != 0) {
+        // The metallic-roughness model (docs/lighting.md): the instance's diffuse is the base
+        // colour and its specular (metallic, roughness, occlusion strength); the map's G and B
+        // channels multiply roughness and metallic (glTF's metallicRoughnessTexture).
+        vec3 baseColour = materialDiffuse * base;
+        s.metallicRoughness = true;
+        s.metallic = materialSpecular.x;
+        s.roughness = materialSpecular.y;
+        if ((materialVariant & kHasMetallicRoughnessMap) != 0) {
+            vec2 roughnessMetallic = texture(specularMap, mapUv(specularUvTransform)).gb;
+            s.metallic *= roughnessMetallic.y;
+            s.roughness *= roughnessMetallic.x;
+        }
+        if ((materialVariant & kHasOcclusionMap) != 0)
+            s.occlusion = 1.0 + materialSpecular.z * (texture(occlusionMap, mapUv(occlusionUvTransform)).r - 1.0);
+        s.diffuse = baseColour * (1.0 - s.metallic);
+        s.specular = mix(vec3(0.04), baseColour, s.metallic);
+        s.shininess = 1.0;
     }
     s.normal = normalize(worldNormal);
     if ((materialVariant & kHasNormalMap) != 0)

@@ -101,6 +101,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::Sampler, "rawOcclusion"}, RAW_OCCLUSION_UNIT},
         {{Kind::Sampler, "emissiveMap"}, EMISSIVE_MAP_UNIT},
         {{Kind::Sampler, "opacityMap"}, OPACITY_MAP_UNIT},
+        {{Kind::Sampler, "occlusionMap"}, OCCLUSION_MAP_UNIT},
         {{Kind::Sampler, "lightTexels"}, LIGHT_TEXELS_UNIT},
         {{Kind::Sampler, "clusterListTexels"}, CLUSTER_LIST_TEXELS_UNIT},
         {{Kind::Sampler, "clusterListSphereTexels"}, CLUSTER_LIST_SPHERES_UNIT},
@@ -177,7 +178,8 @@ class BindingsTest : public GlContextTest {};
 TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
 {
     Scene scene = loadSceneFile(MANYLIGHTS_SOURCE_DIR "/tests/scenes/shadows_and_ssao.json");
-    // Shadows of every kind, SSAO, and a transparent copy of one object with every map.
+    // Shadows of every kind, SSAO, a transparent copy of one object with every map and a
+    // metallic-roughness copy.
     const std::string textures = MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/";
     Material glass = scene.materials.front();
     glass.name = "glass";
@@ -190,6 +192,16 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     glass.opacityMap = textures + "speckle.png";
     scene.materials.push_back(glass);
     Object pane = scene.objects.front();
+    pane.material = scene.materials.size() - 1;
+    pane.transform = glm::translate(pane.transform, glm::vec3(0.0f, 0.5f, 0.0f));
+    scene.objects.push_back(pane);
+    // And a metallic-roughness copy with its occlusion and metallic-roughness maps.
+    Material metal;
+    metal.name = "metal";
+    metal.model = ShadingModel::MetallicRoughness;
+    metal.metallicRoughnessMap = textures + "speckle.png";
+    metal.occlusionMap = textures + "speckle.png";
+    scene.materials.push_back(metal);
     pane.material = scene.materials.size() - 1;
     pane.transform = glm::translate(pane.transform, glm::vec3(0.0f, 0.5f, 0.0f));
     scene.objects.push_back(pane);

@@ -165,6 +165,15 @@ INSTANTIATE_TEST_SUITE_P(
         // grid of the transparent objects' depths, against forward's every light;
         // past one light batch, the grid rebuilt per layer and batch.
         AgreementCase{"glass_transparency", MANYLIGHTS_SOURCE_DIR "/scenes/glass.json", {"--size", "320x180"}},
+        // Both reflection models in one scene (issue 31): Blinn-Phong and metallic-roughness
+        // surfaces side by side under every kind of light (a transparent metallic-roughness
+        // ball in the transparency pass), and the textured glTF bottle of
+        // scenes/pbr-models.json (base colour, occlusion-roughness-metallic, normal and
+        // emissive maps) under its coloured lights.
+        AgreementCase{"mixed_models", kScenes + "mixed_models.json", {"--size", "200x120"}},
+        AgreementCase{"pbr_models_scene",
+                      MANYLIGHTS_SOURCE_DIR "/scenes/pbr-models.json",
+                      {"--size", "160x120", "--lights", "96"}},
         AgreementCase{"glass_transparency_two_batches",
                       MANYLIGHTS_SOURCE_DIR "/scenes/glass.json",
                       {"--size", "128x72", "--lights", "9000"}}),
@@ -192,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(
         atSize("light_beyond_far_plane.json", "1280x720"), atSize("light_beyond_far_plane.json", "800x600"),
         atSize("spot_cutoff_120.json", "1280x720"), atSize("spot_cutoff_120.json", "800x600"),
         atSize("unbounded_light.json", "1280x720"), atSize("unbounded_light.json", "800x600"),
-        atSize("spots_and_points.json", "1280x720"),
+        atSize("spots_and_points.json", "1280x720"), atSize("mixed_models.json", "800x600"),
         // Tied surfaces under forward's depth pre-pass, over most of the screen.
         atSize("coplanar_surfaces.json", "1280x720")),
     [](const ::testing::TestParamInfo<AgreementCase>& param) { return param.param.name; });

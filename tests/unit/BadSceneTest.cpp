@@ -393,7 +393,8 @@ TEST(SceneLoader, ExactMessages)
               "scene.json:3:24: syntax error while parsing object key: unexpected '}'; expected string literal");
     EXPECT_EQ(errorOf(R"json({"materials": {"m": {"colour": [1, 0, 0]}}})json"),
               "scene.json: /materials/m/colour: unknown key 'colour' (expected one of: diffuse, specular, shininess, "
-              "emissive, diffuse_map, specular_map, normal_map, normal_scale, opacity, opacity_map)");
+              "emissive, diffuse_map, specular_map, normal_map, normal_scale, opacity, opacity_map, base_color, "
+              "metallic, roughness, base_color_map, metallic_roughness_map, occlusion_map)");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "core/Error.h"
 #include "scene/GltfLoader.h"
+#include "scene/MaterialModels.h"
 #include "scene/SceneLoader.h"
 #include "tests/unit/ErrorOf.h"
 
@@ -295,13 +296,17 @@ TEST(GltfModel, HierarchyPrimitivesAndIndexWidths)
     EXPECT_FALSE(mesh.subMeshes[1].material.has_value());
 }
 
-TEST(GltfModel, MetallicRoughnessMapsToBlinnPhong)
+TEST(GltfModel, MaterialsLoadAsMetallicRoughnessAndMapToBlinnPhong)
 {
     const Model model = exampleGltf().load();
     ASSERT_EQ(model.materials.size(), 1u);
-    const Material& m = model.materials[0];
-    // kd = base · (1 − metallic), ks = 0.04 · (1 − metallic) plus the tint base · metallic,
-    // s = 2/roughness⁴ − 2.
+    const Material& loaded = model.materials[0];
+    EXPECT_EQ(loaded.model, ShadingModel::MetallicRoughness);
+    EXPECT_NEAR(loaded.baseColor.r, 0.5f, 1e-6f);
+    // The mapping of `"model_materials": "blinn-phong"`: kd = base · (1 − metallic), ks = 0.04 ·
+    // (1 − metallic) plus the tint base · metallic, s = 2/roughness⁴ − 2.
+    const Material m = blinnPhongMapping(loaded);
+    EXPECT_EQ(m.model, ShadingModel::BlinnPhong);
     EXPECT_NEAR(m.diffuse.r, 0.25f, 1e-6f);
     EXPECT_NEAR(m.specular.r, 0.02f, 1e-6f);
     EXPECT_NEAR(m.specularTint.r, 0.25f, 1e-6f);
@@ -321,14 +326,17 @@ TEST(GltfModel, PunctualLightsTakeTheNodeTransformAndTheDocumentedFalloff)
     EXPECT_EQ(point.name, "lamp");
     EXPECT_EQ(point.type, LightType::Point);
     EXPECT_EQ(point.position, glm::vec3(0, 5, 0));
-    EXPECT_EQ(point.intensity, glm::vec3(4.0f, 2.0f, 1.0f));  // colour · intensity
+    // colour · intensity / π (candela to the scene's units, docs/lighting.md)
+    EXPECT_NEAR(point.intensity.r, 4.0 / std::numbers::pi, 1e-6);
+    EXPECT_NEAR(point.intensity.g, 2.0 / std::numbers::pi, 1e-6);
+    EXPECT_NEAR(point.intensity.b, 1.0 / std::numbers::pi, 1e-6);
     EXPECT_EQ(point.falloff, Falloff::Range);
     EXPECT_EQ(point.range, 10.0f);
     const Light& spot = model.lights[1];
     EXPECT_EQ(spot.type, LightType::Spot);
     EXPECT_NEAR(spot.direction.y, 1.0f, 1e-6f);
-    // No range: r = sqrt(Imax / t) = sqrt(256) = 16.
-    EXPECT_NEAR(spot.range, 16.0f, 1e-4f);
+    // No range: r = sqrt(Imax / t) = sqrt(256 / π), its intensity 1 candela being 1/π.
+    EXPECT_NEAR(spot.range, std::sqrt(256.0 / std::numbers::pi), 1e-4);
     EXPECT_NEAR(spot.cutoffDegrees, 45.0f, 1e-4f);
     // (cos θ)^e = 1/2 where cos θ = (cos 0 + cos 45°) / 2.
     const double middle = 0.5 * (1.0 + std::sqrt(0.5));
@@ -354,7 +362,7 @@ TEST(GltfModel, SceneObjectBecomesOneObjectPerNodeAndAddsTheLights)
     EXPECT_EQ(scene.lights[0].position, glm::vec3(10, 5, 0));
     const Mesh& mesh = scene.meshes[scene.objects[0].mesh];
     ASSERT_TRUE(mesh.subMeshes[0].material.has_value());
-    EXPECT_NEAR(scene.materials[*mesh.subMeshes[0].material].shininess, 30.0f, 1e-3f);
+    EXPECT_EQ(scene.materials[*mesh.subMeshes[0].material].roughnessFactor, 0.5f);
 }
 
 // Schema breaks tinygltf reads past (issue 33): each is a warning naming the file, the JSON
