@@ -14,9 +14,9 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Image.h"
-#include "render/Technique.h"
-#include "render/TextureCache.h"
+#include "render/output/Image.h"
+#include "render/scene/TextureCache.h"
+#include "render/techniques/Technique.h"
 #include "scene/DefaultScene.h"
 #include "scene/SceneLoader.h"
 

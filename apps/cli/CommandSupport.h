@@ -17,10 +17,10 @@
 #include "core/Error.h"
 
 #include "render/DriverProfile.h"
-#include "render/GBuffer.h"
-#include "render/PassProfiler.h"
-#include "render/Renderer.h"    // kDefaultImageWidth, kDefaultImageHeight
-#include "render/ShadowMaps.h"  // kMaxShadowLights
+#include "render/Renderer.h"            // kDefaultImageWidth, kDefaultImageHeight
+#include "render/effects/ShadowMaps.h"  // kMaxShadowLights
+#include "render/frame/GBuffer.h"
+#include "render/frame/PassProfiler.h"
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
 
@@ -132,7 +132,7 @@ struct PassSummary {
     std::optional<std::uint64_t> fragmentInvocations;
 };
 struct FrameSummary {
-    Statistics wallMs;  // wall clock (render/PassProfiler.h says why it is the one to compare)
+    Statistics wallMs;  // wall clock (render/frame/PassProfiler.h says why it is the one to compare)
     Statistics gpuMs;
     std::vector<PassSummary> passes;
 };
