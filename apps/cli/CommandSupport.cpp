@@ -1,6 +1,7 @@
 #include "apps/cli/CommandSupport.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -90,6 +91,13 @@ void addGBufferOption(CLI::App& command, GBufferLayout& layout)
             "G-buffer layout of the deferred techniques")
         ->check(CLI::IsMember(gbufferLayoutNames()))
         ->default_str(std::string(gbufferLayoutName(kDefaultGBufferLayout)));
+}
+
+bool hasExtension(const std::filesystem::path& path, std::string_view extension)
+{
+    std::string actual = path.extension().string();
+    std::transform(actual.begin(), actual.end(), actual.begin(), [](unsigned char c) { return std::tolower(c); });
+    return actual == extension;
 }
 
 std::optional<ImageFormat> imageFormatOf(const std::string& path)

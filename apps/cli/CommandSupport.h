@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <optional>
 #include <string>
@@ -94,6 +95,8 @@ struct OutputImage {
 };
 // The format of `path`, or none when it ends in neither .png, .pfm nor .exr.
 std::optional<ImageFormat> imageFormatOf(const std::string& path);
+// Whether `path` ends in `extension` (".png", lower case), ignoring case: out.PNG is a PNG.
+bool hasExtension(const std::filesystem::path& path, std::string_view extension);
 
 // "WxH" with both in 1..kMaxImageDimension. Returns the problem as one line (naming --size),
 // or an empty string when `text` is a size; then `size` holds it.

@@ -3,7 +3,6 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -68,11 +67,6 @@ std::string encodePng(const Image& image)
     return bytes;
 }
 
-std::string encodeImage(const Image& image, const std::filesystem::path& path)
-{
-    return hasExtension(path, ".pfm") ? encodePfm(image) : encodePng(image);
-}
-
 void writePfm(const Image& image, const std::filesystem::path& path)
 {
     writeFileAtomically(path, "image", encodePfm(image));
@@ -81,13 +75,6 @@ void writePfm(const Image& image, const std::filesystem::path& path)
 void writePng(const Image& image, const std::filesystem::path& path)
 {
     writeFileAtomically(path, "image", encodePng(image));
-}
-
-bool hasExtension(const std::filesystem::path& path, std::string_view extension)
-{
-    std::string actual = path.extension().string();
-    std::transform(actual.begin(), actual.end(), actual.begin(), [](unsigned char c) { return std::tolower(c); });
-    return actual == extension;
 }
 
 Image readPfm(const std::filesystem::path& path)

@@ -3,7 +3,6 @@
 
 #include <filesystem>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace manylights {
@@ -22,10 +21,6 @@ struct Image {
 std::string encodePfm(const Image& image);
 // The bytes of an 8-bit RGB PNG of round(255 · clamp(v, 0, 1)) per channel, no gamma curve.
 std::string encodePng(const Image& image);
-// encodePfm for a path ending in .pfm (any case), encodePng otherwise.
-std::string encodeImage(const Image& image, const std::filesystem::path& path);
-// Whether `path` ends in `extension` (".png", lower case), ignoring case: out.PNG is a PNG.
-bool hasExtension(const std::filesystem::path& path, std::string_view extension);
 
 // Encodes and writes whole or not at all (core/AtomicFile.h). Throws manylights::Error.
 void writePfm(const Image& image, const std::filesystem::path& path);
