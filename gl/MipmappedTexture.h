@@ -34,7 +34,7 @@ public:
     void setAnisotropy(float anisotropy) const;
     // How coordinates outside [0, 1] read the image (GL_REPEAT, GL_CLAMP_TO_EDGE,
     // GL_MIRRORED_REPEAT), per axis. A texture shared by materials that wrap it differently is
-    // set by each before it draws (render/DrawList.cpp).
+    // set by each before it draws (render/scene/DrawList.cpp).
     void setWrap(GLenum s, GLenum t) const;
 
 private:

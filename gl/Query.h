@@ -1,5 +1,5 @@
 // gl::Query: one GL query object (timer or pipeline statistics) for the pass profiler
-// (render/PassProfiler.h) and the tests that count primitives and fragment invocations.
+// (render/frame/PassProfiler.h) and the tests that count primitives and fragment invocations.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "render/DriverProfile.h"
 
 #include "gl/Driver.h"
-#include "render/TextureCache.h"
+#include "render/scene/TextureCache.h"
 
 namespace manylights {
 

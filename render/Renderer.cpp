@@ -1,5 +1,5 @@
 #include "render/Renderer.h"
-#include "render/Bindings.h"
+#include "render/programs/Bindings.h"
 
 #include <algorithm>
 #include <string>
@@ -7,8 +7,8 @@
 
 #include "core/Error.h"
 #include "gl/Driver.h"
-#include "render/LightBatches.h"
-#include "render/ScreenPasses.h"
+#include "render/culling/LightBatches.h"
+#include "render/frame/ScreenPasses.h"
 
 namespace manylights {
 
@@ -103,7 +103,7 @@ Technique& Renderer::technique(std::string_view name)
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 {
     // A technique whose storage, planned from the frame before, was too small for this one has
-    // planned anew, and the frame is rendered again (render/ClusterLists.h). Twice at most: a
+    // planned anew, and the frame is rendered again (render/culling/ClusterLists.h). Twice at most: a
     // frame whose lists overflowed their storage may have hidden how long the longest is.
     constexpr int kAttempts = 3;
     for (int attempt = 1;; ++attempt) {

@@ -9,25 +9,25 @@
 #include <vector>
 
 #include "gl/Program.h"
-#include "render/DisplayPass.h"
 #include "render/DriverProfile.h"
-#include "render/GpuScene.h"
-#include "render/Image.h"
-#include "render/PassProfiler.h"
-#include "render/ShadowMaps.h"
-#include "render/Ssao.h"
-#include "render/Technique.h"
-#include "render/TextureCache.h"
-#include "render/TransparencyPass.h"
 #include "render/Views.h"
-#include "render/VolumeDrawer.h"
+#include "render/effects/DisplayPass.h"
+#include "render/effects/ShadowMaps.h"
+#include "render/effects/Ssao.h"
+#include "render/effects/TransparencyPass.h"
+#include "render/frame/PassProfiler.h"
+#include "render/output/Image.h"
+#include "render/scene/GpuScene.h"
+#include "render/scene/TextureCache.h"
+#include "render/techniques/Technique.h"
+#include "render/volumes/VolumeDrawer.h"
 
 namespace manylights {
 
 // Deterministic work of one frame (docs/cli.md --count-work).
 struct WorkCounts {
     std::uint64_t lightEvaluations = 0;             // (pixel, light) pairs the technique evaluated on opaque surfaces
-    std::uint64_t transparentLightEvaluations = 0;  // ... on transparent ones (render/TransparencyPass.h)
+    std::uint64_t transparentLightEvaluations = 0;  // ... on transparent ones (render/effects/TransparencyPass.h)
     std::uint64_t inRangePairs = 0;                 // (pixel, light) pairs with A·S > 0: the least possible
 };
 
@@ -56,13 +56,13 @@ struct RendererDesc {
     int anisotropy = kAutoAnisotropy;
     // The viewer's switches for the ambient, diffuse and specular terms (1 on, 0 off).
     glm::vec3 lightingTerms{1.0f, 1.0f, 1.0f};
-    // The display pass (render/DisplayPass.h): when set, every frame of the Final and Volumes
+    // The display pass (render/effects/DisplayPass.h): when set, every frame of the Final and Volumes
     // views ends with it, timed as its own passes. `supersample` (0: 1) must divide the size;
     // the displayed picture is the size divided by it.
     std::optional<DisplaySettings> display{};
     int supersample = 0;
     // Lighting passes read the lights through the light texels where the driver has them and
-    // they are the faster source (render/LightBatches.h, GpuScene::readsLightWindows); false:
+    // they are the faster source (render/culling/LightBatches.h, GpuScene::readsLightWindows); false:
     // through the uniform windows or the storage buffer, as on a driver without them (the
     // tests compare the sources).
     bool lightTexels = true;

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "render/Image.h"
+#include "render/output/Image.h"
 
 namespace manylights {
 

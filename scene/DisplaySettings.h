@@ -1,6 +1,6 @@
 // How the linear colour of docs/lighting.md becomes a displayable picture (docs/display.md):
 // exposure, a tone curve, sRGB encoding and anti-aliasing, applied after lighting by one
-// display pass (render/DisplayPass.h) that every technique shares. The scene file's
+// display pass (render/effects/DisplayPass.h) that every technique shares. The scene file's
 // `display` block sets them; the command line overrides it. The defaults below are the one
 // place the default look is set: AgX, then sRGB (SPEC.md §3, since 2026-11-25), so that a PNG
 // and the window look right on a screen; `--tonemap none --no-srgb` (`--classic`) gives the
@@ -23,7 +23,7 @@ enum class ToneCurve {
 
 enum class Antialiasing {
     None,
-    Fxaa,  // luma-edge post-process after Lottes's FXAA 3.11 (render/DisplayPass.h)
+    Fxaa,  // luma-edge post-process after Lottes's FXAA 3.11 (render/effects/DisplayPass.h)
 };
 
 // Exposures beyond this many stops either way leave no picture (2^±32 of any lit value).

@@ -129,7 +129,7 @@ enum class ShadingModel : std::uint8_t { BlinnPhong, MetallicRoughness };
 
 // Opaque ignores the coverage; Mask cuts the surface where it is below alphaCutoff; Blend draws
 // the surface see-through, "over" what lies behind it with the coverage as its opacity
-// (render/TransparencyPass.h).
+// (render/effects/TransparencyPass.h).
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
 // How a map reads coordinates outside [0, 1] (glTF samplers' wrapS, wrapT), per axis.

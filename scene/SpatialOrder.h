@@ -1,6 +1,6 @@
 // An order of points along a Morton (Z-order) curve, so that points near each other in space are
 // near each other in the order. The renderer keeps its lights in this order
-// (render/SceneLights.h): a cluster's lights are then neighbours in memory, and the passes that
+// (render/scene/SceneLights.h): a cluster's lights are then neighbours in memory, and the passes that
 // walk lights side by side in SIMD lanes walk neighbours (docs/techniques.md, "The light lists
 // of tiled and clustered"). No GL: unit-tested (tests/unit/SpatialOrderTest.cpp).
 #pragma once

@@ -9,8 +9,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# The layer of a path (its first folder; platform/window/ is the platform layer) and the
-# layers it may include from, as in CODE_STYLE.md.
+# The layer of a path (its first folder: platform/window/ is the platform layer, render/frame/
+# the render layer) and the layers it may include from, as in CODE_STYLE.md.
 allowed_for() {
   case "$1" in
     apps) echo "apps render scene gl platform core" ;;

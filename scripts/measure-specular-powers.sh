@@ -2,7 +2,7 @@
 # The specular power by multiplication against pow() (shaders/lib/specular_power.glsl): the
 # courtyard (bench/courtyard.json, shininess 16, 32, 48 and 64 on its four specular materials)
 # with those four set to other integer shininesses, each scene run as it is (multiplications,
-# where render/LightingPrograms.h's limits allow) and with every shininess 0.001 larger (no
+# where render/programs/LightingPrograms.h's limits allow) and with every shininess 0.001 larger (no
 # longer integers: pow(), whose cost does not depend on the exponent); the last case is over the
 # multiplications' budget, so both take pow(). `clustered`'s lighting
 # pass, median wall ms of FRAMES frames, the two alternated REPS times. Prints the machine and

@@ -1,5 +1,5 @@
 #version 450 core
-// Clustered, once per frame after the lists are sorted (render/ClusterLists.h): one invocation
+// Clustered, once per frame after the lists are sorted (render/culling/ClusterLists.h): one invocation
 // per tile notes the frame's longest list and lists the tiles with a list longer than one
 // part (CLUSTER_LIST_PART lights, what one invocation of the lighting may walk): the later
 // parts of those lists are lit by passes over those tiles only (list_lighting.comp), the

@@ -1,5 +1,5 @@
 #version 450 core
-// Clustered, once per frame (render/ClusterLists.h): the (cluster, light) pairs, in two runs of
+// Clustered, once per frame (render/culling/ClusterLists.h): the (cluster, light) pairs, in two runs of
 // the same program: the first (emitPairs 0) counts each light's pairs, which a scan turns into
 // each light's first slot; the second (emitPairs 1) writes them there, the cluster as the sort
 // key and the light as the value, and counts each cluster's. One program for both, so that
@@ -19,7 +19,7 @@
 //
 // Loop iterations per invocation: CLUSTER_PAIR_NARROW_TILES tiles, or at most 1,024 (the bands
 // of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
-// about 9,200 at most, within render/LightBatches.h's bound.
+// about 9,200 at most, within render/culling/LightBatches.h's bound.
 #include "lib/bindings.glsl"
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"

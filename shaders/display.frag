@@ -1,5 +1,5 @@
 #version 450 core
-// The display pass (render/DisplayPass.h): each output pixel averages its SUPERSAMPLE x
+// The display pass (render/effects/DisplayPass.h): each output pixel averages its SUPERSAMPLE x
 // SUPERSAMPLE block of the lit image in linear light (a box filter; one fetch without
 // supersampling), then applies the display transform of lib/display.glsl. SUPERSAMPLE is a
 // compile-time constant: llvmpipe runs a fetch inside a loop of uniform length several times

@@ -7,7 +7,7 @@
 #include "lib/material.glsl"
 
 #ifdef DEPTH_PREPASS
-// The depth pre-pass (render/ForwardTechnique.cpp): depth only, so the lighting runs once per
+// The depth pre-pass (render/techniques/ForwardTechnique.cpp): depth only, so the lighting runs once per
 // pixel. meshSurface() is called for the fragments it discards (an alpha mask's cut); the
 // compiler drops the rest of it, since nothing reads the surface.
 void main()

@@ -8,7 +8,7 @@
 // luma leaves the edge's average, and takes its colour from a bilinear tap shifted towards the
 // other side by how far it is from the nearer end, or by a sub-pixel amount from the 3x3
 // average where that is larger. Loop iterations: SEARCH_STEPS. Only the pixels that
-// shaders/fxaa_edges.frag marked in the stencil buffer run it (render/DisplayPass.cpp): on
+// shaders/fxaa_edges.frag marked in the stencil buffer run it (render/effects/DisplayPass.cpp): on
 // llvmpipe a pixel that returns early still pays for the whole shader under a lane mask.
 #include "lib/fxaa_edge.glsl"
 layout(location = 0) out vec4 antialiased;

@@ -1,6 +1,6 @@
 #version 450 core
 // Geometry pass: writes the surface into the G-buffer in the layout GBUFFER_COMPACT selects
-// (render/GBuffer.h and docs/gbuffer.md give both).
+// (render/frame/GBuffer.h and docs/gbuffer.md give both).
 #include "lib/lighting.glsl"
 #include "lib/material.glsl"
 #include "lib/gbuffer_packing.glsl"

@@ -1,7 +1,7 @@
 #version 450 core
 // Lighting from the light lists of a cluster grid (lib/cluster_lists.glsl), in a compute pass:
 // an invocation per pixel, a workgroup per tile.
-// - EVERY_TILE: tiled's lighting (render/TiledTechnique.h). The workgroups cover the image;
+// - EVERY_TILE: tiled's lighting (render/techniques/TiledTechnique.h). The workgroups cover the image;
 //   each covered pixel stores the global terms and part 0 of its cluster's list.
 // - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect

@@ -1,6 +1,6 @@
 #version 450 core
 // The log-average luminance of the lit image's surfaces (Reinhard et al. 2002, eq. 1: exp of
-// the mean of log(δ + L)), for the viewer's auto-exposure (render/DisplayPass.h). Background
+// the mean of log(δ + L)), for the viewer's auto-exposure (render/effects/DisplayPass.h). Background
 // pixels do not count: an empty sky would otherwise drag the exposure up until every surface
 // burns out. 0.18 (exposure 0) when no sample holds a surface. One workgroup samples
 // a grid of SAMPLES_X x SAMPLES_Y points spread over the image (every pixel would cost a

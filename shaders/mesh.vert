@@ -29,7 +29,7 @@ layout(location = 4) flat out vec3 materialDiffuse;
 layout(location = 5) flat out vec3 materialSpecular;
 layout(location = 6) flat out float materialShininess;
 layout(location = 7) flat out vec3 materialEmissive;
-// Only what the variant reads (render/LightingPrograms.h): every varying costs every fragment.
+// Only what the variant reads (render/programs/LightingPrograms.h): every varying costs every fragment.
 #if (MATERIAL_VARIANT & 128) != 0  // kSpecularTintBit
 layout(location = 8) flat out vec3 materialSpecularTint;
 #endif

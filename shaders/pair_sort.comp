@@ -1,5 +1,5 @@
 #version 450 core
-// One digit of the (cluster, light) pairs' radix sort by cluster (render/ClusterLists.h),
+// One digit of the (cluster, light) pairs' radix sort by cluster (render/culling/ClusterLists.h),
 // stable, least significant digit first: with PAIR_SORT_SCATTER it moves each pair to its
 // place, without it counts each chunk's pairs per digit value. Between the two, the counts
 // (laid out digit value by digit value, chunk by chunk) are scanned (scan.comp), which gives

@@ -1,5 +1,5 @@
 #version 450 core
-// An exclusive prefix sum over a storage buffer of uints, in place (render/GpuScan.h): the
+// An exclusive prefix sum over a storage buffer of uints, in place (render/culling/GpuScan.h): the
 // step of one level of the scan that SCAN_STEP names, the levels run from the CPU.
 //   0 (reduce): block i's sum (SCAN_BLOCK elements from i · SCAN_BLOCK) into partials[i];
 //   1 (top): one invocation scans the whole (at most SCAN_BLOCK elements) and writes the

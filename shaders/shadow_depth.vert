@@ -1,9 +1,9 @@
 #version 450 core
-// Shadow-map pass: only depth, seen from the light (render/ShadowMaps.cpp). Positions go
+// Shadow-map pass: only depth, seen from the light (render/effects/ShadowMaps.cpp). Positions go
 // through the same instance record's model matrix (lib/instances.glsl), and for a dynamic
 // surface of revolution the same vertex-shader surface, as shaders/mesh.vert (DrawList sets
 // both), so a receiver's world position and the caster depth stored for it agree to float
-// rounding. Alpha-masked casters (MATERIAL_VARIANT with bit 5, render/LightingPrograms.h
+// rounding. Alpha-masked casters (MATERIAL_VARIANT with bit 5, render/programs/LightingPrograms.h
 // depthOnlyVariant) also pass what their coverage needs to shadow_depth.frag.
 #include "lib/frame.glsl"
 #include "lib/locations.glsl"

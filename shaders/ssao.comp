@@ -1,5 +1,5 @@
 #version 450 core
-// Screen-space ambient occlusion (render/Ssao.cpp; docs/shadows.md): for each visible
+// Screen-space ambient occlusion (render/effects/Ssao.cpp; docs/shadows.md): for each visible
 // surface, how much of the hemisphere around its normal, within `radius`, lies behind other
 // visible surfaces. Samples are taken in view space from a fixed kernel, rotated per pixel
 // by a 4x4 tiled noise (shaders/ssao_blur.comp averages the 4x4 pattern away).

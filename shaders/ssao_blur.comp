@@ -1,5 +1,5 @@
 #version 450 core
-// Averages the raw occlusion over the 4x4 block the noise tile repeats in (render/Ssao.cpp),
+// Averages the raw occlusion over the 4x4 block the noise tile repeats in (render/effects/Ssao.cpp),
 // so the per-pixel rotation's pattern disappears. Only pixels holding a surface take part.
 #include "lib/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

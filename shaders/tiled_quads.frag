@@ -8,7 +8,7 @@
 
 layout(early_fragment_tests) in;
 
-// Every tile's light indices, one list after another (render/TileCulling.h).
+// Every tile's light indices, one list after another (render/culling/TileCulling.h).
 layout(std430, binding = TILE_LIGHTS_BUFFER_BINDING) readonly buffer TileLights {
     uint tileLights[];
 };

@@ -3,7 +3,7 @@
 // 1), drawn with the depth test GL_GREATER against the scene's depth, like every full-screen
 // pass, so only the tile's pixels that hold a surface run the fragment shader. A tile is one
 // point of the tile's size where the driver draws points that large, else a quad
-// (render/TiledQuadsTechnique.cpp says why).
+// (render/techniques/TiledQuadsTechnique.cpp says why).
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
 

@@ -1,5 +1,5 @@
 #version 450 core
-// The transparency pass (render/TransparencyPass.h): a transparent surface (AlphaMode::Blend)
+// The transparency pass (render/effects/TransparencyPass.h): a transparent surface (AlphaMode::Blend)
 // shaded by the one lighting function, with the lights of its cluster in the grid that spans
 // the transparent objects' depths (lib/cluster_lights.glsl), or under EVERY_LIGHT every light
 // of the batch (what forward, the reference, does). Drawn "over" the lit image with

@@ -1,6 +1,6 @@
 #version 450 core
 #define FRAME_VALUES_OUT  // for volume.frag (lib/frame.glsl)
-// One instance per light: the bounding sphere or cone (render/LightVolumes.h) placed and
+// One instance per light: the bounding sphere or cone (render/volumes/LightVolumes.h) placed and
 // scaled from the light buffer, or, for unbounded lights, a triangle covering the screen.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"

@@ -16,8 +16,8 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
-#include "render/Image.h"
 #include "render/Renderer.h"
+#include "render/output/Image.h"
 #include "scene/LightSets.h"
 
 namespace manylights {

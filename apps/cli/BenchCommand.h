@@ -7,8 +7,8 @@
 
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/Shard.h"
-#include "render/GBuffer.h"
-#include "render/TextureCache.h"
+#include "render/frame/GBuffer.h"
+#include "render/scene/TextureCache.h"
 
 namespace CLI {
 class App;

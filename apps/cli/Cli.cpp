@@ -13,8 +13,8 @@
 #include "apps/cli/RenderCommand.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Image.h"
-#include "render/Technique.h"
+#include "render/output/Image.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 

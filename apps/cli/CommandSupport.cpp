@@ -1,6 +1,7 @@
 #include "apps/cli/CommandSupport.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -14,9 +15,9 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Image.h"
-#include "render/Technique.h"
-#include "render/TextureCache.h"
+#include "render/output/Image.h"
+#include "render/scene/TextureCache.h"
+#include "render/techniques/Technique.h"
 #include "scene/DefaultScene.h"
 #include "scene/SceneLoader.h"
 
@@ -90,6 +91,13 @@ void addGBufferOption(CLI::App& command, GBufferLayout& layout)
             "G-buffer layout of the deferred techniques")
         ->check(CLI::IsMember(gbufferLayoutNames()))
         ->default_str(std::string(gbufferLayoutName(kDefaultGBufferLayout)));
+}
+
+bool hasExtension(const std::filesystem::path& path, std::string_view extension)
+{
+    std::string actual = path.extension().string();
+    std::transform(actual.begin(), actual.end(), actual.begin(), [](unsigned char c) { return std::tolower(c); });
+    return actual == extension;
 }
 
 std::optional<ImageFormat> imageFormatOf(const std::string& path)

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <optional>
 #include <string>
@@ -17,10 +18,10 @@
 #include "core/Error.h"
 
 #include "render/DriverProfile.h"
-#include "render/GBuffer.h"
-#include "render/PassProfiler.h"
-#include "render/Renderer.h"    // kDefaultImageWidth, kDefaultImageHeight
-#include "render/ShadowMaps.h"  // kMaxShadowLights
+#include "render/Renderer.h"            // kDefaultImageWidth, kDefaultImageHeight
+#include "render/effects/ShadowMaps.h"  // kMaxShadowLights
+#include "render/frame/GBuffer.h"
+#include "render/frame/PassProfiler.h"
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
 
@@ -94,6 +95,8 @@ struct OutputImage {
 };
 // The format of `path`, or none when it ends in neither .png, .pfm nor .exr.
 std::optional<ImageFormat> imageFormatOf(const std::string& path);
+// Whether `path` ends in `extension` (".png", lower case), ignoring case: out.PNG is a PNG.
+bool hasExtension(const std::filesystem::path& path, std::string_view extension);
 
 // "WxH" with both in 1..kMaxImageDimension. Returns the problem as one line (naming --size),
 // or an empty string when `text` is a size; then `size` holds it.
@@ -132,7 +135,7 @@ struct PassSummary {
     std::optional<std::uint64_t> fragmentInvocations;
 };
 struct FrameSummary {
-    Statistics wallMs;  // wall clock (render/PassProfiler.h says why it is the one to compare)
+    Statistics wallMs;  // wall clock (render/frame/PassProfiler.h says why it is the one to compare)
     Statistics gpuMs;
     std::vector<PassSummary> passes;
 };

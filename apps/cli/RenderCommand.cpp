@@ -14,9 +14,9 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
-#include "render/ExrFile.h"
-#include "render/HeatMapLegend.h"
 #include "render/Renderer.h"
+#include "render/output/ExrFile.h"
+#include "render/output/HeatMapLegend.h"
 #include "scene/LightSets.h"
 
 namespace manylights {
@@ -51,7 +51,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     };
     const FrameSummary summary = summarizeFrames(frames);
     // frame_ms is the wall clock between glFinish calls: exact on llvmpipe, whose timer
-    // queries miss its tile threads' work (render/PassProfiler.h). frame_gpu_ms is the
+    // queries miss its tile threads' work (render/frame/PassProfiler.h). frame_gpu_ms is the
     // timer-query view of the same frames.
     stats["frame_ms"] = summaryJson(summary.wallMs);
     stats["frame_gpu_ms"] = summaryJson(summary.gpuMs);

@@ -8,9 +8,9 @@
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/Recording.h"
 #include "apps/cli/Shard.h"
-#include "render/GBuffer.h"
-#include "render/TextureCache.h"
 #include "render/Views.h"
+#include "render/frame/GBuffer.h"
+#include "render/scene/TextureCache.h"
 
 namespace manylights {
 

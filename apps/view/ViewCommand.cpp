@@ -11,8 +11,8 @@
 #include "apps/view/Viewer.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Technique.h"
 #include "render/Views.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 

@@ -6,8 +6,8 @@
 
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Technique.h"
 #include "render/Views.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 

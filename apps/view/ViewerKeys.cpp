@@ -10,7 +10,7 @@
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewerWindow.h"
 #include "core/Error.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 

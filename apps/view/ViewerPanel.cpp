@@ -8,8 +8,8 @@
 #include <imgui.h>
 
 #include "apps/view/ViewerWindow.h"
-#include "render/ShadowMaps.h"
-#include "render/Technique.h"
+#include "render/effects/ShadowMaps.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 

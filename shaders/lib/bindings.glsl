@@ -1,6 +1,6 @@
 // Binding points of every uniform block, storage buffer, texture unit and image unit the
 // shaders use: the one table the shaders (which include this file) and the C++ code
-// (render/Bindings.h includes it as C++) both read, so a number cannot drift between them.
+// (render/programs/Bindings.h includes it as C++) both read, so a number cannot drift between them.
 // tests/gl/BindingsTest.cpp checks every linked program's interface against it. Written in
 // the common subset of GLSL and C++ (const int, no vectors). Two names may share a number
 // where no program uses both (each line says which shaders use it).
@@ -8,7 +8,7 @@
 // Uniform blocks.
 const int FRAME_BLOCK_BINDING = 0;         // lib/frame.glsl Frame
 const int SHADOWING_BLOCK_BINDING = 1;     // lib/shadows.glsl Shadowing
-const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/LightBatches.h)
+const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/culling/LightBatches.h)
 
 // Shader storage buffers.
 const int LIGHTS_BUFFER_BINDING = 0;                  // lib/lights.glsl Lights
@@ -25,7 +25,7 @@ const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag Trans
 const int SHADOW_SLOT_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadows.glsl ShadowSlotOfLight
 const int SSAO_SAMPLES_BUFFER_BINDING = 11;           // ssao.comp SsaoSamples
 const int SHADOW_SLOTS_BUFFER_BINDING = 12;           // lib/shadows.glsl ShadowSlots
-// The clustered technique's light lists (render/ClusterLists.h).
+// The clustered technique's light lists (render/culling/ClusterLists.h).
 const int CLUSTER_LIST_COUNTS_BUFFER_BINDING = 13;   // lib/cluster_lists.glsl, cluster_pairs.comp
 const int CLUSTER_LIST_LIGHTS_BUFFER_BINDING = 14;   // lib/cluster_lists.glsl; pair_sort.comp PairLightsIn
 const int PAIR_KEYS_IN_BUFFER_BINDING = 15;          // cluster_pairs.comp, pair_sort.comp
@@ -42,7 +42,7 @@ const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; pair_sort.comp PairSpheresOut
 
-// Texture units. 0-4 are the G-buffer's targets (render/GBuffer.h: each target's unit).
+// Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
 const int GBUFFER_SURFACE_UNIT = 0;   // lib/gbuffer_position.glsl gSurface (compact layout)
 const int GBUFFER_NORMAL_UNIT = 1;    // lib/gbuffer.glsl gNormal (seed layout)
@@ -64,8 +64,8 @@ const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
-// The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/LightBatches.h checks).
-const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/LightBatches.h: light texels)
+// The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/culling/LightBatches.h checks).
+const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/culling/LightBatches.h: light texels)
 const int OCCLUSION_MAP_UNIT = 17;  // lib/material.glsl: glTF occlusionTexture
 
 // Image units.

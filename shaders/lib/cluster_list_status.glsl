@@ -1,4 +1,4 @@
-// What the light-list passes of a frame found (render/ClusterLists.h: ClusterLists::Status): the
+// What the light-list passes of a frame found (render/culling/ClusterLists.h: ClusterLists::Status): the
 // CPU sets it before the passes and reads it after the frame, when the renderer has waited
 // for the frame anyway. The two groups are indirect dispatches: their x counts what the GPU
 // found.

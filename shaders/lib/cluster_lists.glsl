@@ -1,7 +1,7 @@
-// The clustered technique's light lists (render/ClusterLists.h), read by its lighting passes:
+// The clustered technique's light lists (render/culling/ClusterLists.h), read by its lighting passes:
 // per cluster of lib/clusters.glsl's grid, the lights that may reach it, in the order of the
 // lights (sorted by cluster, stably). A list is walked in parts of CLUSTER_LIST_PART lights,
-// the most one invocation may walk within render/LightBatches.h's bound: part 0 by the
+// the most one invocation may walk within render/culling/LightBatches.h's bound: part 0 by the
 // lighting pass over the whole image, the later parts of long lists by passes over their
 // tiles only (list_lighting.comp).
 //
@@ -26,7 +26,7 @@ layout(std430, binding = CLUSTER_LIST_FIRSTS_BUFFER_BINDING) readonly buffer Clu
     uint clusterListFirst[];
 };
 #ifdef CLUSTER_LIST_TEXELS
-// The lists' lights as R32UI texels and their spheres as RGBA32F texels (render/ClusterLists.h):
+// The lists' lights as R32UI texels and their spheres as RGBA32F texels (render/culling/ClusterLists.h):
 // llvmpipe fetches a texel for 8 lanes at once where it loads from a storage buffer lane by
 // lane, and every visit of a list entry reads one (LearnOpenGL's scene at 512 lights, where
 // every light is in every list: lighting 512-538 -> 478-492 ms). Where the driver's texture

@@ -1,4 +1,4 @@
-// The cluster grid of the clustered technique (render/ClusteredTechnique.h): screen tiles of
+// The cluster grid of the clustered technique (render/techniques/ClusteredTechnique.h): screen tiles of
 // CLUSTER_TILE_SIZE pixels, each cut into CLUSTER_SLICES depth slices spaced exponentially
 // from the nearest surface seen through that tile to the farthest (so no slice is spent on
 // empty depth before or after the tile's surfaces).

@@ -85,7 +85,7 @@ bool lightMayReachTile(GpuLight light, TileFrustum tile)
     if (!sphereTouchesBox(centre, radius, tile.boxLo, tile.boxHi))
         return false;
 #ifdef NO_SPOT_LIGHTS
-    return true;  // a program specialised for a scene without spots (render/LightingPrograms.h)
+    return true;  // a program specialised for a scene without spots (render/programs/LightingPrograms.h)
 #else
     vec3 axis = mat3(frame.view) * light.spotAxisCosCutoff.xyz;
     return coneTouchesSphere(centre, axis, light.spotAxisCosCutoff.w, tile.boxCentre, tile.boxRadius);

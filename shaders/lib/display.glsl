@@ -1,5 +1,5 @@
 // The display transform of docs/display.md: exposure, then a tone curve, then the sRGB
-// encoding, each on linear RGB. render/DisplayPass.cpp compiles shaders/display.frag with
+// encoding, each on linear RGB. render/effects/DisplayPass.cpp compiles shaders/display.frag with
 // TONE_CURVE (0 none, 1 reinhard, 2 aces, 3 agx: scene/DisplaySettings.h's order) and
 // SRGB_ENCODE as constants, so a frame pays only for the curve it uses.
 

@@ -1,4 +1,4 @@
-// Per-frame constants, one uniform buffer shared by every pass (render/GpuFrame.cpp fills it
+// Per-frame constants, one uniform buffer shared by every pass (render/scene/GpuFrame.cpp fills it
 // with the same std140 layout).
 #include "lib/bindings.glsl"
 layout(std140, binding = FRAME_BLOCK_BINDING) uniform Frame {

@@ -1,5 +1,5 @@
 // Reading the G-buffer back into a Surface, texel for texel (no filtering), in the layout
-// chosen by GBUFFER_COMPACT (render/GBuffer.h gives both; docs/gbuffer.md their precision).
+// chosen by GBUFFER_COMPACT (render/frame/GBuffer.h gives both; docs/gbuffer.md their precision).
 // gbufferSurface() is THE way to read a surface from the G-buffer.
 #include "lib/bindings.glsl"
 #include "lib/gbuffer_position.glsl"

@@ -1,4 +1,4 @@
-// The compact G-buffer's encodings (render/GBuffer.h: kCompactGBufferTargets), shared by the
+// The compact G-buffer's encodings (render/frame/GBuffer.h: kCompactGBufferTargets), shared by the
 // geometry pass that writes them and gbufferSurface() that reads them.
 
 // Octahedral normal encoding: the unit sphere projected onto the octahedron |x|+|y|+|z| = 1,
@@ -41,7 +41,7 @@ float decodeShininess(uint code)
     return exp2(float(code) / 65535.0 * kShininessLog2Range);
 }
 
-// The compact layout's surface texel (render/GBuffer.h: kCompactGBufferTargets): the view depth's
+// The compact layout's surface texel (render/frame/GBuffer.h: kCompactGBufferTargets): the view depth's
 // bits, the octahedral normal as two 16-bit unorms, kd and ks as three 8-bit unorms each with a
 // byte of the shininess code on top. packUnorm* round to nearest, as a unorm target's
 // conversion does.

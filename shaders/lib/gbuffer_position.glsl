@@ -1,4 +1,4 @@
-// The world position of a G-buffer pixel, in either layout (render/GBuffer.h: GBufferLayout):
+// The world position of a G-buffer pixel, in either layout (render/frame/GBuffer.h: GBufferLayout):
 // the only G-buffer value the culling compute shaders need. Needs lib/frame.glsl.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"

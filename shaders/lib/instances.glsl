@@ -1,4 +1,4 @@
-// Per-draw-item records (render/GpuScene.h: GpuInstance), one storage buffer for the whole
+// Per-draw-item records (render/scene/GpuScene.h: GpuInstance), one storage buffer for the whole
 // scene, written once per frame. GpuScene draws runs of items that share a mesh range with one
 // instanced draw; record instanceBase + gl_InstanceID belongs to the instance being drawn.
 // The base is a uniform rather than gl_BaseInstance, which needs GL 4.6 or

@@ -7,7 +7,7 @@
 // lock step, and 8 lights on them walked as many tiles as the largest of the 8 covers; the
 // tiles of one light keep every lane busy but the last round's (courtyard, 4096 lights,
 // 1280x720, the cluster assignment: 23 -> 15 ms, docs/performance.md). Bands bound the walk:
-// a band has rowsPerBand rows, at most kTilesPerBand tiles (render/LightTiles.h), so each
+// a band has rowsPerBand rows, at most kTilesPerBand tiles (render/culling/LightTiles.h), so each
 // invocation visits at most kTilesPerBand / LIGHT_TILE_LANES = 1,024 tiles, whatever the
 // image size. Needs lib/frame.glsl and lib/culling.glsl (sphereTileRect) first.
 layout(local_size_x = LIGHT_TILE_LANES) in;

@@ -50,7 +50,7 @@ Surface withTermSwitches(Surface s)
 }
 
 // Whether the surface is shaded by the metallic-roughness model. A program built with
-// NO_METALLIC_ROUGHNESS or NO_BLINN_PHONG (render/LightingPrograms.h: the scene draws one
+// NO_METALLIC_ROUGHNESS or NO_BLINN_PHONG (render/programs/LightingPrograms.h: the scene draws one
 // model only) evaluates one model and selects nothing: llvmpipe pays both sides of a select.
 bool isMetallicRoughness(Surface s)
 {
@@ -157,7 +157,7 @@ vec3 shadeGlobal(Surface s, vec3 V)
 // (w). w is zero where the light does not reach; the culling of every technique may only
 // skip pairs for which it is zero.
 //
-// A program may be specialised for the lights of its scene (render/LightingPrograms.h):
+// A program may be specialised for the lights of its scene (render/programs/LightingPrograms.h):
 // NO_SPOT_LIGHTS (S = 1 for every light), ONLY_CLASSIC_FALLOFF or ONLY_RANGE_FALLOFF (one
 // kind of A). Without them every kind is evaluated and the light's own is selected, since on
 // llvmpipe a branch costs both sides: the spot factor's pow and the unused falloff are paid

@@ -1,4 +1,4 @@
-// The local lights, all of them in one storage buffer (render/SceneLights.cpp packs it).
+// The local lights, all of them in one storage buffer (render/scene/SceneLights.cpp packs it).
 #include "lib/bindings.glsl"
 struct GpuLight {
     vec4 positionRadius;     // xyz: position; w: culling radius (UNBOUNDED_RADIUS when none)
@@ -14,7 +14,7 @@ layout(std430, binding = LIGHTS_BUFFER_BINDING) readonly buffer Lights {
 
 #ifdef LIGHT_WINDOW_BINDING
 // The batch's lights as a uniform block bound to their range of the same buffer
-// (render/LightBatches.h: light windows), for passes where every pixel walks the batch in
+// (render/culling/LightBatches.h: light windows), for passes where every pixel walks the batch in
 // order; light i of the scene is element i − lightBatch.x. Such a shader includes
 // lib/light_batch.glsl before this file (an #include here would count as done even where this
 // block is compiled out, and leave other shaders without it).
@@ -37,7 +37,7 @@ GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
     return windowLights[lightIndex - lightBatch.x];
 }
 #elif defined(LIGHT_TEXELS)
-// The same buffer as four RGBA32F texels per light (render/LightBatches.h: light texels), for
+// The same buffer as four RGBA32F texels per light (render/culling/LightBatches.h: light texels), for
 // passes whose pixels read different lights, and for every pass on a software rasteriser:
 // llvmpipe fetches a texel for all lanes at once, loads from a storage buffer lane by lane
 // and gathers from a uniform block per component.

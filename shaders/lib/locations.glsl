@@ -1,11 +1,11 @@
 // Uniform locations that the C++ code sets by number (gl::Program::set) in the shaders whose
 // numbers used to be written twice: the one table the shaders (which include this file) and
-// the C++ code (render/Locations.h includes it as C++) both read. Written in the common
+// the C++ code (render/programs/Locations.h includes it as C++) both read. Written in the common
 // subset of GLSL and C++ (const int). Numbers are per program: two names share one only where
 // no program has both (each line says which shaders use it).
 
-// lib/material.glsl (render/DrawList.cpp binds a material's maps). The transforms are mat3x2,
-// two locations each, after the light batch's location 40 (render/LightBatches.h).
+// lib/material.glsl (render/scene/DrawList.cpp binds a material's maps). The transforms are mat3x2,
+// two locations each, after the light batch's location 40 (render/culling/LightBatches.h).
 const int MATERIAL_NORMAL_SCALE_LOCATION = 15;
 const int MATERIAL_METALLIC_ROUGHNESS_LOCATION = 16;
 const int DIFFUSE_UV_TRANSFORM_LOCATION = 50;  // also shadow_depth.frag's
@@ -22,10 +22,10 @@ const int REVOLUTION_SHAPE_LOCATION = 31;
 const int REVOLUTION_SPEED_LOCATION = 32;
 const int INSTANCE_BASE_LOCATION = 33;
 
-// shadow_depth.vert (render/ShadowMaps.cpp).
+// shadow_depth.vert (render/effects/ShadowMaps.cpp).
 const int LIGHT_VIEW_PROJECTION_LOCATION = 20;
 
-// tiled_quads.vert (render/TiledQuadsTechnique.cpp).
+// tiled_quads.vert (render/techniques/TiledQuadsTechnique.cpp).
 const int TILE_FIRST_QUAD_LOCATION = 0;
 const int TILES_X_LOCATION = 1;
 const int TILE_SIZE_LOCATION = 2;

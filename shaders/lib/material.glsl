@@ -4,7 +4,7 @@
 // in both passes, so the texture lookups need no explicit LOD to agree.
 // The material constants come per instance from the vertex shader (shaders/mesh.vert reads
 // them from lib/instances.glsl), so one instanced draw can show many materials; the maps
-// below stay per draw, and only draws without maps are instanced (render/DrawList.cpp).
+// below stay per draw, and only draws without maps are instanced (render/scene/DrawList.cpp).
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
 layout(location = 4) flat in vec3 materialDiffuse;
@@ -14,7 +14,7 @@ layout(location = 7) flat in vec3 materialEmissive;
 // What the material reads: bit 0 diffuse map, 1 specular map, 2 normal map, 3 emissive map,
 // 4 metallic-roughness map, 5 alpha mask, 6 vertex colours, 7 specular tint, 8 back faces lit
 // with the reversed normal, 9 blended, 10 opacity map, 11 uv transforms, 12 the metallic-roughness
-// model, 13 occlusion map (render/LightingPrograms.h: MaterialVariant). A missing map leaves
+// model, 13 occlusion map (render/programs/LightingPrograms.h: MaterialVariant). A missing map leaves
 // the constant as it is. A compile-time constant, one program per variant: llvmpipe runs both
 // sides of a branch under a lane mask, so branching on a uniform would pay every map's lookups
 // for every fragment, a discard that can never run would still keep the depth test from running
@@ -38,7 +38,7 @@ layout(location = MATERIAL_NORMAL_SCALE_LOCATION) uniform float materialNormalSc
 // glTF metallicFactor and roughnessFactor, for the metallic-roughness map's per-texel mapping.
 layout(location = MATERIAL_METALLIC_ROUGHNESS_LOCATION) uniform vec2 materialMetallicRoughness;
 // Each map's uv transform (glTF KHR_texture_transform; scene/Scene.h Material::uvTransforms),
-// after the light batch's location 40 (render/LightBatches.h):
+// after the light batch's location 40 (render/culling/LightBatches.h):
 // uv' = M · (u, v, 1). Set per draw for the maps the draw binds.
 layout(location = DIFFUSE_UV_TRANSFORM_LOCATION) uniform mat3x2 diffuseUvTransform;
 layout(location = SPECULAR_UV_TRANSFORM_LOCATION) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's

@@ -1,6 +1,6 @@
 // Shadow and ambient-occlusion factors (docs/shadows.md). lib/lighting.glsl multiplies them
-// into its terms, so every technique applies them the same way. render/ShadowMaps.cpp and
-// render/Ssao.cpp fill the maps; render/ShadowMaps.h (ShadowingUniforms) has the same std140 layout for the block.
+// into its terms, so every technique applies them the same way. render/effects/ShadowMaps.cpp and
+// render/effects/Ssao.cpp fill the maps; render/effects/ShadowMaps.h (ShadowingUniforms) has the same std140 layout for the block.
 #include "lib/bindings.glsl"
 layout(std140, binding = SHADOWING_BLOCK_BINDING) uniform Shadowing {
     mat4 directionalShadowMatrix;  // world position -> shadow-map uv (xy) and depth (z), all in [0, 1]
@@ -27,17 +27,17 @@ layout(binding = POINT_SHADOWS_UNIT) uniform samplerCubeArrayShadow pointShadowM
 // Depth comparison in hardware (GL_COMPARE_REF_TO_TEXTURE) with bilinear filtering: each
 // tap is already a 2x2 percentage-closer filter.
 layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DShadow directionalShadowMap;
-// The blurred ambient-occlusion factor of each screen pixel (render/Ssao.cpp).
+// The blurred ambient-occlusion factor of each screen pixel (render/effects/Ssao.cpp).
 layout(binding = AMBIENT_OCCLUSION_UNIT) uniform sampler2D ambientOcclusionMap;
 
 // The fraction of the directional light that reaches `position` (1: lit, 0: in the umbra):
 // a 3x3 percentage-closer filter over the shadow map. The depth bias is in the map itself
 // (slope-scaled polygon offset when it is rendered), so a lit surface compares its own depth
 // with a map value pushed slightly away from the light. Points outside the map are lit: the
-// map covers every surface the camera can see (render/ShadowMaps.cpp fits it).
+// map covers every surface the camera can see (render/effects/ShadowMaps.cpp fits it).
 float directionalShadow(vec3 position)
 {
-#ifdef NO_DIRECTIONAL_SHADOW  // a frame without the map (render/LightingPrograms.h)
+#ifdef NO_DIRECTIONAL_SHADOW  // a frame without the map (render/programs/LightingPrograms.h)
     return 1.0;
 #endif
     if (shadowing.directionalShadowParams.x == 0.0)

@@ -3,7 +3,7 @@
 
 // x^n for x in [0, 1] and a constant integer n in [1, 4095] by multiplications: x, x², x⁴, ...
 // and the product of the powers n's bits select. The loop's bounds and n are constants, so the
-// compiler unrolls it and keeps only the multiplications n needs (render/LightingPrograms.h
+// compiler unrolls it and keeps only the multiplications n needs (render/programs/LightingPrograms.h
 // integerPowerMultiplications). Each squaring doubles the relative error it is given and adds
 // half an ulp, so the result is within about n/2 ulps (n · 2^-25 relative) of x^n: the same order
 // as pow()'s exp2(n · log2(x)), whose log2 is rounded before the product with n, and as x^n's
@@ -26,7 +26,7 @@ float integerPower(float x, uint n)
 
 // x^shininess for x in [0, 1]. pow() is exp2(shininess · log2(x)), whose two polynomials cost
 // a quarter of a lighting pass on llvmpipe (docs/performance.md). A program built with
-// SPECULAR_EXPONENT_COUNT k and SPECULAR_EXPONENTS, k ascending integers (render/LightingPrograms.h:
+// SPECULAR_EXPONENT_COUNT k and SPECULAR_EXPONENTS, k ascending integers (render/programs/LightingPrograms.h:
 // the shininesses of every surface of the scene with a specular term, where their
 // multiplications are few), multiplies instead: each power is computed, and the surface's
 // shininess picks its own by the midpoints between them, which a compact G-buffer's decoded

@@ -1,4 +1,4 @@
-// The binding table (shaders/lib/bindings.glsl, render/Bindings.h) against every program the
+// The binding table (shaders/lib/bindings.glsl, render/programs/Bindings.h) against every program the
 // renderer links: after frames of every technique with shadows, SSAO, transparency, work
 // counting, every view and the display pass with FXAA and auto-exposure, every live program
 // object in the context is asked for its uniform blocks, storage blocks and sampler and image
@@ -17,8 +17,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "GlContextTest.h"
-#include "render/Bindings.h"
 #include "render/Renderer.h"
+#include "render/programs/Bindings.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 

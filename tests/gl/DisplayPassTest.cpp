@@ -1,4 +1,4 @@
-// The display pass (render/DisplayPass.h) on textures of known values: each tone curve and
+// The display pass (render/effects/DisplayPass.h) on textures of known values: each tone curve and
 // the sRGB encoding against the published formulas (typed here from the papers, not from
 // shaders/lib/display.glsl), the default settings as AgX then sRGB, the box filter of
 // supersampling against the CPU's, and FXAA on flat regions (unchanged) and on an analytic
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "GlContextTest.h"
-#include "render/DisplayPass.h"
-#include "render/GpuScene.h"
-#include "render/Image.h"
+#include "render/effects/DisplayPass.h"
+#include "render/output/Image.h"
+#include "render/scene/GpuScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 

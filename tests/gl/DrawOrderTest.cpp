@@ -1,4 +1,4 @@
-// Opaque draws go nearest first (render/DrawList.cpp: DrawList::order), so a surface
+// Opaque draws go nearest first (render/scene/DrawList.cpp: DrawList::order), so a surface
 // hidden behind one already drawn fails the depth test and is never shaded. Measured as a work
 // count: the samples that pass the depth test in the geometry pass (GL_SAMPLES_PASSED), each of
 // which runs the G-buffer fragment shader to the end. Exact, whatever the order in the file.
@@ -7,8 +7,8 @@
 #include <string>
 
 #include "GlContextTest.h"
-#include "render/GBuffer.h"
-#include "render/GpuScene.h"
+#include "render/frame/GBuffer.h"
+#include "render/scene/GpuScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 

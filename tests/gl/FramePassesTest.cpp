@@ -1,4 +1,4 @@
-// Passes as records (render/FramePasses.h): the barriers, the pipeline state and the timed
+// Passes as records (render/frame/FramePasses.h): the barriers, the pipeline state and the timed
 // scopes that FramePasses derives from them.
 #include <gtest/gtest.h>
 

@@ -15,10 +15,10 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
-#include "render/ClusterGrid.h"
-#include "render/GBuffer.h"
-#include "render/LightBatches.h"
-#include "render/TiledTechnique.h"
+#include "render/culling/ClusterGrid.h"
+#include "render/culling/LightBatches.h"
+#include "render/frame/GBuffer.h"
+#include "render/techniques/TiledTechnique.h"
 
 namespace manylights {
 namespace {
@@ -247,7 +247,7 @@ TEST_F(GlTest, QueriesCountFragmentsAndTime)
 namespace manylights {
 namespace {
 
-// What render/LightBatches.h works around: how many iterations a compute invocation really
+// What render/culling/LightBatches.h works around: how many iterations a compute invocation really
 // runs of a loop asked to run `requested` times, nested `inner` deep per iteration (inner
 // loops with a trip count from a uniform, which no compiler can unroll).
 std::uint32_t iterationsRun(std::uint32_t requested, std::uint32_t inner)
@@ -292,7 +292,7 @@ class LoopLimit : public GlContextTest {};
 
 TEST_F(LoopLimit, LlvmpipeEndsLoopsAfter65535IterationsInAll)
 {
-    // Every driver runs a loop of 16,384 iterations (render/LightBatches.h's bound), nested
+    // Every driver runs a loop of 16,384 iterations (render/culling/LightBatches.h's bound), nested
     // loops included.
     EXPECT_EQ(iterationsRun(kMaxLoopIterations, 0), kMaxLoopIterations);
     EXPECT_EQ(iterationsRun(kMaxLoopIterations / 4, 3), kMaxLoopIterations / 4);

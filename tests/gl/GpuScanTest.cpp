@@ -1,4 +1,4 @@
-// The GPU prefix sum of the light lists (render/GpuScan.h): exact against the CPU's at the sizes
+// The GPU prefix sum of the light lists (render/culling/GpuScan.h): exact against the CPU's at the sizes
 // where its levels change (one block, a block and one, two levels, three levels), with the total
 // written where asked.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "OnePlaneFrameTest.h"
-#include "render/GpuScan.h"
+#include "render/culling/GpuScan.h"
 
 namespace manylights {
 namespace {

@@ -1,4 +1,4 @@
-// Instanced drawing of the scene (render/DrawList.cpp, shaders/lib/instances.glsl): the
+// Instanced drawing of the scene (render/scene/DrawList.cpp, shaders/lib/instances.glsl): the
 // default scene's draw items collapse into a few instanced draws, and the GL really draws
 // every item (a primitives-generated query counts the triangles). Work counts, so exact.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include "GlContextTest.h"
 #include "gl/Program.h"
-#include "render/GpuScene.h"
+#include "render/scene/GpuScene.h"
 #include "scene/DefaultScene.h"
 #include "scene/LightSets.h"
 

@@ -1,10 +1,10 @@
-// The bounding meshes must enclose the region a light reaches (render/LightVolumes.h); these
+// The bounding meshes must enclose the region a light reaches (render/volumes/LightVolumes.h); these
 // tests need no GL context.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "render/LightVolumes.h"
+#include "render/volumes/LightVolumes.h"
 #include "scene/Falloff.h"
 
 namespace manylights {
@@ -78,10 +78,10 @@ TEST(LightVolumes, LightsAreGroupedByShape)
     EXPECT_EQ(groups.fullScreen, (std::vector<std::uint32_t>{3}));
 }
 
-// The stencil technique skips its stencil pass for spheres around the eye (render/
-// VolumeTechniques.cpp), which is exact only where the eye is inside the bounding mesh: every
-// eye the test accepts, at distances up to its margin, lies inside the icosahedron drawn for a
-// light of that radius, and the eye on the sphere or beyond is refused.
+// The stencil technique skips its stencil pass for spheres around the eye
+// (render/volumes/VolumeTechniques.cpp), which is exact only where the eye is inside the bounding
+// mesh: every eye the test accepts, at distances up to its margin, lies inside the icosahedron
+// drawn for a light of that radius, and the eye on the sphere or beyond is refused.
 TEST(LightVolumes, EyeInsideSphereVolumeOnlyWellInsideTheMesh)
 {
     GpuLight light{};

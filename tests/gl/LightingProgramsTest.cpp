@@ -1,4 +1,4 @@
-// The specialisation of the lighting programs (render/LightingPrograms.h): which features a
+// The specialisation of the lighting programs (render/programs/LightingPrograms.h): which features a
 // scene's lights have, which #defines they give, and one compiled variant per feature set.
 // That each variant shades correctly is the image tests' work: every technique against
 // forward and the analytic scenes, over scenes of points only (ONLY_RANGE_FALLOFF,
@@ -10,10 +10,10 @@
 
 #include "GlContextTest.h"
 #include "core/Error.h"
-#include "render/GpuScene.h"
-#include "render/LightBatches.h"
-#include "render/LightingPrograms.h"
-#include "render/Technique.h"
+#include "render/culling/LightBatches.h"
+#include "render/programs/LightingPrograms.h"
+#include "render/scene/GpuScene.h"
+#include "render/techniques/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -154,7 +154,7 @@ TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentsOfWhatItDraws)
             .lightingFeatures()
             .specularExponents;
     };
-    // Measured on llvmpipe only: the GPU profile keeps pow() (render/GpuScene.cpp).
+    // Measured on llvmpipe only: the GPU profile keeps pow() (render/scene/GpuScene.cpp).
     EXPECT_EQ(exponentsOf(R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16}})",
                           R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])",
                           DriverProfile::Gpu),
@@ -203,7 +203,7 @@ TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
     EXPECT_NE(plain.id(), textured.id());
     EXPECT_EQ(&program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0}), &plain);
     // The normal map's scale is a uniform only of the programs that sample a normal map
-    // (render/DrawList.cpp sets it only for them).
+    // (render/scene/DrawList.cpp sets it only for them).
     EXPECT_EQ(glGetUniformLocation(textured.id(), "materialNormalScale"), -1);
     const gl::Program& normalMapped = program.variant(LightingFeatures{}, LightSource::StorageBuffer, kNormalMapBit);
     EXPECT_NE(glGetUniformLocation(normalMapped.id(), "materialNormalScale"), -1);

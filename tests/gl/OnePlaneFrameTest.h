@@ -1,10 +1,10 @@
-// The fixture of the GL tests that run passes (render/FramePasses.h): a headless context, a
+// The fixture of the GL tests that run passes (render/frame/FramePasses.h): a headless context, a
 // scene of one plane on the GPU, 32x32 frame targets and a profiler.
 #pragma once
 
 #include "GlContextTest.h"
-#include "render/FramePasses.h"
-#include "render/GpuScene.h"
+#include "render/frame/FramePasses.h"
+#include "render/scene/GpuScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 

@@ -175,7 +175,7 @@ TEST_F(RendererTest, LightTexelsWindowsAndTheStorageBufferGiveTheSameImage)
         RendererDesc desc{.width = 96, .height = 64};
         Renderer renderer(scene, expandLights(scene), desc);
         if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
-            GTEST_SKIP() << "the driver has no light texels (render/LightBatches.h)";
+            GTEST_SKIP() << "the driver has no light texels (render/culling/LightBatches.h)";
         for (const char* technique : {"forward", "deferred", "tiled-quads", "tiled", "clustered"}) {
             const std::string what = std::string(technique) + ", " + std::to_string(lightCount) + " lights";
             desc.lightTexels = true;
@@ -222,7 +222,7 @@ TEST_F(RendererTest, LightSourcesAndCullingTechniquesAgreePastSixtyFiveThousandL
     RendererDesc desc{.width = 1280, .height = 720};
     Renderer renderer(scene, expandLights(scene), desc);
     if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
-        GTEST_SKIP() << "the driver has no light texels (render/LightBatches.h)";
+        GTEST_SKIP() << "the driver has no light texels (render/culling/LightBatches.h)";
     std::optional<Image> clustered;
     for (const char* technique : {"clustered", "tiled", "tiled-quads"}) {
         desc.lightTexels = true;
@@ -269,7 +269,7 @@ TEST_F(RendererTest, ForwardAddsEveryLightPastTwoHundredFiftySixBatches)
     const Image oneImage = oneRenderer.readColour();
     Renderer renderer(many, lights, desc);
     if (!renderer.gpuScene().readsLightWindows())
-        GTEST_SKIP() << "the driver has no light windows (render/LightBatches.h)";
+        GTEST_SKIP() << "the driver has no light windows (render/culling/LightBatches.h)";
     renderer.renderFrame("forward", ViewMode::Final);
     Image expected = oneImage;
     int lit = 0;

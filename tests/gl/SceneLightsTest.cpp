@@ -1,11 +1,11 @@
-// The lights on the GPU (render/SceneLights.h): kept in Morton order of their rest positions,
+// The lights on the GPU (render/scene/SceneLights.h): kept in Morton order of their rest positions,
 // packed and uploaded once when at rest, and only the animated ones posed and uploaded again.
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "render/Bindings.h"
-#include "render/SceneLights.h"
+#include "render/programs/Bindings.h"
+#include "render/scene/SceneLights.h"
 #include "scene/Animation.h"
 #include "tests/gl/GlContextTest.h"
 

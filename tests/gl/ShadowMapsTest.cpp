@@ -5,10 +5,10 @@
 #include <memory>
 
 #include "GlContextTest.h"
-#include "render/GpuScene.h"
-#include "render/PassProfiler.h"
 #include "render/Renderer.h"
-#include "render/ShadowMaps.h"
+#include "render/effects/ShadowMaps.h"
+#include "render/frame/PassProfiler.h"
+#include "render/scene/GpuScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -108,7 +108,7 @@ TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
     EXPECT_TRUE(renderer.shadowMaps().shadowedLights().empty());
 
     // One local light: the brightest on screen, the narrow spot (5 × its coverage wins). The
-    // renderer keeps its lights in an order of its own (render/SceneLights.h): the index is
+    // renderer keeps its lights in an order of its own (render/scene/SceneLights.h): the index is
     // into that order.
     desc.shadowLights = 1;
     renderer.apply(desc);

@@ -13,7 +13,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
-#include "render/LightingPrograms.h"
+#include "render/programs/LightingPrograms.h"
 
 namespace manylights {
 namespace {

@@ -1,4 +1,4 @@
-// Material textures (render/TextureCache.h): one upload per (file, colour space), sRGB decoded
+// Material textures (render/scene/TextureCache.h): one upload per (file, colour space), sRGB decoded
 // to linear when sampled, a full mipmap chain, and one-line errors for files that are not
 // usable images.
 #include <gtest/gtest.h>
@@ -21,8 +21,8 @@
 #include "gl/Buffer.h"
 #include "gl/Driver.h"
 #include "gl/Program.h"
-#include "render/GpuScene.h"
-#include "render/TextureCache.h"
+#include "render/scene/GpuScene.h"
+#include "render/scene/TextureCache.h"
 
 namespace manylights {
 namespace {

@@ -1,4 +1,4 @@
-// CPU tile culling for tiled-quads (render/TileCulling.h); no GL context needed.
+// CPU tile culling for tiled-quads (render/culling/TileCulling.h); no GL context needed.
 //
 // The hand-computed cases use the simplest camera: the eye at the origin looking along −Z,
 // a 90° vertical field of view (tan 45° = 1) and a square 256x256 image, so 8x8 tiles of 32
@@ -14,7 +14,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/TileCulling.h"
+#include "render/culling/TileCulling.h"
 #include "scene/Falloff.h"
 
 namespace manylights {

@@ -11,7 +11,7 @@
 
 #include "GlContextTest.h"
 #include "render/Renderer.h"
-#include "render/TiledQuadsTechnique.h"
+#include "render/techniques/TiledQuadsTechnique.h"
 #include "scene/Meshes.h"
 #include "tests/support/ImageComparison.h"
 

@@ -20,7 +20,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 namespace {

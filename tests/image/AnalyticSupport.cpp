@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "TestSupport.h"
-#include "render/Image.h"
+#include "render/output/Image.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights::test {

@@ -32,7 +32,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {
@@ -171,7 +171,7 @@ void checkRangeFalloffWithSpecularHighlight(const std::string& left, const std::
 TEST_P(Analytic, RangeFalloffWithSpecularHighlight)
 {
     // A few integer shininesses in the scene: the programs raise N·H to them by multiplications
-    // (render/LightingPrograms.h, specularExponents), 16 by squarings alone, 13 (binary 1101) and
+    // (render/programs/LightingPrograms.h, specularExponents), 16 by squarings alone, 13 (binary 1101) and
     // 40 (101000) by squarings and products, picked per surface. A fractional one takes pow().
     for (const auto& [left, right] : {std::pair<std::string, std::string>{"16", "16"}, {"13", "40"}, {"16", "12.5"}}) {
         SCOPED_TRACE("shininess " + left + " and " + right);

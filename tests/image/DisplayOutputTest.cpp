@@ -20,10 +20,10 @@
 
 #include "TestSupport.h"
 #include "core/Error.h"
-#include "render/ExrFile.h"
-#include "render/HeatMapLegend.h"
-#include "render/Image.h"
 #include "render/Views.h"
+#include "render/output/ExrFile.h"
+#include "render/output/HeatMapLegend.h"
+#include "render/output/Image.h"
 
 namespace manylights {
 namespace {
@@ -305,7 +305,7 @@ TEST(DisplayOutput, ExrReadingErrorsNameTheFile)
     EXPECT_THROW(exrChannelNames(dir / "not.exr"), Error);
 }
 
-// The light-count view's PNG carries a labelled colour bar (render/HeatMapLegend.h) in its
+// The light-count view's PNG carries a labelled colour bar (render/output/HeatMapLegend.h) in its
 // legend area only; --no-legend gives the plain heat map of the counts, pixel for pixel.
 TEST(DisplayOutput, LightCountLegendChangesOnlyItsAreaAndNoLegendIsThePlainHeatMap)
 {

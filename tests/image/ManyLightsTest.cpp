@@ -1,7 +1,7 @@
 // No light dropped at any count or size (issue 11). Mesa's llvmpipe silently ends a shader's
 // loops after 65,535 iterations in all (tests/gl/GlTest.cpp, LoopLimit), so a technique
 // that looped over more lights in one invocation lost the rest without an error; every
-// technique now takes lights in batches (render/LightBatches.h). These tests put more lights
+// technique now takes lights in batches (render/culling/LightBatches.h). These tests put more lights
 // on one spot than that limit, and check every technique's work against the pairs in range
 // at a size people render at.
 #include <gtest/gtest.h>
@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "render/ClusterLists.h"
-#include "render/LightBatches.h"
-#include "render/Technique.h"
+#include "render/culling/ClusterLists.h"
+#include "render/culling/LightBatches.h"
+#include "render/techniques/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 #include "tests/support/ImageComparison.h"
@@ -133,7 +133,7 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
 }
 
 // 262,144 small point and spot lights (tests/scenes/small_lights_262144.json) around a floor, a
-// box and a ball: the light lists of clustered and tiled (render/ClusterLists.h) against
+// box and a ball: the light lists of clustered and tiled (render/culling/ClusterLists.h) against
 // deferred, which walks every light at every pixel. At 96x72 the longest lists pass 8,192
 // lights, so the passes over the long lists' tiles run too, and the first frame's storage is
 // too small, so the frame is redone. The seed G-buffer keeps every input exact, so the images

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {

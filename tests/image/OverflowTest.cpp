@@ -1,5 +1,5 @@
 // No light is ever silently dropped by a per-region light set. tiled and clustered list every
-// light that may reach a tile or cluster (render/ClusterLists.h: storage planned from the
+// light that may reach a tile or cluster (render/culling/ClusterLists.h: storage planned from the
 // frame before, the frame redone when it did not hold), so a region reached by all of them
 // keeps all of them. The seed G-buffer layout keeps the comparison with forward exact (the
 // compact layout's own bound is TechniqueAgreementTest's).

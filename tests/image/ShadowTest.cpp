@@ -20,7 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "TestSupport.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {

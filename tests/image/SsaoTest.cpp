@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "render/Technique.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 // Every render here uses the exact seed G-buffer layout: the expected values are docs/lighting.md

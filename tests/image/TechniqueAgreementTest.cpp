@@ -37,8 +37,8 @@
 #include <filesystem>
 
 #include "TestSupport.h"
-#include "render/Technique.h"
-#include "render/TextureCache.h"
+#include "render/scene/TextureCache.h"
+#include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/Image.h"
+#include "render/output/Image.h"
 
 namespace manylights::test {
 

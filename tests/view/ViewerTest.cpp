@@ -22,8 +22,8 @@
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewScript.h"
 #include "core/Error.h"
-#include "render/Technique.h"
 #include "render/Views.h"
+#include "render/techniques/Technique.h"
 
 namespace manylights {
 namespace {

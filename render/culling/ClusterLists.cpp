@@ -1,0 +1,341 @@
+#include "render/culling/ClusterLists.h"
+#include "render/programs/Bindings.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <string>
+
+#include "core/Error.h"
+#include "gl/Driver.h"
+#include "render/culling/LightTiles.h"
+#include "render/scene/GpuScene.h"
+
+namespace manylights {
+
+namespace {
+
+// Uniform locations of cluster_pairs.comp and pair_sort.comp (the
+// shaders get them as defines, so the numbers live here only).
+constexpr int kPairLightCountLocation = 52;
+constexpr int kPairCapacityLocation = 54;
+constexpr int kPairEmitLocation = 59;
+constexpr int kSortShiftLocation = 55;
+constexpr int kSortChunksLocation = 56;
+constexpr int kSortCapacityLocation = 57;
+constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
+// The most tiles one invocation of cluster_pairs.comp walks for a light; lights covering
+// more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64 measured alike
+// on the courtyard (256 was slower for clustered at 1,024 lights, its lanes out of step); 64
+// keeps 131,072 lights of 36 tiles each (tests/scenes/lights_on_one_spot.json, tiled) narrow:
+// as 262,144 workgroups they took 21 s and 20 GB under AddressSanitizer, whose allocator
+// llvmpipe's per-workgroup allocations then go through.
+constexpr std::uint32_t kNarrowLightTiles = 64;
+static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
+static_assert(kClusterListPart + 1024 < kMaxLoopIterations);
+// The smallest storage planned: a few small frames fit it without a rebuild.
+constexpr std::uint32_t kMinimumCapacity = 1u << 16;
+// The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the
+// default scene has 6 per cluster at 1280x720, the courtyard 8 to 13 from 1,024 to 1,048,576
+// lights), so that a single image is rarely rendered twice.
+constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
+
+gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
+{
+    gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
+    defines.emplace_back("CLUSTER_PAIR_LIGHT_COUNT_LOCATION", std::to_string(kPairLightCountLocation));
+    defines.emplace_back("CLUSTER_PAIR_EMIT_LOCATION", std::to_string(kPairEmitLocation));
+    defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
+    defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
+    if (wide)
+        defines.emplace_back("WIDE_LIGHTS", "1");
+    return defines;
+}
+
+enum class SortPass { Count, Scatter, ScatterGather };
+
+gl::Defines sortDefines(SortPass pass)
+{
+    gl::Defines defines = {{"PAIR_SORT_SHIFT_LOCATION", std::to_string(kSortShiftLocation)},
+                           {"PAIR_SORT_CHUNKS_LOCATION", std::to_string(kSortChunksLocation)},
+                           {"PAIR_SORT_CAPACITY_LOCATION", std::to_string(kSortCapacityLocation)},
+                           {"PAIR_SORT_CHUNK", std::to_string(kSortChunk)},
+                           {"PAIR_SORT_RADIX", std::to_string(1 << kSortRadixBits)}};
+    if (pass != SortPass::Count)
+        defines.emplace_back("PAIR_SORT_SCATTER", "1");
+    if (pass == SortPass::ScatterGather)
+        defines.emplace_back("PAIR_SORT_GATHER", "1");
+    return defines;
+}
+
+GLuint groupsFor(std::uint32_t items) { return (items + kGroupSize - 1) / kGroupSize; }
+
+Pass listPass(std::string_view name)
+{
+    return {.name = name, .storage = Resource::LightGrid, .writes = Resource::LightGrid};
+}
+
+std::size_t bytesOf(std::uint32_t uints) { return std::size_t{uints} * sizeof(std::uint32_t); }
+
+// A storage buffer of at least `uints` uints, made anew only when it has fewer.
+void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
+{
+    const std::size_t bytes = std::max<std::size_t>(bytesOf(uints), sizeof(std::uint32_t));
+    if (!buffer || buffer.size() < bytes)
+        buffer = gl::Buffer(label, bytes, nullptr, 0);
+}
+
+}  // namespace
+
+gl::Defines clusterListDefines(gl::Defines defines, bool texels)
+{
+    defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
+    defines.emplace_back("CLUSTER_LIST_PART_LOCATION", std::to_string(kClusterListPartLocation));
+    if (texels)
+        defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
+    return defines;
+}
+
+ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
+    : narrowPairs_("cluster pairs", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, false)),
+      widePairs_("cluster pairs of wide lights", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, true)),
+      longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
+                 clusterListDefines(clusterGridDefines({}, shape))),
+      sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
+      sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Scatter)),
+      sortScatterGather_("pair sort scatter with spheres", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
+                         sortDefines(SortPass::ScatterGather)),
+      longLighting_{LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
+                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), false)),
+                    LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
+                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
+      statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT)
+{
+}
+
+void ClusterLists::plan(std::uint32_t pairs)
+{
+    // A quarter more than the frame had: lights that move a little need no rebuild.
+    const std::uint64_t wanted = std::max<std::uint64_t>(kMinimumCapacity, std::uint64_t{pairs} + pairs / 4);
+    const auto capacity = static_cast<std::uint32_t>(std::min<std::uint64_t>(wanted, 0xffffffffu / 2));
+    // Shrinks only where the storage is over twice what is wanted: no churn from frame to frame.
+    if (capacity_ >= capacity && capacity_ <= 2 * capacity)
+        return;
+    capacity_ = capacity;
+    for (int i = 0; i < 2; ++i) {
+        keys_[i] = gl::Buffer("cluster pair keys", bytesOf(capacity_), nullptr, 0);
+        lights_[i] = gl::Buffer("cluster pair lights", bytesOf(capacity_), nullptr, 0);
+    }
+    spheres_ = gl::Buffer("cluster pair spheres", std::size_t{capacity_} * sizeof(float) * 4, nullptr, 0);
+    const std::uint32_t chunks = (capacity_ + kSortChunk - 1) / kSortChunk;
+    histogram_ = gl::Buffer("pair sort histogram", bytesOf(chunks << kSortRadixBits), nullptr, 0);
+    // GL promises texture buffers of 65,536 texels only; desktop drivers have 2^27.
+    texels_ = static_cast<std::int64_t>(capacity_) <= gl::queryInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
+    for (int i = 0; i < 2; ++i)
+        lightTexels_[i] =
+            texels_ ? gl::BufferTexture("cluster list texels", GL_R32UI, lights_[i]) : gl::BufferTexture();
+    sphereTexels_ =
+        texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
+}
+
+void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
+{
+    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
+    sceneTexels_ = scene.indexedLightSource() == LightSource::TexelBuffer;
+    lightCount_ = lightCount;
+    const std::uint32_t clusters = grid.clusterCount();
+    if (capacity_ == 0)
+        plan(clusters * kFirstPlanPairsPerCell);
+    const auto tiles = static_cast<std::uint32_t>(grid.gridWidth() * grid.gridHeight());
+    ensure(clusterCounts_, "cluster list counts", clusters);
+    ensure(clusterFirsts_, "cluster list firsts", clusters);
+    ensure(longListTiles_, "cluster long list tiles", tiles);
+    ensure(lightPairOffsets_, "light pair offsets", lightCount);
+    ensure(lightPairCursors_, "light pair cursors", lightCount);
+    ensure(wideLights_, "wide lights", lightCount);
+    const auto bindAll = [&] {
+        grid.bind();
+        statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
+        lightPairOffsets_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_OFFSETS_BUFFER_BINDING);
+        lightPairCursors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_CURSORS_BUFFER_BINDING);
+        wideLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::WIDE_LIGHTS_BUFFER_BINDING);
+        keys_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_IN_BUFFER_BINDING);
+        lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
+        clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
+        clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
+        longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
+    };
+    // Narrow lights along x and z of the dispatch (x has at most 65,535 workgroups); wide
+    // ones a workgroup per light and band of rows (lib/light_tiles.glsl).
+    const GLuint lightGroups = std::max<GLuint>(groupsFor(lightCount), 1);
+    const GLuint groupsX = std::min<GLuint>(lightGroups, 32768);
+    const GLuint groupsZ = (lightGroups + groupsX - 1) / groupsX;
+    ML_ASSERT(grid.gridWidth() >= 1 && grid.gridWidth() <= kTilesPerBand);
+    const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / grid.gridWidth());
+    const auto bands = (static_cast<std::uint32_t>(grid.gridHeight()) + rowsPerBand - 1) / rowsPerBand;
+    const auto runPairs = [&](std::uint32_t emit) {
+        passes.run(listPass("cluster pairs"), [&] {
+            bindAll();
+            narrowPairs_.set(kPairLightCountLocation, lightCount);
+            narrowPairs_.set(kPairEmitLocation, emit);
+            narrowPairs_.set(kPairCapacityLocation, capacity_);
+            narrowPairs_.use();
+            glDispatchCompute(groupsX, 1, groupsZ);
+        });
+        // The narrow run has listed the wide lights: a workgroup each per band.
+        passes.run({.name = "cluster pairs",
+                    .storage = Resource::LightGrid,
+                    .indirect = Resource::LightGrid,
+                    .writes = Resource::LightGrid},
+                   [&] {
+                       bindAll();
+                       widePairs_.set(kPairEmitLocation, emit);
+                       widePairs_.set(kPairCapacityLocation, capacity_);
+                       widePairs_.set(kRowsPerBandLocation, rowsPerBand);
+                       widePairs_.use();
+                       statusBuffer_.bindAsDispatchIndirect();
+                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
+                   });
+    };
+
+    passes.run(listPass("cluster pairs"), [&] {
+        Status reset;
+        reset.wideLightGroups[1] = bands;
+        statusBuffer_.update(0, sizeof(Status), &reset);
+        lightPairOffsets_.clearToZero(bytesOf(std::max(lightCount, 1u)));
+        lightPairCursors_.clearToZero(bytesOf(std::max(lightCount, 1u)));
+        clusterCounts_.clearToZero(bytesOf(clusters));
+    });
+    if (lightCount > 0) {
+        runPairs(0);
+        scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
+                  std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
+        runPairs(1);
+    }
+    passes.run(listPass("cluster lists"), [&] {
+        bindAll();
+        longLists_.use();
+        glDispatchCompute(groupsFor(tiles), 1, 1);
+    });
+    // The long-lists pass has read the counts; they become the firsts by a scan of a copy.
+    passes.run({.name = "cluster lists",
+                .storage = Resource::LightGrid,
+                .transfers = Resource::LightGrid,
+                .writes = Resource::LightGrid},
+               [&] { clusterCounts_.copyTo(clusterFirsts_, bytesOf(clusters)); });
+    scan_.run(passes, "cluster lists", clusterFirsts_, clusters);
+    sorted_ = 0;
+    if (lightCount > 0)
+        sortPairs(passes, clusters);
+    built_ = true;
+}
+
+void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
+{
+    const std::uint32_t chunks = (capacity_ + kSortChunk - 1) / kSortChunk;
+    const int keyBits = std::max(1, static_cast<int>(std::bit_width(std::max(clusterCount, 2u) - 1)));
+    for (int shift = 0; shift < keyBits; shift += kSortRadixBits) {
+        const int from = sorted_;
+        const int to = 1 - sorted_;
+        const auto bindPairs = [&] {
+            statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
+            histogram_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SCAN_DATA_BUFFER_BINDING);
+            keys_[from].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_IN_BUFFER_BINDING);
+            lights_[from].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
+            keys_[to].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_OUT_BUFFER_BINDING);
+            lights_[to].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_LIGHTS_OUT_BUFFER_BINDING);
+            spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
+        };
+        const auto dispatch = [&](const gl::Program& program) {
+            bindPairs();
+            program.set(kSortShiftLocation, static_cast<unsigned>(shift));
+            program.set(kSortChunksLocation, chunks);
+            program.set(kSortCapacityLocation, capacity_);
+            program.use();
+            glDispatchCompute(groupsFor(chunks), 1, 1);
+        };
+        passes.run(listPass("pair sort"), [&] { dispatch(sortCount_); });
+        scan_.run(passes, "pair sort", histogram_, chunks << kSortRadixBits);
+        const bool lastDigit = shift + kSortRadixBits >= keyBits;
+        passes.run(listPass("pair sort"), [&] { dispatch(lastDigit ? sortScatterGather_ : sortScatter_); });
+        sorted_ = to;
+    }
+}
+
+void ClusterLists::bind() const
+{
+    statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
+    clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
+    clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
+    lights_[sorted_].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
+    spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
+    if (readsTexels()) {
+        lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
+        sphereTexels_.bindUnit(bindings::CLUSTER_LIST_SPHERES_UNIT);
+    }
+    longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
+}
+
+void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const
+{
+    if (laterParts_ == 0)
+        return;
+    const LightSource source = scene.indexedLightSource();
+    const gl::Program& program = longLighting_[readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
+    for (std::uint32_t part = 1; part <= laterParts_; ++part)
+        passes.run({.name = "lighting",
+                    .sampled = Resource::GBuffer,
+                    .images = Resource::LitImage,
+                    .storage = Resource::LightGrid,
+                    .indirect = Resource::LightGrid,
+                    .writes = Resource::LitImage},
+                   [&] {
+                       grid.bind();
+                       bind();
+                       program.set(kClusterListPartLocation, part);
+                       program.use();
+                       statusBuffer_.bindAsDispatchIndirect();
+                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, longTileGroups)));
+                   });
+}
+
+bool ClusterLists::fitted()
+{
+    if (!built_)
+        return true;
+    built_ = false;
+    statusBuffer_.read(0, sizeof(Status), &status_);
+    const bool pairsFit = status_.pairsNeeded <= capacity_;
+    const std::uint32_t partsNeeded =
+        status_.longestList == 0 ? 0 : (status_.longestList - 1) / kClusterListPart;  // after the first
+    const bool partsFit = partsNeeded <= laterParts_;
+    laterParts_ = partsNeeded;
+    plan(status_.pairsNeeded);
+    if (pairsFit && partsFit)
+        return true;
+    ++rebuilds_;
+    return false;
+}
+
+std::size_t ClusterLists::memoryBytes() const
+{
+    std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
+    for (const gl::Buffer* buffer :
+         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
+          &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+        bytes += buffer->size();
+    return bytes;
+}
+
+std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) const
+{
+    const std::size_t lightBytes = std::size_t{lightCount_} * sizeof(GpuLight);
+    return {{"clusters", static_cast<double>(grid.clusterCount())},
+            {"cluster_pairs", static_cast<double>(status_.pairsNeeded)},
+            {"longest_cluster_list", static_cast<double>(status_.longestList)},
+            {"cluster_list_visits", static_cast<double>(status_.listVisits)},
+            {"cluster_rebuilds", static_cast<double>(rebuilds_)},
+            {"gpu_memory_bytes", static_cast<double>(lightBytes + memoryBytes() + grid.memoryBytes())}};
+}
+
+}  // namespace manylights

@@ -1,0 +1,142 @@
+// The light lists of the clustered and tiled techniques (issue 29): per cluster of a
+// ClusterGrid, the lights that may reach it, built on the GPU every frame in one sequence
+// whatever the light count, and read by one lighting pass (shaders/lib/cluster_lists.glsl).
+//
+// The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
+// 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
+//    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
+//    culling tests of lib/cluster_culling.glsl.
+// 2. A scan (render/culling/GpuScan.h) of the counts gives each light its first slot, and the total.
+// 3. cluster_pairs.comp again writes the pairs there and counts each cluster's.
+// 4. cluster_long_lists.comp notes the longest list and the tiles of lists longer than a part.
+// 5. A scan of the clusters' counts gives each list its first entry.
+// 6. A stable radix sort by cluster (pair_sort.comp and the scan, kSortRadixBits a digit)
+//    puts each cluster's lights together, in the lights' order: the sum over a pixel's lights
+//    runs in one order on every run, so the image is a function of the scene alone. Its last
+//    digit also copies each pair's light sphere beside it, for the lighting's reach test.
+// Sorted pairs rather than bit masks over light batches (the grid's other user, the
+// transparency pass, keeps masks): a mask costs a bit per light for every cluster, so a frame
+// of a million lights needed 128 batches, each a mask clear, an assignment and a lighting pass
+// over the whole image; the pairs cost what the lights reach.
+//
+// Nothing is read back during the frame. The storage for pairs and the number of parts the
+// lighting walks are planned from the frame before (with headroom); the GPU counts what the
+// frame needs, and after the frame, which the renderer waits for anyway, fitted() says whether
+// the plan held. When it did not (the first frame, or a frame whose lights moved into more
+// clusters), the lists are resized and the renderer redoes the frame: counted as
+// cluster_rebuilds. No pair is ever dropped from an image that is kept.
+#pragma once
+
+#include <cstdint>
+
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "render/culling/ClusterGrid.h"
+#include "render/culling/GpuScan.h"
+#include "render/frame/FramePasses.h"
+#include "render/programs/LightingPrograms.h"
+#include "render/techniques/Technique.h"
+
+namespace manylights {
+
+// The lights one invocation of the lighting walks (a part of a list): within the loop bound
+// of render/culling/LightBatches.h, with room for the iterations around the walk.
+inline constexpr std::uint32_t kClusterListPart = 8192;
+// The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
+inline constexpr int kSortRadixBits = 4;
+inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
+inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
+
+// CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl; with `texels`, they read
+// the lists as texels (ClusterLists::readsTexels).
+gl::Defines clusterListDefines(gl::Defines defines, bool texels = false);
+
+// The shape of the clustered technique's grid (docs/techniques.md has the measurements).
+inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 8, .surfaceBounds = true};
+
+class ClusterLists {
+public:
+    // For grids of `shape` (their programs are compiled for it), lit by programs made with
+    // `lightingDefines` (the technique's, render/techniques/Technique.h shaderDefines).
+    ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines);
+
+    // Builds the frame's lists for the scene's lights (bound by the passes) over `grid`, fitted
+    // to the frame's surfaces already.
+    void build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid);
+    // Binds what the lighting programs read: the lists and the long lists' tiles.
+    void bind() const;
+    // Whether the lighting reads the lists as R32UI texels, and so needs programs built with
+    // clusterListDefines(.., true): where the scene reads its lights from texels too
+    // (RendererDesc::lightTexels) and the driver's texture buffers hold the planned storage.
+    bool readsTexels() const { return texels_ && sceneTexels_; }
+    // After the lighting of part 0 of every list: the later parts of the long lists, as many
+    // as planned for this frame, each an indirect dispatch of list_lighting.comp over the tiles
+    // that have them, adding to the lit image. Passes named "lighting".
+    void lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const;
+
+    // After the frame: whether this frame's lists held every pair and its parts covered the
+    // longest list. If not, plans the storage and parts the frame needs: the frame must be
+    // redone (and counts as a rebuild). Reads the frame's status (a few bytes).
+    bool fitted();
+
+    std::uint64_t rebuilds() const { return rebuilds_; }
+    std::uint32_t pairs() const { return status_.pairsNeeded; }
+    std::uint32_t longestList() const { return status_.longestList; }
+    // List entries the lighting walked (all pixels, all parts), when counting work.
+    std::uint32_t listVisits() const { return status_.listVisits; }
+    // The GPU memory of the lists and their culling structures.
+    std::size_t memoryBytes() const;
+    // The --stats counters of a technique lit from these lists over `grid`, of the last frame:
+    // clusters (the grid's size), cluster_pairs, longest_cluster_list, cluster_list_visits
+    // (when counting work), cluster_rebuilds (frames redone so far) and gpu_memory_bytes (the
+    // lights, the lists and the grid).
+    std::vector<TechniqueCounter> counters(const ClusterGrid& grid) const;
+
+private:
+    struct Status {  // lib/cluster_list_status.glsl
+        std::uint32_t longTileGroups[3] = {0, 1, 1};
+        std::uint32_t pairsNeeded = 0;
+        std::uint32_t longestList = 0;
+        std::uint32_t wideLightGroups[3] = {0, 1, 1};
+        std::uint32_t listVisits = 0;
+    };
+
+    void plan(std::uint32_t pairs);
+    void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
+
+    gl::Program narrowPairs_;
+    gl::Program widePairs_;
+    gl::Program longLists_;
+    gl::Program sortCount_;
+    gl::Program sortScatter_;
+    gl::Program sortScatterGather_;    // the last digit: with the lights' spheres
+    LightingProgram longLighting_[2];  // without and with the list texels
+    GpuScan scan_;
+
+    std::uint32_t capacity_ = 0;    // pairs the storage holds
+    std::uint32_t laterParts_ = 0;  // planned
+    std::uint64_t rebuilds_ = 0;
+    std::uint32_t lightCount_ = 0;  // of the last frame
+    Status status_;
+    bool built_ = false;  // a frame was built whose status fitted() has not read
+
+    gl::Buffer lightPairOffsets_;
+    gl::Buffer lightPairCursors_;
+    gl::Buffer wideLights_;
+    gl::Buffer keys_[2];
+    gl::Buffer lights_[2];
+    int sorted_ = 0;                    // which of lights_ holds the sorted lists
+    gl::BufferTexture lightTexels_[2];  // lights_ as R32UI texels, where texels_
+    gl::Buffer spheres_;                // the sorted pairs' light spheres (vec4)
+    gl::BufferTexture sphereTexels_;    // spheres_ as RGBA32F texels, where texels_
+    bool texels_ = false;               // the driver's texture buffers hold the storage
+    bool sceneTexels_ = false;          // the scene of the last build reads its lights from texels
+    gl::Buffer clusterCounts_;
+    gl::Buffer clusterFirsts_;
+    gl::Buffer longListTiles_;
+    gl::Buffer histogram_;
+    gl::Buffer statusBuffer_;
+};
+
+}  // namespace manylights

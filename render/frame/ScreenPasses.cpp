@@ -1,0 +1,20 @@
+#include "render/frame/ScreenPasses.h"
+
+namespace manylights {
+
+void drawCoveredPixels(const gl::Program& program)
+{
+    program.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+Pass lightBatchPass(const LightBatch& batch, Resource storage)
+{
+    return {.name = "lighting",
+            .target = Resource::LitImage,
+            .state = batch.isFirst() ? kCoveredPixels : kAddToCoveredPixels,
+            .sampled = Resource::GBuffer,
+            .storage = storage};
+}
+
+}  // namespace manylights

@@ -1,0 +1,107 @@
+#include "render/programs/LightingPrograms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "render/culling/LightBatches.h"
+
+namespace manylights {
+
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
+                                    const std::optional<DirectionalLight>& directional)
+{
+    const auto any = [&](auto predicate) { return std::any_of(lights.begin(), lights.end(), predicate); };
+    return {
+        .spotLights = any([](const Light& light) { return light.type == LightType::Spot; }),
+        .classicFalloff = any([](const Light& light) { return light.falloff == Falloff::Classic; }),
+        .rangeFalloff = any([](const Light& light) { return light.falloff != Falloff::Classic; }),
+        .directionalLight = directional.has_value(),
+        .directionalShadow = directional.has_value() && directional->shadows,
+    };
+}
+
+SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials)
+{
+    std::set<float> shininesses;
+    for (const Material* material : materials) {
+        if (material->model == ShadingModel::MetallicRoughness)
+            continue;
+        if (!material->metallicRoughnessMap.empty())
+            return {};
+        if (material->specular != glm::vec3{0.0f} || material->specularTint != glm::vec3{0.0f})
+            shininesses.insert(material->shininess);
+    }
+    if (shininesses.size() > kMaxSpecularExponents)
+        return {};
+    SpecularExponents exponents;
+    int multiplications = 0;
+    for (const float shininess : shininesses) {  // ascending
+        if (shininess < 1.0f || shininess > kMaxSpecularExponent || std::floor(shininess) != shininess)
+            return {};
+        exponents.push_back(static_cast<std::uint16_t>(shininess));
+        multiplications += integerPowerMultiplications(exponents.back());
+    }
+    return multiplications <= kSpecularMultiplicationBudget ? exponents : SpecularExponents{};
+}
+
+gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines)
+{
+    if (!features.spotLights)
+        defines.emplace_back("NO_SPOT_LIGHTS", "1");
+    // A scene without local lights takes either; nothing is evaluated.
+    if (!features.rangeFalloff)
+        defines.emplace_back("ONLY_CLASSIC_FALLOFF", "1");
+    else if (!features.classicFalloff)
+        defines.emplace_back("ONLY_RANGE_FALLOFF", "1");
+    if (!features.directionalLight)
+        defines.emplace_back("NO_DIRECTIONAL_LIGHT", "1");
+    if (!features.directionalShadow)
+        defines.emplace_back("NO_DIRECTIONAL_SHADOW", "1");
+    if (!features.ambientOcclusion)
+        defines.emplace_back("NO_AMBIENT_OCCLUSION", "1");
+    // A program for no surfaces at all (a scene without objects) keeps Blinn-Phong.
+    if (!features.metallicRoughness)
+        defines.emplace_back("NO_METALLIC_ROUGHNESS", "1");
+    else if (!features.blinnPhong)
+        defines.emplace_back("NO_BLINN_PHONG", "1");
+    if (!features.specularExponents.empty()) {
+        std::string list;
+        for (const std::uint16_t exponent : features.specularExponents)
+            list += (list.empty() ? "" : ", ") + std::to_string(exponent) + "u";
+        defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(features.specularExponents.size()));
+        defines.emplace_back("SPECULAR_EXPONENTS", list);
+    }
+    return defines;
+}
+
+gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines)
+{
+    defines.emplace_back("MATERIAL_VARIANT", std::to_string(variant));
+    return defines;
+}
+
+std::uint32_t lightsPerBatch(LightSource source)
+{
+    return source == LightSource::UniformWindow ? kLightsPerWindow : kLightsPerBatch;
+}
+
+const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source,
+                                            std::optional<MaterialVariant> material) const
+{
+    const auto key = std::make_tuple(features, source, material);
+    auto found = variants_.find(key);
+    if (found == variants_.end()) {
+        gl::Defines defines = lightingFeatureDefines(features, defines_);
+        if (source == LightSource::UniformWindow)
+            addLightWindowDefines(defines);
+        if (source == LightSource::TexelBuffer)
+            addLightTexelsDefines(defines);
+        if (material)
+            defines = materialVariantDefines(*material, std::move(defines));
+        found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;
+    }
+    return found->second;
+}
+
+}  // namespace manylights

@@ -1,0 +1,157 @@
+// Lighting programs specialised for the kinds of light a scene has and its materials'
+// shininesses.
+//
+// On llvmpipe a shader runs 8 or 16 pixels in lock step and executes both sides of every
+// branch under a lane mask, so code for a kind of light the scene lacks still costs every
+// (pixel, light) pair: a spot factor's pow, the other falloff. Each lighting program is
+// therefore compiled per LightingFeatures, on first use, with the #defines of
+// shaders/lib/lighting.glsl that leave out what the scene cannot need, and with its few
+// integer shininesses as constants, whose powers are cheaper as multiplications than as pow()
+// (docs/performance.md). A program built without them (gl::Program with shaderDefines alone)
+// handles every scene.
+// The same variants also choose where the lights are read from (LightSource).
+#pragma once
+
+#include <bit>
+#include <compare>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "gl/Program.h"
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// The largest shininess, and the most distinct ones in a scene, that the lighting function
+// raises to by multiplications (shaders/lib/specular_power.glsl; as large as any material's,
+// kMaxShininess of scene/Shininess.h), and the most multiplications all of a scene's
+// together may take: on llvmpipe one pow() costs about as much as 50 (docs/performance.md).
+inline constexpr std::uint16_t kMaxSpecularExponent = 2048;
+inline constexpr std::size_t kMaxSpecularExponents = 6;
+inline constexpr int kSpecularMultiplicationBudget = 32;
+// Distinct integer shininesses, ascending; empty where the lighting function takes pow().
+using SpecularExponents = std::vector<std::uint16_t>;
+
+// The multiplications x^n takes by squaring, n ≥ 1 (shaders/lib/specular_power.glsl
+// integerPower): one per bit below n's highest, one more per set bit after the first.
+constexpr int integerPowerMultiplications(std::uint16_t n) { return std::bit_width(n) - 1 + std::popcount(n) - 1; }
+
+struct LightingFeatures {
+    bool spotLights = true;
+    bool classicFalloff = true;
+    bool rangeFalloff = true;
+    bool directionalLight = true;
+    // What the frame's shadowing reads (GpuScene::setFrameShadowing): the directional light's
+    // shadow map, the SSAO factor. Without them their factors are 1 and their lookups are left
+    // out: on llvmpipe the switched-off lookups cost about a tenth of clustered's lighting
+    // pass on the courtyard (docs/performance.md).
+    bool directionalShadow = true;
+    bool ambientOcclusion = true;
+    // The shininesses of every surface the scene draws with a specular term where few enough
+    // integers to raise N·H to by multiplications (specularExponentsOf), else empty: pow() costs
+    // a quarter of a lighting pass on llvmpipe (docs/performance.md).
+    SpecularExponents specularExponents{};
+    // The reflection models the drawn surfaces use (DrawList::shadingModels): a program for one
+    // of them leaves the other out (NO_BLINN_PHONG, NO_METALLIC_ROUGHNESS), so that a scene of
+    // one model pays nothing for the other's code (llvmpipe runs both sides of a select).
+    bool blinnPhong = true;
+    bool metallicRoughness = true;
+
+    auto operator<=>(const LightingFeatures&) const = default;
+};
+
+// What `lights` and the scene's directional light use. Animation moves lights but never
+// changes their kind, so this holds for every frame of a scene.
+LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
+                                    const std::optional<DirectionalLight>& directional);
+
+// The distinct shininesses of the materials in `materials` with a specular term, ascending,
+// when there are at most kMaxSpecularExponents, each is an integer in [1, kMaxSpecularExponent]
+// and their integerPowerMultiplications sum to at most kSpecularMultiplicationBudget; else none.
+// A material without a specular term (its specular colour and tint zero, as a light
+// marker's) is shaded the same by any exponent and does not count; one with a
+// metallic-roughness map has a shininess per texel and rules them out. Metallic-roughness
+// materials (ShadingModel::MetallicRoughness) have no shininess and do not count.
+SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
+
+// `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
+// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, NO_BLINN_PHONG,
+// NO_METALLIC_ROUGHNESS, and SPECULAR_EXPONENT_COUNT
+// with SPECULAR_EXPONENTS, as `features` allow.
+gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
+
+// Where a lighting program reads the lights (shaders/lib/lights.glsl).
+enum class LightSource : std::uint8_t {
+    StorageBuffer,  // the whole light buffer, any light by index
+    UniformWindow,  // the batch's window (render/culling/LightBatches.h: light windows); the caller
+                    // binds it with GpuScene::bindLightWindow
+    TexelBuffer,    // the whole light buffer as texels (render/culling/LightBatches.h: light texels),
+                    // which GpuScene::bind binds
+};
+
+// The batch size of a pass that walks its lights from `source`: a window's worth from a
+// uniform window, else kLightsPerBatch (render/culling/LightBatches.h).
+std::uint32_t lightsPerBatch(LightSource source);
+
+// What a mesh program (shaders/mesh.vert with a fragment shader calling lib/material.glsl's
+// meshSurface()) reads for a material, one bit each: its texture maps, its alpha mask, its mesh's
+// vertex colours. A mesh program is compiled per variant, with the bits as the constant
+// MATERIAL_VARIANT: llvmpipe runs both sides of a branch, so a branch on a uniform would pay
+// every map's lookups for every fragment (docs/performance.md), a `discard` that may run
+// keeps the depth test from running before the fragment shader, and every varying a material
+// might need costs every fragment of every material (about 10% of the G-buffer pass for the
+// tint, coverage and back-face inputs together), so those are bits too.
+using MaterialVariant = std::uint16_t;
+inline constexpr MaterialVariant kDiffuseMapBit = 1;
+inline constexpr MaterialVariant kSpecularMapBit = 2;
+inline constexpr MaterialVariant kNormalMapBit = 4;
+inline constexpr MaterialVariant kEmissiveMapBit = 8;
+inline constexpr MaterialVariant kMetallicRoughnessMapBit = 16;  // in the specular map's unit
+inline constexpr MaterialVariant kAlphaMaskBit = 32;
+inline constexpr MaterialVariant kVertexColoursBit = 64;
+inline constexpr MaterialVariant kSpecularTintBit = 128;             // Material::specularTint not zero
+inline constexpr MaterialVariant kFlipBackFacesBit = 256;            // Sides::BothFlipped
+inline constexpr MaterialVariant kBlendBit = 512;                    // AlphaMode::Blend: the coverage is the opacity
+inline constexpr MaterialVariant kOpacityMapBit = 1024;              // Material::opacityMap
+inline constexpr MaterialVariant kUvTransformsBit = 2048;            // a Material::uvTransforms other than the identity
+inline constexpr MaterialVariant kMetallicRoughnessModelBit = 4096;  // ShadingModel::MetallicRoughness
+inline constexpr MaterialVariant kOcclusionMapBit = 8192;            // Material::occlusionMap
+// The bits that mean a texture is bound per draw (such draws are not instanced).
+inline constexpr MaterialVariant kTextureBits = kDiffuseMapBit | kSpecularMapBit | kNormalMapBit | kEmissiveMapBit |
+                                                kMetallicRoughnessMapBit | kOpacityMapBit | kOcclusionMapBit;
+// What a depth-only pass (shaders/shadow_depth.*) needs of a variant: a masked surface's coverage.
+inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
+{
+    return (variant & kAlphaMaskBit) != 0 ? variant & (kAlphaMaskBit | kDiffuseMapBit | kVertexColoursBit) : 0;
+}
+
+// `defines` plus MATERIAL_VARIANT = `variant`.
+gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines);
+
+class LightingProgram {
+public:
+    LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
+        : label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines))
+    {
+    }
+
+    // The variant for `features` reading the lights from `source`, for a mesh program also for
+    // the material's variant, compiled the first time it is asked for (throws manylights::Error
+    // as gl::Program does).
+    const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer,
+                               std::optional<MaterialVariant> material = std::nullopt) const;
+
+private:
+    std::string label_;
+    std::vector<gl::ShaderStage> stages_;
+    gl::Defines defines_;
+    mutable std::map<std::tuple<LightingFeatures, LightSource, std::optional<MaterialVariant>>, gl::Program> variants_;
+};
+
+}  // namespace manylights

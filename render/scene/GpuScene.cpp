@@ -1,0 +1,72 @@
+#include "render/scene/GpuScene.h"
+
+namespace manylights {
+
+GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver)
+    : scene_(scene),
+      driver_(driver),
+      lights_(lights, scene.attenuationThreshold, driver),
+      draws_(scene, lights_.rest(), driver),  // the markers follow the lights in the lights' order
+      frame_(scene, lights.size()),
+      features_(lightingFeaturesOf(lights, scene.directional))
+{
+    // The specular powers as multiplications were measured on llvmpipe only. A GPU computes
+    // pow() with two special-function instructions (log2, exp2), where several chains of
+    // multiplications may well be slower: there it stays (no GPU was lent to measure it).
+    if (driver_.multipliedSpecularPowers)
+        features_.specularExponents = draws_.specularExponents();
+    features_.blinnPhong = draws_.drawsModel(ShadingModel::BlinnPhong);
+    features_.metallicRoughness = draws_.drawsModel(ShadingModel::MetallicRoughness);
+    setTime(0.0);
+    setViewport(1, 1);
+}
+
+void GpuScene::bind() const
+{
+    draws_.bind();
+    frame_.bind();
+    lights_.bind();
+}
+
+std::vector<GpuScene::TransparentLayer> GpuScene::transparentLayersBackToFront() const
+{
+    return draws_.transparentLayersBackToFront(glm::vec3(frameUniforms().eye), glm::vec3(frameUniforms().viewAxis));
+}
+
+void GpuScene::setViewport(int width, int height)
+{
+    frame_.setViewport(width, height);
+    reorderDraws();
+}
+
+void GpuScene::setCamera(const Camera& camera)
+{
+    // The viewer sets its camera every frame; one that did not move needs no new draw order
+    // and instance records.
+    if (frame_.setCamera(camera))
+        reorderDraws();
+}
+
+void GpuScene::setTime(double t)
+{
+    lights_.pose(t);
+    draws_.pose(t, lights_.posed());
+    frame_.setTime(t);
+    reorderDraws();
+}
+
+void GpuScene::reorderDraws()
+{
+    draws_.order(glm::vec3(frameUniforms().eye), glm::vec3(frameUniforms().viewAxis));
+    draws_.writeInstances();
+}
+
+LightingFeatures GpuScene::lightingFeatures() const
+{
+    LightingFeatures features = features_;
+    features.directionalShadow = frame_.directionalShadow();
+    features.ambientOcclusion = frame_.ambientOcclusion();
+    return features;
+}
+
+}  // namespace manylights

@@ -1,0 +1,106 @@
+// The scene's local lights on the GPU: at rest and posed at a time, packed into one storage
+// buffer (shaders/lib/lights.glsl), read as texels or uniform windows where the driver allows
+// (render/culling/LightBatches.h), with a version counter for passes that cache what they derive
+// from the lights. Made from the expanded light list alone (scene/LightSets.h): no other
+// route to the lights.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/Buffer.h"
+#include "gl/Texture.h"
+#include "render/DriverProfile.h"
+#include "render/culling/LightBatches.h"
+#include "render/programs/LightingPrograms.h"
+#include "scene/Scene.h"
+
+namespace manylights {
+
+// std430 layout of shaders/lib/lights.glsl: GpuLight.
+struct GpuLight {
+    glm::vec4 positionRadius;
+    glm::vec4 intensityExponent;
+    glm::vec4 attenuation;
+    glm::vec4 spotAxisCosCutoff;
+};
+static_assert(sizeof(GpuLight) == 64);
+
+// Packs a light for the GPU with its culling radius (lightRadius).
+GpuLight packLight(const Light& light, float attenuationThreshold);
+
+class SceneLights {
+public:
+    // `lights` are the scene's lights as rendered (explicit and generated, see expandLights),
+    // at rest; `attenuationThreshold` the scene's (its classic lights' radii). `driver`: the
+    // driver profile's choices (render/DriverProfile.h). Posed at time 0, with light texels.
+    // The lights are kept, and given to the shaders, in the order of their rest positions
+    // along a Morton curve (scene/SpatialOrder.h), not in `lights`' order: a cluster's lights
+    // are then neighbours in memory (docs/techniques.md, "The light lists of tiled and
+    // clustered"). Every index below is into that order.
+    SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver);
+
+    // Poses the lights at time t (scene/Animation.h): repacks and uploads the animated lights
+    // only (a run of them per buffer update), and nothing when none animates or t is the last
+    // pose's. The version changes only when something moved.
+    void pose(double t);
+
+    std::size_t count() const { return rest_.size(); }
+    float attenuationThreshold() const { return attenuationThreshold_; }
+    // The lights at rest, and as posed by pose() (their animations applied).
+    const std::vector<Light>& rest() const { return rest_; }
+    const std::vector<Light>& posed() const { return posed_; }
+    // The posed lights as the shaders get them.
+    const std::vector<GpuLight>& packed() const { return packed_; }
+    // Changes whenever the lights move, for passes that cache data derived from them.
+    std::uint64_t version() const { return version_; }
+
+    // Binds the storage buffer and, where there are some, the light texels.
+    void bind() const;
+    // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
+    // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
+    void bindWindow(const LightBatch& batch) const;
+    // Makes the light texels (render/culling/LightBatches.h; bound by bind()) when `wanted` and the
+    // driver has them for this many lights (lightTexelsSupported); drops them otherwise
+    // (RendererDesc::lightTexels). They are wanted from the start.
+    void setTexels(bool wanted);
+    // Where a pass that reads any light by index reads them: the light texels where there are
+    // some, else the storage buffer.
+    LightSource indexedSource() const { return texels_ ? LightSource::TexelBuffer : LightSource::StorageBuffer; }
+    // Whether a pass whose pixels walk a batch of lights in order (deferred, forward; tiled and
+    // clustered when the scene fits one window) reads the batch's uniform window
+    // (bindWindow) rather than as by index. On a GPU, yes where the driver has the block
+    // size: a read that every thread of a warp shares is a broadcast, what the vendors advise.
+    // On a software rasteriser only without light texels, which it fetches faster than it
+    // gathers from a uniform block, even at an index every lane shares (docs/performance.md:
+    // LearnOpenGL's scene, 512 lights, deferred's lighting pass 620 ms from windows, 492 ms
+    // from texels). The profile decides (DriverChoices::lightTexelsBeforeWindows).
+    bool readsWindows() const { return windowsSupported_ && (!texelsBeforeWindows_ || !texels_); }
+    // Where such a pass reads its lights: the batch's uniform window where readsWindows(),
+    // else as by index. Its batches are lightsPerBatch(source) lights.
+    LightSource walkedSource() const { return readsWindows() ? LightSource::UniformWindow : indexedSource(); }
+    // Binds what reading `batch` from `source` needs beyond bind(): a uniform window's range.
+    void bindSource(LightSource source, const LightBatch& batch) const
+    {
+        if (source == LightSource::UniformWindow)
+            bindWindow(batch);
+    }
+
+private:
+    std::vector<Light> rest_;   // their animations move them
+    std::vector<Light> posed_;  // at the last pose()
+    std::vector<GpuLight> packed_;
+    std::vector<std::size_t> animated_;  // the lights with an animation, in order
+    bool posedOnce_ = false;
+    double posedAt_ = 0.0;
+    float attenuationThreshold_;
+    bool texelsBeforeWindows_;
+    std::uint64_t version_ = 0;
+    gl::Buffer buffer_;
+    gl::BufferTexture texels_;  // buffer_ as texels, where the driver allows them
+    bool windowsSupported_ = lightWindowsSupported();
+};
+
+}  // namespace manylights

@@ -1,0 +1,51 @@
+#include "render/techniques/ClusteredTechnique.h"
+
+#include "render/frame/ScreenPasses.h"
+#include "render/scene/GpuScene.h"
+
+namespace manylights {
+
+namespace {
+
+LightingProgram clusteredLighting(const TechniqueOptions& options, bool listTexels)
+{
+    return LightingProgram(
+        "clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
+        clusterListDefines(clusterGridDefines(shaderDefines(options), kClusteredGridShape), listTexels));
+}
+
+}  // namespace
+
+ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
+    : Technique(options),
+      grid_(options.gbufferLayout, kClusteredGridShape),
+      lists_(kClusteredGridShape, shaderDefines(options)),
+      lighting_{clusteredLighting(options, false), clusteredLighting(options, true)}
+{
+}
+
+std::vector<TechniqueCounter> ClusteredTechnique::counters() const { return lists_.counters(grid_); }
+
+void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
+{
+    targets.gbuffer.fill(passes);
+    passes.run(ClusterGrid::fitPass(), [&] {
+        grid_.resize(targets.width, targets.height, 0);
+        grid_.fitToSurfaces();
+    });
+    lists_.build(scene, passes, grid_);
+    const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
+    // Lists name lights by index, so the lights are read by index.
+    const LightSource source = scene.indexedLightSource();
+    const LightBatch allLights{0, lightCount};
+    const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
+    passes.run(lightBatchPass(allLights, Resource::LightGrid), [&] {
+        scene.bindLightSource(source, allLights);
+        grid_.bind();
+        lists_.bind();
+        drawCoveredPixels(program);
+    });
+    lists_.lightLongLists(scene, grid_, passes);
+}
+
+}  // namespace manylights

@@ -1,0 +1,52 @@
+#include "render/techniques/TiledTechnique.h"
+
+#include "render/scene/GpuScene.h"
+
+namespace manylights {
+
+namespace {
+
+LightingProgram tiledLighting(const TechniqueOptions& options, bool listTexels)
+{
+    gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), kTiledGridShape), listTexels);
+    defines.emplace_back("EVERY_TILE", "1");
+    return LightingProgram("tiled lighting", {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, std::move(defines));
+}
+
+}  // namespace
+
+TiledTechnique::TiledTechnique(const TechniqueOptions& options)
+    : Technique(options),
+      grid_(options.gbufferLayout, kTiledGridShape),
+      lists_(kTiledGridShape, shaderDefines(options)),
+      lighting_{tiledLighting(options, false), tiledLighting(options, true)}
+{
+}
+
+void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
+{
+    targets.gbuffer.fill(passes);
+    passes.run(ClusterGrid::fitPass(), [&] {
+        grid_.resize(targets.width, targets.height, 0);
+        grid_.fitToSurfaces();
+    });
+    lists_.build(scene, passes, grid_);
+    const gl::Program& program =
+        lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
+    passes.run({.name = "lighting",
+                .sampled = Resource::GBuffer,
+                .images = Resource::LitImage,
+                .storage = Resource::LightGrid,
+                .writes = Resource::LitImage},
+               [&] {
+                   grid_.bind();
+                   lists_.bind();
+                   program.set(kClusterListPartLocation, 0u);
+                   program.use();
+                   glDispatchCompute(static_cast<GLuint>(grid_.gridWidth()), static_cast<GLuint>(grid_.gridHeight()),
+                                     1);
+               });
+    lists_.lightLongLists(scene, grid_, passes);
+}
+
+}  // namespace manylights
