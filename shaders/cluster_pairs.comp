@@ -13,6 +13,10 @@
 //   over the list), its LIGHT_TILE_LANES invocations sharing out the tiles
 //   (lib/light_tiles.glsl): 8 lanes in lock step each walking a light of hundreds of tiles
 //   would wait for the largest.
+// The counting run keeps what it found for a narrow light of at most 2 x 2 tiles (most lights
+// of a large scene): the tiles and each one's slices, 64 bits, so that the writing run only
+// writes that light's pairs instead of culling it again.
+//
 // A light's pairs may be written in any order (a wide light's slots are handed out by an
 // atomic), since no two of them share a cluster: sorted by cluster, each cluster's lights
 // follow the lights' order, whatever order the invocations ran in.
@@ -60,6 +64,18 @@ layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) writeonly buffer Pa
 layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) buffer ClusterListCounts {
     uint clusterPairCount[];  // each cluster's pairs (its list's length)
 };
+#ifndef WIDE_LIGHTS
+// Per light, what the counting run found, for the writing run: x the rectangle of at most
+// 2 x 2 tiles (first tile's x in bits 0-14 and y in 15-29, one more column in bit 30, one more
+// row in bit 31), y each of its tiles' slices (8 bits a tile, row by row); x = NO_RECORD where
+// the writing run must cull the light itself. Written for every light with pairs, so nothing
+// is left from an earlier frame.
+layout(std430, binding = LIGHT_TILE_RECORDS_BUFFER_BINDING) buffer LightTileRecords {
+    uvec2 lightTileRecord[];
+};
+const uint NO_RECORD = 0xffffffffu;
+const uint RECORD_COORDINATE_LIMIT = 0x7fffu;  // tiles across or down that a record can name
+#endif
 
 void emitPair(uint slot, uint cluster, uint lightIndex)
 {
@@ -69,6 +85,16 @@ void emitPair(uint slot, uint cluster, uint lightIndex)
         pairKey[slot] = cluster;
         pairLight[slot] = lightIndex;
         atomicAdd(clusterPairCount[cluster], 1u);
+    }
+}
+
+// Writes the light's pairs with the clusters `slices` (bit k: slice k) of `tile` from `slot` on.
+void emitTilePairs(uint slices, uint tile, uint lightIndex, uint slot)
+{
+    while (slices != 0u) {
+        uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
+        slices &= slices - 1u;
+        emitPair(slot++, cluster, lightIndex);
     }
 }
 
@@ -84,11 +110,7 @@ uint tilePairs(ViewLight light, uint lightIndex, uint tile, uint slot)
     // A wide light's invocations share its slots: one atomic per tile, not per pair.
     slot = lightPairOffset[lightIndex] + (atomicAdd(lightPairCursor[lightIndex], pairs) - WIDE_LIGHT_MARK);
 #endif
-    while (slices != 0u) {
-        uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
-        slices &= slices - 1u;
-        emitPair(slot++, cluster, lightIndex);
-    }
+    emitTilePairs(slices, tile, lightIndex, slot);
     return pairs;
 }
 
@@ -117,6 +139,20 @@ void main()
     if (emitPairs != 0u &&
         (lightIndex + 1u < lightCount ? lightPairOffset[lightIndex + 1u] : pairsNeeded) == lightPairOffset[lightIndex])
         return;
+    if (emitPairs != 0u) {
+        uvec2 record = lightTileRecord[lightIndex];
+        if (record.x != NO_RECORD) {
+            uvec2 first = uvec2(record.x & RECORD_COORDINATE_LIMIT, (record.x >> 15u) & RECORD_COORDINATE_LIMIT);
+            uvec2 size = uvec2(1u + ((record.x >> 30u) & 1u), 1u + (record.x >> 31u));
+            uint slot = lightPairOffset[lightIndex];
+            for (uint k = 0u; k < size.x * size.y; ++k) {
+                uint slices = (record.y >> (8u * k)) & 0xffu;
+                emitTilePairs(slices, (first.y + k / size.x) * grid.x + first.x + k % size.x, lightIndex, slot);
+                slot += uint(bitCount(slices));
+            }
+            return;
+        }
+    }
     ViewLight light = viewLight(lights[lightIndex]);
     if (light.radius <= 0.0)
         return;
@@ -129,9 +165,28 @@ void main()
     if (emitPairs == 0u) {
         if (light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
             lightPairCursor[lightIndex] = WIDE_LIGHT_MARK;
+            lightTileRecord[lightIndex].x = NO_RECORD;
             wideLight[atomicAdd(wideLightGroups[0], 1u)] = lightIndex;
             return;
         }
+#if CLUSTER_SLICES <= 8
+        if (size.x <= 2u && size.y <= 2u && last.x < RECORD_COORDINATE_LIMIT && last.y < RECORD_COORDINATE_LIMIT) {
+            uint masks = 0u;
+            uint pairs = 0u;
+            for (uint k = 0u; k < size.x * size.y; ++k) {
+                uint slices = lightSlicesOfTile(light, (first.y + k / size.x) * grid.x + first.x + k % size.x);
+                masks |= slices << (8u * k);
+                pairs += uint(bitCount(slices));
+            }
+            if (pairs != 0u) {
+                lightPairOffset[lightIndex] = pairs;
+                lightTileRecord[lightIndex] =
+                    uvec2(first.x | first.y << 15u | (size.x - 1u) << 30u | (size.y - 1u) << 31u, masks);
+            }
+            return;
+        }
+#endif
+        lightTileRecord[lightIndex].x = NO_RECORD;
     } else if (lightPairCursor[lightIndex] == WIDE_LIGHT_MARK) {
         return;
     }

@@ -153,12 +153,14 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     ensure(lightPairOffsets_, "light pair offsets", lightCount);
     ensure(lightPairCursors_, "light pair cursors", lightCount);
     ensure(wideLights_, "wide lights", lightCount);
+    ensure(lightTileRecords_, "light tile records", 2 * lightCount);
     const auto bindAll = [&] {
         grid.bind();
         statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
         lightPairOffsets_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_OFFSETS_BUFFER_BINDING);
         lightPairCursors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_CURSORS_BUFFER_BINDING);
         wideLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::WIDE_LIGHTS_BUFFER_BINDING);
+        lightTileRecords_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_TILE_RECORDS_BUFFER_BINDING);
         keys_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_IN_BUFFER_BINDING);
         lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
         clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
@@ -321,7 +323,7 @@ std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
-         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
+         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
           &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;

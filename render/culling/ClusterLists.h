@@ -124,6 +124,7 @@ private:
     gl::Buffer lightPairOffsets_;
     gl::Buffer lightPairCursors_;
     gl::Buffer wideLights_;
+    gl::Buffer lightTileRecords_;  // what the counting run found for a light of a few tiles
     gl::Buffer keys_[2];
     gl::Buffer lights_[2];
     int sorted_ = 0;                    // which of lights_ holds the sorted lists

@@ -41,6 +41,7 @@ const int CLUSTER_LONG_TILES_BUFFER_BINDING = 24;    // cluster_long_lists.comp,
 const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; pair_sort.comp PairSpheresOut
+const int LIGHT_TILE_RECORDS_BUFFER_BINDING = 28;    // cluster_pairs.comp
 
 // Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)

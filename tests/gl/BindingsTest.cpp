@@ -67,6 +67,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::StorageBlock, "ClusterListLights"}, CLUSTER_LIST_LIGHTS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ClusterListSpheres"}, CLUSTER_LIST_SPHERES_BUFFER_BINDING},
         {{Kind::StorageBlock, "PairSpheresOut"}, CLUSTER_LIST_SPHERES_BUFFER_BINDING},
+        {{Kind::StorageBlock, "LightTileRecords"}, LIGHT_TILE_RECORDS_BUFFER_BINDING},
         {{Kind::StorageBlock, "LongListTiles"}, CLUSTER_LONG_TILES_BUFFER_BINDING},
         {{Kind::StorageBlock, "LightPairOffsets"}, LIGHT_PAIR_OFFSETS_BUFFER_BINDING},
         {{Kind::StorageBlock, "LightPairCursors"}, LIGHT_PAIR_CURSORS_BUFFER_BINDING},
