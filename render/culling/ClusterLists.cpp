@@ -323,8 +323,8 @@ std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
-         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0], &lights_[1],
-          &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0],
+          &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;
 }
