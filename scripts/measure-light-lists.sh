@@ -33,6 +33,16 @@ if [ -n "${OLD:-}" ]; then
         sed "s|^|round $round $([ "$binary" = "$ML" ] && echo this || echo before): |"
     done
   done
+  # Start-up with a million lights: a whole render of a tiny image (the lights' sort and upload,
+  # render/scene/SceneLights.h, dominate it), the two builds interleaved.
+  for round in 1 2; do
+    for binary in "$OLD" "$ML"; do
+      start=$(date +%s.%N)
+      "$binary" render bench/courtyard.json --lights 1048576 --size 64x36 -o out/measure-light-lists-startup.pfm
+      echo "round $round $([ "$binary" = "$ML" ] && echo this || echo before): render of 1,048,576 lights at 64x36:" \
+        "$(python3 -c "print(round($(date +%s.%N) - $start, 2))") s"
+    done
+  done
   if [ -n "${OLD_ONLY:-}" ]; then
     echo "machine after: load average $(cut -d' ' -f1-3 /proc/loadavg)"
     exit 0

@@ -75,6 +75,12 @@ layout(std430, binding = LIGHT_TILE_RECORDS_BUFFER_BINDING) buffer LightTileReco
 };
 const uint NO_RECORD = 0xffffffffu;
 const uint RECORD_COORDINATE_LIMIT = 0x7fffu;  // tiles across or down that a record can name
+
+// Tile k (row by row) of a rectangle of `size` tiles from `first`.
+uint tileOfRect(uvec2 first, uvec2 size, uint k, uvec2 grid)
+{
+    return (first.y + k / size.x) * grid.x + first.x + k % size.x;
+}
 #endif
 
 void emitPair(uint slot, uint cluster, uint lightIndex)
@@ -147,7 +153,7 @@ void main()
             uint slot = lightPairOffset[lightIndex];
             for (uint k = 0u; k < size.x * size.y; ++k) {
                 uint slices = (record.y >> (8u * k)) & 0xffu;
-                emitTilePairs(slices, (first.y + k / size.x) * grid.x + first.x + k % size.x, lightIndex, slot);
+                emitTilePairs(slices, tileOfRect(first, size, k, grid), lightIndex, slot);
                 slot += uint(bitCount(slices));
             }
             return;
@@ -174,7 +180,7 @@ void main()
             uint masks = 0u;
             uint pairs = 0u;
             for (uint k = 0u; k < size.x * size.y; ++k) {
-                uint slices = lightSlicesOfTile(light, (first.y + k / size.x) * grid.x + first.x + k % size.x);
+                uint slices = lightSlicesOfTile(light, tileOfRect(first, size, k, grid));
                 masks |= slices << (8u * k);
                 pairs += uint(bitCount(slices));
             }

@@ -340,4 +340,15 @@ std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) co
             {"gpu_memory_bytes", static_cast<double>(lightBytes + memoryBytes() + grid.memoryBytes())}};
 }
 
+void buildListsOverSurfaces(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, ClusterGrid& grid,
+                            ClusterLists& lists)
+{
+    targets.gbuffer.fill(passes);
+    passes.run(ClusterGrid::fitPass(), [&] {
+        grid.resize(targets.width, targets.height, 0);
+        grid.fitToSurfaces();
+    });
+    lists.build(scene, passes, grid);
+}
+
 }  // namespace manylights

@@ -35,6 +35,7 @@
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/GpuScan.h"
 #include "render/frame/FramePasses.h"
+#include "render/frame/FrameTargets.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/techniques/Technique.h"
 
@@ -139,5 +140,10 @@ private:
     gl::Buffer histogram_;
     gl::Buffer statusBuffer_;
 };
+
+// What tiled and clustered do before their lighting: the G-buffer, the grid fitted to its
+// surfaces, and the lists built over that grid.
+void buildListsOverSurfaces(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, ClusterGrid& grid,
+                            ClusterLists& lists);
 
 }  // namespace manylights

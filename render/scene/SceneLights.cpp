@@ -84,7 +84,7 @@ SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThre
 void SceneLights::pose(double t)
 {
     // Lights at rest were packed and uploaded once: a frame pays for the lights that move.
-    if (animated_.empty() || (posedOnce_ && t == posedAt_))
+    if (animated_.empty() || posedAt_ == t)
         return;
     for (std::size_t i : animated_) {
         posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, t);
@@ -99,7 +99,6 @@ void SceneLights::pose(double t)
         buffer_.update(first * sizeof(GpuLight), count * sizeof(GpuLight), &packed_[first]);
         run = end;
     }
-    posedOnce_ = true;
     posedAt_ = t;
     ++version_;
 }

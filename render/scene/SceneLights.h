@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -93,8 +94,7 @@ private:
     std::vector<Light> posed_;  // at the last pose()
     std::vector<GpuLight> packed_;
     std::vector<std::size_t> animated_;  // the lights with an animation, in order
-    bool posedOnce_ = false;
-    double posedAt_ = 0.0;
+    std::optional<double> posedAt_;      // the time of the last pose that moved anything
     float attenuationThreshold_;
     bool texelsBeforeWindows_;
     std::uint64_t version_ = 0;

@@ -28,12 +28,7 @@ std::vector<TechniqueCounter> ClusteredTechnique::counters() const { return list
 
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(passes);
-    passes.run(ClusterGrid::fitPass(), [&] {
-        grid_.resize(targets.width, targets.height, 0);
-        grid_.fitToSurfaces();
-    });
-    lists_.build(scene, passes, grid_);
+    buildListsOverSurfaces(scene, targets, passes, grid_, lists_);
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();

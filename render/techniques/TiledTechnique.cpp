@@ -25,12 +25,7 @@ TiledTechnique::TiledTechnique(const TechniqueOptions& options)
 
 void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
-    targets.gbuffer.fill(passes);
-    passes.run(ClusterGrid::fitPass(), [&] {
-        grid_.resize(targets.width, targets.height, 0);
-        grid_.fitToSurfaces();
-    });
-    lists_.build(scene, passes, grid_);
+    buildListsOverSurfaces(scene, targets, passes, grid_, lists_);
     const gl::Program& program =
         lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
     passes.run({.name = "lighting",
