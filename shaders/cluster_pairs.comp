@@ -17,6 +17,14 @@
 // of a large scene): the tiles and each one's slices, 64 bits, so that the writing run only
 // writes that light's pairs instead of culling it again.
 //
+// A light whose screen rectangle covers at least globalLightTiles tiles (or that is unbounded)
+// is a candidate for the global list (lib/cluster_lists.glsl), which every pixel walks: the
+// counting run lists it in globalLightCandidate (up to GLOBAL_LIGHT_CAPACITY; all are counted)
+// and among the wide lights, marked. Where every candidate fits (globalLightCount()), the wide
+// program gives the marked ones no pair; where they do not, they are wide lights as any other.
+// All or none, so that which lights are global does not depend on the order the invocations
+// ran in, and the image stays the same from run to run.
+//
 // A light's pairs may be written in any order (a wide light's slots are handed out by an
 // atomic), since no two of them share a cluster: sorted by cluster, each cluster's lights
 // follow the lights' order, whatever order the invocations ran in.
@@ -46,8 +54,16 @@ layout(std430, binding = LIGHT_PAIR_OFFSETS_BUFFER_BINDING) buffer LightPairOffs
     uint lightPairOffset[];  // counting: each light's pairs; writing: its first slot
 };
 layout(std430, binding = WIDE_LIGHTS_BUFFER_BINDING) buffer WideLights {
-    uint wideLight[];  // the lights the narrow pass left to the wide one
+    uint wideLight[];  // the lights the narrow pass left to the wide one, GLOBAL_CANDIDATE_BIT
 };
+// Marks a wide light that is a candidate for the global list (light indices are below 2^24).
+const uint GLOBAL_CANDIDATE_BIT = 0x80000000u;
+#ifndef WIDE_LIGHTS
+layout(location = CLUSTER_PAIR_GLOBAL_TILES_LOCATION) uniform uint globalLightTiles;
+layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) writeonly buffer GlobalLightCandidates {
+    uint globalLightCandidate[];  // in the order the invocations ran: global_lights.comp sorts them
+};
+#endif
 layout(location = CLUSTER_PAIR_CAPACITY_LOCATION) uniform uint pairCapacity;
 layout(std430, binding = LIGHT_PAIR_CURSORS_BUFFER_BINDING) buffer LightPairCursors {
     uint lightPairCursor[];  // a wide light's slots handed out so far, from WIDE_LIGHT_MARK
@@ -124,7 +140,11 @@ void main()
 {
     uvec2 grid = clusterTileGrid();
 #ifdef WIDE_LIGHTS
-    uint lightIndex = wideLight[gl_WorkGroupID.x];
+    uint entry = wideLight[gl_WorkGroupID.x];
+    // A candidate for the global list has no pairs where the list holds every candidate.
+    if ((entry & GLOBAL_CANDIDATE_BIT) != 0u && globalLightCount() != 0u)
+        return;
+    uint lightIndex = entry & ~GLOBAL_CANDIDATE_BIT;
     ViewLight light = viewLight(lights[lightIndex]);
     LightTileRun run;
     if (!lightTileRun(light.centre, light.radius, light.unbounded, uint(CLUSTER_TILE_SIZE), grid, run))
@@ -169,10 +189,18 @@ void main()
         return;
     uvec2 size = last - first + 1u;
     if (emitPairs == 0u) {
-        if (light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
+        bool global = light.unbounded || size.x * size.y >= globalLightTiles;
+        if (global || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
             lightPairCursor[lightIndex] = WIDE_LIGHT_MARK;
             lightTileRecord[lightIndex].x = NO_RECORD;
-            wideLight[atomicAdd(wideLightGroups[0], 1u)] = lightIndex;
+            uint entry = lightIndex;
+            if (global) {
+                uint slot = atomicAdd(globalLightCandidates, 1u);
+                if (slot < uint(GLOBAL_LIGHT_CAPACITY))
+                    globalLightCandidate[slot] = lightIndex;
+                entry |= GLOBAL_CANDIDATE_BIT;
+            }
+            wideLight[atomicAdd(wideLightGroups[0], 1u)] = entry;
             return;
         }
 #if CLUSTER_SLICES <= 8

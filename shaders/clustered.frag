@@ -1,6 +1,7 @@
 #version 450 core
-// clustered: each covered pixel shades the global terms and the first part of its cluster's
-// light list (lib/cluster_lists.glsl); list_lighting.comp adds the later parts of long lists.
+// clustered: each covered pixel shades the global terms, the global lights and the first part
+// of its cluster's light list (lib/cluster_lists.glsl); list_lighting.comp adds the later parts
+// of long lists.
 // lib/light_batch.glsl first: lib/lights.glsl's light window needs it.
 #include "lib/light_batch.glsl"
 #include "lib/lighting.glsl"
@@ -19,6 +20,7 @@ void main()
     uint tile = clusterTileOfPixel(uvec2(gl_FragCoord.xy));
     uint cluster = tile * uint(CLUSTER_SLICES) + sliceOfDepth(viewDepth(s.position), tileDepthRange[tile]);
     uint evaluated = 0u;
+    color += shadeGlobalLights(s, V, evaluated);
     color += shadeClusterListPart(cluster, 0u, s, V, evaluated);
     recordLightEvaluations(evaluated);
     outColor = vec4(color, 1.0);

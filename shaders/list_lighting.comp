@@ -2,12 +2,13 @@
 // Lighting from the light lists of a cluster grid (lib/cluster_lists.glsl), in a compute pass:
 // an invocation per pixel, a workgroup per tile.
 // - EVERY_TILE: tiled's lighting (render/techniques/TiledTechnique.h). The workgroups cover the image;
-//   each covered pixel stores the global terms and part 0 of its cluster's list.
+//   each covered pixel stores the global terms, the global lights and part 0 of its cluster's
+//   list.
 // - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
 //   dispatch: the CPU does not know how many); pixels whose cluster's list is shorter than the
 //   part store nothing, the others add the part to the lit image.
-// Loop iterations: CLUSTER_LIST_PART.
+// Loop iterations: CLUSTER_LIST_PART, and GLOBAL_LIGHT_CAPACITY more with EVERY_TILE.
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/light_batch.glsl"
@@ -45,7 +46,12 @@ void main()
 #endif
     vec3 V = viewVector(s.position);
     uint evaluated = 0u;
-    vec3 color = shadeClusterListPart(cluster, part, s, V, evaluated);
+#ifdef EVERY_TILE
+    vec3 color = shadeGlobalLights(s, V, evaluated);
+#else
+    vec3 color = vec3(0.0);
+#endif
+    color += shadeClusterListPart(cluster, part, s, V, evaluated);
     recordLightEvaluationsAt(pixel, evaluated);
 #ifdef EVERY_TILE
     color += shadeGlobal(s, V);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -18,6 +19,7 @@ namespace {
 // Uniform locations of cluster_pairs.comp and pair_sort.comp (the
 // shaders get them as defines, so the numbers live here only).
 constexpr int kPairLightCountLocation = 52;
+constexpr int kPairGlobalTilesLocation = 53;
 constexpr int kPairCapacityLocation = 54;
 constexpr int kPairEmitLocation = 59;
 constexpr int kSortShiftLocation = 55;
@@ -32,7 +34,8 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // llvmpipe's per-workgroup allocations then go through.
 constexpr std::uint32_t kNarrowLightTiles = 64;
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
-static_assert(kClusterListPart + 1024 < kMaxLoopIterations);
+// Part 0 of a list is walked after the global list, by the same invocation.
+static_assert(kClusterListPart + kGlobalLightCapacity + 1024 < kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
 constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the
@@ -47,6 +50,8 @@ gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
     defines.emplace_back("CLUSTER_PAIR_EMIT_LOCATION", std::to_string(kPairEmitLocation));
     defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
+    defines.emplace_back("CLUSTER_PAIR_GLOBAL_TILES_LOCATION", std::to_string(kPairGlobalTilesLocation));
+    defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
     return defines;
@@ -77,6 +82,12 @@ Pass listPass(std::string_view name)
 
 std::size_t bytesOf(std::uint32_t uints) { return std::size_t{uints} * sizeof(std::uint32_t); }
 
+// The tiles a light's screen rectangle must cover to be global in a grid of `tiles`: at least one.
+std::uint32_t globalLightTiles(std::uint32_t tiles)
+{
+    return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::ceil(kGlobalLightGridFraction * tiles)));
+}
+
 // A storage buffer of at least `uints` uints, made anew only when it has fewer.
 void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 {
@@ -91,6 +102,7 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels)
 {
     defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
     defines.emplace_back("CLUSTER_LIST_PART_LOCATION", std::to_string(kClusterListPartLocation));
+    defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (texels)
         defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
     return defines;
@@ -105,11 +117,19 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
       sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Scatter)),
       sortScatterGather_("pair sort scatter with spheres", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
                          sortDefines(SortPass::ScatterGather)),
+      globalLightOrder_("global light order", {{GL_COMPUTE_SHADER, "global_light_order.comp"}},
+                        {{"GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity)}}),
       longLighting_{LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
                                     clusterListDefines(clusterGridDefines(lightingDefines, shape), false)),
                     LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
                                     clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
-      statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT)
+      statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT),
+      globalLightCandidates_("global light candidates", bytesOf(kGlobalLightCapacity), nullptr, 0),
+      globalLights_("global lights", bytesOf(kGlobalLightCapacity), nullptr, 0),
+      globalLightSpheres_("global light spheres", std::size_t{kGlobalLightCapacity} * sizeof(float) * 4, nullptr, 0),
+      // A texture buffer holds 65,536 texels at least: the list always fits.
+      globalLightTexels_("global light texels", GL_R32UI, globalLights_),
+      globalLightSphereTexels_("global light sphere texels", GL_RGBA32F, globalLightSpheres_)
 {
 }
 
@@ -166,6 +186,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
         clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
         longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
+        globalLightCandidates_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING);
     };
     // Narrow lights along x and z of the dispatch (x has at most 65,535 workgroups); wide
     // ones a workgroup per light and band of rows (lib/light_tiles.glsl).
@@ -181,6 +202,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
             narrowPairs_.set(kPairLightCountLocation, lightCount);
             narrowPairs_.set(kPairEmitLocation, emit);
             narrowPairs_.set(kPairCapacityLocation, capacity_);
+            narrowPairs_.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
             narrowPairs_.use();
             glDispatchCompute(groupsX, 1, groupsZ);
         });
@@ -210,6 +232,12 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     });
     if (lightCount > 0) {
         runPairs(0);
+        passes.run(listPass("cluster pairs"), [&] {
+            bindAll();
+            bindGlobalLights();
+            globalLightOrder_.use();
+            glDispatchCompute(groupsFor(kGlobalLightCapacity), 1, 1);
+        });
         scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
                   std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
         runPairs(1);
@@ -264,8 +292,15 @@ void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
     }
 }
 
+void ClusterLists::bindGlobalLights() const
+{
+    globalLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHTS_BUFFER_BINDING);
+    globalLightSpheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_SPHERES_BUFFER_BINDING);
+}
+
 void ClusterLists::bind() const
 {
+    bindGlobalLights();
     statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
     clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
     clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
@@ -274,6 +309,8 @@ void ClusterLists::bind() const
     if (readsTexels()) {
         lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
         sphereTexels_.bindUnit(bindings::CLUSTER_LIST_SPHERES_UNIT);
+        globalLightTexels_.bindUnit(bindings::GLOBAL_LIGHT_TEXELS_UNIT);
+        globalLightSphereTexels_.bindUnit(bindings::GLOBAL_LIGHT_SPHERES_UNIT);
     }
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
@@ -324,7 +361,8 @@ std::size_t ClusterLists::memoryBytes() const
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
          {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0],
-          &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+          &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_,
+          &globalLightCandidates_, &globalLights_, &globalLightSpheres_})
         bytes += buffer->size();
     return bytes;
 }
@@ -335,6 +373,7 @@ std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) co
     return {{"clusters", static_cast<double>(grid.clusterCount())},
             {"cluster_pairs", static_cast<double>(status_.pairsNeeded)},
             {"longest_cluster_list", static_cast<double>(status_.longestList)},
+            {"global_lights", static_cast<double>(globalLights())},
             {"cluster_list_visits", static_cast<double>(status_.listVisits)},
             {"cluster_rebuilds", static_cast<double>(rebuilds_)},
             {"gpu_memory_bytes", static_cast<double>(lightBytes + memoryBytes() + grid.memoryBytes())}};

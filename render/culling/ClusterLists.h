@@ -5,7 +5,8 @@
 // The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
 // 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
 //    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
-//    culling tests of lib/cluster_culling.glsl.
+//    culling tests of lib/cluster_culling.glsl. The lights covering most of the grid it lists
+//    for the global list instead (below), which global_light_order.comp then sorts.
 // 2. A scan (render/culling/GpuScan.h) of the counts gives each light its first slot, and the total.
 // 3. cluster_pairs.comp again writes the pairs there and counts each cluster's.
 // 4. cluster_long_lists.comp notes the longest list and the tiles of lists longer than a part.
@@ -18,6 +19,15 @@
 // transparency pass, keeps masks): a mask costs a bit per light for every cluster, so a frame
 // of a million lights needed 128 batches, each a mask clear, an assignment and a lighting pass
 // over the whole image; the pairs cost what the lights reach.
+//
+// The global list: a light whose screen rectangle covers at least kGlobalLightGridFraction of
+// the grid's tiles, or that is unbounded, would be in nearly every list, so it gets no pairs
+// and goes to one list that every pixel walks before its cluster's (lib/cluster_lists.glsl).
+// The counting run lists the candidates in any order; global_light_order.comp sorts them into
+// the lights' order, so that the sum runs in one order on every run. The list holds
+// kGlobalLightCapacity lights: where the candidates are more, none is global and all of them
+// get pairs as wide lights, in the same frame. All or none: the set of the first
+// kGlobalLightCapacity to arrive would change from run to run, and with it the image.
 //
 // Nothing is read back during the frame. The storage for pairs and the number of parts the
 // lighting walks are planned from the frame before (with headroom); the GPU counts what the
@@ -48,9 +58,17 @@ inline constexpr std::uint32_t kClusterListPart = 8192;
 inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
 inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
+// The most lights the global list holds. Part 0 of a list is walked after the global list, so
+// both are within the loop bound together (ClusterLists.cpp checks), and the sort's rank
+// count walks the list once per light: 4,096 lights that each cover half the screen would
+// cost far more to light than either.
+inline constexpr std::uint32_t kGlobalLightCapacity = 4096;
+// The share of the grid's tiles a light's screen rectangle must cover to be global
+// (docs/techniques.md has the measurements).
+inline constexpr double kGlobalLightGridFraction = 0.5;
 
-// CLUSTER_LIST_PART, for programs that include lib/cluster_lists.glsl; with `texels`, they read
-// the lists as texels (ClusterLists::readsTexels).
+// CLUSTER_LIST_PART and GLOBAL_LIGHT_CAPACITY, for programs that include lib/cluster_lists.glsl; with `texels`, they
+// read the lists as texels (ClusterLists::readsTexels).
 gl::Defines clusterListDefines(gl::Defines defines, bool texels = false);
 
 // The shape of the clustered technique's grid (docs/techniques.md has the measurements).
@@ -84,14 +102,20 @@ public:
     std::uint64_t rebuilds() const { return rebuilds_; }
     std::uint32_t pairs() const { return status_.pairsNeeded; }
     std::uint32_t longestList() const { return status_.longestList; }
-    // List entries the lighting walked (all pixels, all parts), when counting work.
+    // List entries the lighting walked (all pixels, all parts, the global list's too), when
+    // counting work.
     std::uint32_t listVisits() const { return status_.listVisits; }
+    // The lights of the last frame's global list (0 where the candidates were too many).
+    std::uint32_t globalLights() const
+    {
+        return status_.globalLightCandidates <= kGlobalLightCapacity ? status_.globalLightCandidates : 0;
+    }
     // The GPU memory of the lists and their culling structures.
     std::size_t memoryBytes() const;
     // The --stats counters of a technique lit from these lists over `grid`, of the last frame:
-    // clusters (the grid's size), cluster_pairs, longest_cluster_list, cluster_list_visits
-    // (when counting work), cluster_rebuilds (frames redone so far) and gpu_memory_bytes (the
-    // lights, the lists and the grid).
+    // clusters (the grid's size), cluster_pairs, longest_cluster_list, global_lights,
+    // cluster_list_visits (when counting work), cluster_rebuilds (frames redone so far) and
+    // gpu_memory_bytes (the lights, the lists, the global list and the grid).
     std::vector<TechniqueCounter> counters(const ClusterGrid& grid) const;
 
 private:
@@ -101,17 +125,20 @@ private:
         std::uint32_t longestList = 0;
         std::uint32_t wideLightGroups[3] = {0, 1, 1};
         std::uint32_t listVisits = 0;
+        std::uint32_t globalLightCandidates = 0;
     };
 
     void plan(std::uint32_t pairs);
     void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
+    void bindGlobalLights() const;
 
     gl::Program narrowPairs_;
     gl::Program widePairs_;
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
-    gl::Program sortScatterGather_;    // the last digit: with the lights' spheres
+    gl::Program sortScatterGather_;  // the last digit: with the lights' spheres
+    gl::Program globalLightOrder_;
     LightingProgram longLighting_[2];  // without and with the list texels
     GpuScan scan_;
 
@@ -139,6 +166,11 @@ private:
     gl::Buffer longListTiles_;
     gl::Buffer histogram_;
     gl::Buffer statusBuffer_;
+    gl::Buffer globalLightCandidates_;  // kGlobalLightCapacity lights, in any order
+    gl::Buffer globalLights_;           // in the lights' order
+    gl::Buffer globalLightSpheres_;     // beside them (vec4)
+    gl::BufferTexture globalLightTexels_;
+    gl::BufferTexture globalLightSphereTexels_;
 };
 
 // What tiled and clustered do before their lighting: the G-buffer, the grid fitted to its

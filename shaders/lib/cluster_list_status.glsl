@@ -2,10 +2,22 @@
 // CPU sets it before the passes and reads it after the frame, when the renderer has waited
 // for the frame anyway. The two groups are indirect dispatches: their x counts what the GPU
 // found.
+// The global lights (lib/cluster_lists.glsl) are the lights cluster_pairs.comp found covering
+// most of the grid: at most GLOBAL_LIGHT_CAPACITY of them, all or none (ClusterLists.h says why).
 layout(std430, binding = CLUSTER_LIST_STATUS_BUFFER_BINDING) buffer ClusterListStatus {
     uint longTileGroups[3];  // x: tiles holding a list longer than a part (list_lighting.comp)
     uint pairsNeeded;        // (cluster, light) pairs of the frame: the list storage it needs
     uint longestList;        // the longest cluster list
     uint wideLightGroups[3];  // x: lights covering more tiles than one invocation takes; y: bands
     uint listVisits;          // --count-work: list entries the lighting walked, all pixels
+    uint globalLightCandidates;  // lights covering enough of the grid to be global, all of them
 };
+
+#ifdef GLOBAL_LIGHT_CAPACITY
+// The lights of the global list: every candidate, or none where they are more than it holds
+// (they are then wide lights, given pairs like any other).
+uint globalLightCount()
+{
+    return globalLightCandidates <= uint(GLOBAL_LIGHT_CAPACITY) ? globalLightCandidates : 0u;
+}
+#endif

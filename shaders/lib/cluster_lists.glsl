@@ -14,11 +14,17 @@
 // the light's index and the rest of it are fetched only for the lights that pass. Only those
 // are counted as evaluated (--count-work); the entries walked are counted too, as
 // cluster_list_visits.
+//
+// Before its cluster's list, a pixel walks the global list: the lights whose screen rectangle
+// covers most of the grid (cluster_pairs.comp), which would be in nearly every list, in the
+// lights' order (global_light_order.comp), each with its sphere beside it and tested the same
+// way. They have no pairs: on LearnOpenGL's scene, where every light reaches every pixel,
+// the pairs were 5.3 million at 512 lights, and writing and sorting them cost more than the
+// lighting (docs/techniques.md). A pixel so sums its global lights, then its cluster's, each
+// in the lights' order: one order on every run, though not forward's where a pixel has both.
 // Needs lib/lighting.glsl and lib/clusters.glsl first.
 
-#ifdef COUNT_WORK
 #include "lib/cluster_list_status.glsl"
-#endif
 layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) readonly buffer ClusterListCounts {
     uint clusterListCount[];
 };
@@ -43,6 +49,19 @@ vec4 clusterListSphere(uint entry)
 {
     return texelFetch(clusterListSphereTexels, int(entry));
 }
+
+layout(binding = GLOBAL_LIGHT_TEXELS_UNIT) uniform usamplerBuffer globalLightTexels;
+layout(binding = GLOBAL_LIGHT_SPHERES_UNIT) uniform samplerBuffer globalLightSphereTexels;
+
+uint globalLight(uint entry)
+{
+    return texelFetch(globalLightTexels, int(entry)).r;
+}
+
+vec4 globalLightSphere(uint entry)
+{
+    return texelFetch(globalLightSphereTexels, int(entry));
+}
 #else
 layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) readonly buffer ClusterListLights {
     uint clusterListLights[];
@@ -60,7 +79,46 @@ vec4 clusterListSphere(uint entry)
 {
     return clusterListSpheres[entry];
 }
+
+layout(std430, binding = GLOBAL_LIGHTS_BUFFER_BINDING) readonly buffer GlobalLights {
+    uint globalLights[];
+};
+layout(std430, binding = GLOBAL_LIGHT_SPHERES_BUFFER_BINDING) readonly buffer GlobalLightSpheres {
+    vec4 globalLightSpheres[];
+};
+
+uint globalLight(uint entry)
+{
+    return globalLights[entry];
+}
+
+vec4 globalLightSphere(uint entry)
+{
+    return globalLightSpheres[entry];
+}
 #endif
+
+// The global list, shaded at a surface: every pixel walks it before part 0 of its cluster's
+// list. Loop iterations: GLOBAL_LIGHT_CAPACITY at most (render/culling/ClusterLists.h counts
+// both walks against the loop bound).
+vec3 shadeGlobalLights(Surface s, vec3 V, inout uint evaluated)
+{
+    uint count = globalLightCount();
+    vec3 color = vec3(0.0);
+#ifdef COUNT_WORK
+    if (count > 0u)
+        atomicAdd(listVisits, count);
+#endif
+    for (uint i = 0u; i < count; ++i) {
+        vec4 positionRadius = globalLightSphere(i);
+        if (length(positionRadius.xyz - s.position) < positionRadius.w) {
+            uint lightIndex = globalLight(i);
+            color += shadeLocalLight(lightIndex, lightWithPositionRadius(lightIndex, positionRadius), s, V);
+            ++evaluated;
+        }
+    }
+    return color;
+}
 
 // Part `part` of the cluster's list, shaded at a surface. Loop iterations: CLUSTER_LIST_PART.
 vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint evaluated)

@@ -1,0 +1,38 @@
+#version 450 core
+// The global list in the lights' order (render/culling/ClusterLists.h), once per frame after the
+// counting run of cluster_pairs.comp, which listed the candidates in whatever order its
+// invocations ran. A rank sort: an invocation per candidate counts the candidates before it
+// in the lights' order (their indices are distinct) and puts its light there, with the
+// light's sphere beside it for the lighting's reach test (lib/cluster_lists.glsl). The
+// pixels then sum the global lights in one order on every run. Where the candidates are more
+// than the list holds, globalLightCount() is 0 and nothing is written: they are wide lights.
+// Loop iterations: GLOBAL_LIGHT_CAPACITY at most, within render/culling/LightBatches.h's bound.
+#include "lib/bindings.glsl"
+#include "lib/lights.glsl"
+#include "lib/cluster_list_status.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) readonly buffer GlobalLightCandidates {
+    uint candidate[];
+};
+layout(std430, binding = GLOBAL_LIGHTS_BUFFER_BINDING) writeonly buffer GlobalLights {
+    uint globalLight[];
+};
+layout(std430, binding = GLOBAL_LIGHT_SPHERES_BUFFER_BINDING) writeonly buffer GlobalLightSpheres {
+    vec4 globalLightSphere[];
+};
+
+void main()
+{
+    uint count = globalLightCount();
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= count)
+        return;
+    uint lightIndex = candidate[i];
+    uint rank = 0u;
+    for (uint j = 0u; j < count; ++j)
+        rank += candidate[j] < lightIndex ? 1u : 0u;
+    globalLight[rank] = lightIndex;
+    globalLightSphere[rank] = lights[lightIndex].positionRadius;
+}
