@@ -3,7 +3,7 @@
 // counting run of cluster_pairs.comp, which listed the candidates in whatever order its
 // invocations ran. A rank sort: an invocation per candidate counts the candidates before it
 // in the lights' order (their indices are distinct) and puts its light there, with the
-// light's sphere beside it for the lighting's reach test (lib/cluster_lists.glsl). The
+// light's record beside it (lib/cluster_lists.glsl says why). The
 // pixels then sum the global lights in one order on every run. Where the candidates are more
 // than the list holds, globalLightCount() is 0 and nothing is written: they are wide lights.
 // Loop iterations: GLOBAL_LIGHT_CAPACITY at most, within render/culling/LightBatches.h's bound.
@@ -19,8 +19,8 @@ layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) readonly buffer
 layout(std430, binding = GLOBAL_LIGHTS_BUFFER_BINDING) writeonly buffer GlobalLights {
     uint globalLight[];
 };
-layout(std430, binding = GLOBAL_LIGHT_SPHERES_BUFFER_BINDING) writeonly buffer GlobalLightSpheres {
-    vec4 globalLightSphere[];
+layout(std430, binding = GLOBAL_LIGHT_RECORDS_BUFFER_BINDING) writeonly buffer GlobalLightRecords {
+    GpuLight globalLightRecord[];
 };
 
 void main()
@@ -34,5 +34,5 @@ void main()
     for (uint j = 0u; j < count; ++j)
         rank += candidate[j] < lightIndex ? 1u : 0u;
     globalLight[rank] = lightIndex;
-    globalLightSphere[rank] = lights[lightIndex].positionRadius;
+    globalLightRecord[rank] = lights[lightIndex];
 }

@@ -126,10 +126,10 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT),
       globalLightCandidates_("global light candidates", bytesOf(kGlobalLightCapacity), nullptr, 0),
       globalLights_("global lights", bytesOf(kGlobalLightCapacity), nullptr, 0),
-      globalLightSpheres_("global light spheres", std::size_t{kGlobalLightCapacity} * sizeof(float) * 4, nullptr, 0),
+      globalLightRecords_("global light records", std::size_t{kGlobalLightCapacity} * sizeof(GpuLight), nullptr, 0),
       // A texture buffer holds 65,536 texels at least: the list always fits.
       globalLightTexels_("global light texels", GL_R32UI, globalLights_),
-      globalLightSphereTexels_("global light sphere texels", GL_RGBA32F, globalLightSpheres_)
+      globalLightRecordTexels_("global light record texels", GL_RGBA32F, globalLightRecords_)
 {
 }
 
@@ -295,7 +295,7 @@ void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
 void ClusterLists::bindGlobalLights() const
 {
     globalLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHTS_BUFFER_BINDING);
-    globalLightSpheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_SPHERES_BUFFER_BINDING);
+    globalLightRecords_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_RECORDS_BUFFER_BINDING);
 }
 
 void ClusterLists::bind() const
@@ -310,7 +310,7 @@ void ClusterLists::bind() const
         lightTexels_[sorted_].bindUnit(bindings::CLUSTER_LIST_TEXELS_UNIT);
         sphereTexels_.bindUnit(bindings::CLUSTER_LIST_SPHERES_UNIT);
         globalLightTexels_.bindUnit(bindings::GLOBAL_LIGHT_TEXELS_UNIT);
-        globalLightSphereTexels_.bindUnit(bindings::GLOBAL_LIGHT_SPHERES_UNIT);
+        globalLightRecordTexels_.bindUnit(bindings::GLOBAL_LIGHT_RECORDS_UNIT);
     }
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
@@ -362,7 +362,7 @@ std::size_t ClusterLists::memoryBytes() const
     for (const gl::Buffer* buffer :
          {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0],
           &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_,
-          &globalLightCandidates_, &globalLights_, &globalLightSpheres_})
+          &globalLightCandidates_, &globalLights_, &globalLightRecords_})
         bytes += buffer->size();
     return bytes;
 }

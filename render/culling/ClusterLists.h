@@ -168,9 +168,9 @@ private:
     gl::Buffer statusBuffer_;
     gl::Buffer globalLightCandidates_;  // kGlobalLightCapacity lights, in any order
     gl::Buffer globalLights_;           // in the lights' order
-    gl::Buffer globalLightSpheres_;     // beside them (vec4)
+    gl::Buffer globalLightRecords_;     // their GpuLight records, beside them
     gl::BufferTexture globalLightTexels_;
-    gl::BufferTexture globalLightSphereTexels_;
+    gl::BufferTexture globalLightRecordTexels_;
 };
 
 // What tiled and clustered do before their lighting: the G-buffer, the grid fitted to its

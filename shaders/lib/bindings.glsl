@@ -44,7 +44,7 @@ const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; 
 const int LIGHT_TILE_RECORDS_BUFFER_BINDING = 28;    // cluster_pairs.comp
 const int GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING = 29;  // cluster_pairs.comp, global_light_order.comp
 const int GLOBAL_LIGHTS_BUFFER_BINDING = 30;          // lib/cluster_lists.glsl; global_light_order.comp
-const int GLOBAL_LIGHT_SPHERES_BUFFER_BINDING = 31;   // lib/cluster_lists.glsl; global_light_order.comp
+const int GLOBAL_LIGHT_RECORDS_BUFFER_BINDING = 31;   // lib/cluster_lists.glsl; global_light_order.comp
 
 // Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
@@ -66,7 +66,7 @@ const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl
 const int POINT_SHADOWS_UNIT = 11;      // lib/shadows.glsl
 const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
-const int GLOBAL_LIGHT_SPHERES_UNIT = 12;  // lib/cluster_lists.glsl globalLightSphereTexels (no material maps there)
+const int GLOBAL_LIGHT_RECORDS_UNIT = 12;  // lib/cluster_lists.glsl globalLightRecordTexels (no material maps there)
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl

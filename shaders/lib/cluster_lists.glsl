@@ -17,11 +17,13 @@
 //
 // Before its cluster's list, a pixel walks the global list: the lights whose screen rectangle
 // covers most of the grid (cluster_pairs.comp), which would be in nearly every list, in the
-// lights' order (global_light_order.comp), each with its sphere beside it and tested the same
-// way. They have no pairs: on LearnOpenGL's scene, where every light reaches every pixel,
-// the pairs were 5.3 million at 512 lights, and writing and sorting them cost more than the
-// lighting (docs/techniques.md). A pixel so sums its global lights, then its cluster's, each
-// in the lights' order: one order on every run, though not forward's where a pixel has both.
+// lights' order (global_light_order.comp). They have no pairs: on LearnOpenGL's scene, where
+// every light reaches every pixel, the pairs were 5.3 million at 512 lights, and writing and
+// sorting them cost more than the lighting (docs/techniques.md). Each global light is tested
+// the same way, and carries its whole record, not only its sphere: a light in reach costs the
+// three fetches more that deferred's loop makes, not an index and four (its index is read only
+// for a shadow map). A pixel so sums its global lights, then its cluster's, each in the
+// lights' order: one order on every run, though not forward's where a pixel has both.
 // Needs lib/lighting.glsl and lib/clusters.glsl first.
 
 #include "lib/cluster_list_status.glsl"
@@ -51,7 +53,7 @@ vec4 clusterListSphere(uint entry)
 }
 
 layout(binding = GLOBAL_LIGHT_TEXELS_UNIT) uniform usamplerBuffer globalLightTexels;
-layout(binding = GLOBAL_LIGHT_SPHERES_UNIT) uniform samplerBuffer globalLightSphereTexels;
+layout(binding = GLOBAL_LIGHT_RECORDS_UNIT) uniform samplerBuffer globalLightRecordTexels;
 
 uint globalLight(uint entry)
 {
@@ -60,7 +62,19 @@ uint globalLight(uint entry)
 
 vec4 globalLightSphere(uint entry)
 {
-    return texelFetch(globalLightSphereTexels, int(entry));
+    return texelFetch(globalLightRecordTexels, int(entry) * 4);
+}
+
+// The rest of the global light whose sphere globalLightSphere() fetched.
+GpuLight globalLightRecord(uint entry, vec4 positionRadius)
+{
+    int first = int(entry) * 4;
+    GpuLight light;
+    light.positionRadius = positionRadius;
+    light.intensityExponent = texelFetch(globalLightRecordTexels, first + 1);
+    light.attenuation = texelFetch(globalLightRecordTexels, first + 2);
+    light.spotAxisCosCutoff = texelFetch(globalLightRecordTexels, first + 3);
+    return light;
 }
 #else
 layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) readonly buffer ClusterListLights {
@@ -83,8 +97,8 @@ vec4 clusterListSphere(uint entry)
 layout(std430, binding = GLOBAL_LIGHTS_BUFFER_BINDING) readonly buffer GlobalLights {
     uint globalLights[];
 };
-layout(std430, binding = GLOBAL_LIGHT_SPHERES_BUFFER_BINDING) readonly buffer GlobalLightSpheres {
-    vec4 globalLightSpheres[];
+layout(std430, binding = GLOBAL_LIGHT_RECORDS_BUFFER_BINDING) readonly buffer GlobalLightRecords {
+    GpuLight globalLightRecords[];
 };
 
 uint globalLight(uint entry)
@@ -94,7 +108,14 @@ uint globalLight(uint entry)
 
 vec4 globalLightSphere(uint entry)
 {
-    return globalLightSpheres[entry];
+    return globalLightRecords[entry].positionRadius;
+}
+
+GpuLight globalLightRecord(uint entry, vec4 positionRadius)
+{
+    GpuLight light = globalLightRecords[entry];
+    light.positionRadius = positionRadius;
+    return light;
 }
 #endif
 
@@ -112,8 +133,7 @@ vec3 shadeGlobalLights(Surface s, vec3 V, inout uint evaluated)
     for (uint i = 0u; i < count; ++i) {
         vec4 positionRadius = globalLightSphere(i);
         if (length(positionRadius.xyz - s.position) < positionRadius.w) {
-            uint lightIndex = globalLight(i);
-            color += shadeLocalLight(lightIndex, lightWithPositionRadius(lightIndex, positionRadius), s, V);
+            color += shadeLocalLight(globalLight(i), globalLightRecord(i, positionRadius), s, V);
             ++evaluated;
         }
     }
