@@ -2,7 +2,9 @@
 // light that may reach a tile or cluster (render/culling/ClusterLists.h: storage planned from the
 // frame before, the frame redone when it did not hold), so a region reached by all of them
 // keeps all of them. The seed G-buffer layout keeps the comparison with forward exact (the
-// compact layout's own bound is TechniqueAgreementTest's).
+// compact layout's own bound is TechniqueAgreementTest's). Lights over the whole view are in
+// the lists' global list (walked by every pixel, in the lights' order); GlobalLightsTest.cpp
+// has more of them than it holds, which take pairs again.
 #include <gtest/gtest.h>
 
 #include <fstream>
