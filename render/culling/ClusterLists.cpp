@@ -323,7 +323,7 @@ void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid
     const gl::Program& program = longLighting_[readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
     for (std::uint32_t part = 1; part <= laterParts_; ++part)
         passes.run({.name = "lighting",
-                    .sampled = Resource::GBuffer,
+                    .sampled = Resource::GBuffer | Resource::LightGrid,  // the lists as texels
                     .images = Resource::LitImage,
                     .storage = Resource::LightGrid,
                     .indirect = Resource::LightGrid,

@@ -34,7 +34,11 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
     const LightSource source = scene.indexedLightSource();
     const LightBatch allLights{0, lightCount};
     const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
-    passes.run(lightBatchPass(allLights, Resource::LightGrid), [&] {
+    Pass lighting = lightBatchPass(allLights, Resource::LightGrid);
+    // The lists may be read as texels (GL_TEXTURE_FETCH_BARRIER_BIT after the list passes'
+    // storage writes, not only GL_SHADER_STORAGE_BARRIER_BIT).
+    lighting.sampled = lighting.sampled | Resource::LightGrid;
+    passes.run(lighting, [&] {
         scene.bindLightSource(source, allLights);
         grid_.bind();
         lists_.bind();

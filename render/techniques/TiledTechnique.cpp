@@ -29,7 +29,8 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
     const gl::Program& program =
         lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
     passes.run({.name = "lighting",
-                .sampled = Resource::GBuffer,
+                // The lists may be read as texels: fetches wait on the list passes' writes too.
+                .sampled = Resource::GBuffer | Resource::LightGrid,
                 .images = Resource::LitImage,
                 .storage = Resource::LightGrid,
                 .writes = Resource::LitImage},
