@@ -12,13 +12,17 @@
 #   OLD=/tmp/before/build/manylights TECHNIQUES=deferred,clustered scripts/measure-kit-pair-cost.sh
 #
 # KIT= the kit's directory; COUNTS= two light counts with a scene in the kit (default 128,512);
-# FRAMES= timed frames per run (default 3, after one warm-up frame).
+# FRAMES= timed frames per run (default 3, after one warm-up frame); ROUNDS= how many times the
+# whole set of runs is repeated (default 1). Within a round every technique and build runs at
+# one count before the next count, so that a machine whose load changes meets them alike; with
+# more than one round each round's figure is printed, then the range.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kit=${KIT:-../shared/peer/learnopengl-8.1}
 counts=${COUNTS:-128,512}
 techniques=${TECHNIQUES:-forward,deferred,volumes,stencil,tiled-quads,tiled,clustered}
 frames=${FRAMES:-3}
+rounds=${ROUNDS:-1}
 if [ ! -x "$kit/run-manylights.sh" ]; then
   echo "measure-kit-pair-cost.sh: no LearnOpenGL kit at '$kit' (set KIT=)" >&2
   exit 1
@@ -34,30 +38,47 @@ binary_of() { if [ "$1" = old ]; then echo "$OLD"; else echo "$ML"; fi; }
 for n in ${counts//,/ }; do
   OUT_DIR=$out/pairs ML=$ML "$kit/run-manylights.sh" "$n" 1 deferred --count-work >/dev/null
 done
-for technique in ${techniques//,/ }; do
+for round in $(seq "$rounds"); do
   for n in ${counts//,/ }; do
-    for build in "${builds[@]}"; do
-      OUT_DIR=$out/$build ML=$(binary_of "$build") "$kit/run-manylights.sh" "$n" "$frames" "$technique" >/dev/null
-      echo "[$build] $technique $n lights done"
+    for technique in ${techniques//,/ }; do
+      for build in "${builds[@]}"; do
+        OUT_DIR=$out/$round/$build ML=$(binary_of "$build") "$kit/run-manylights.sh" "$n" "$frames" "$technique" \
+          >/dev/null
+        echo "[$build] round $round: $technique $n lights done"
+      done
     done
   done
 done
-python3 - "$out" "$counts" "$techniques" "${builds[@]}" <<'PY'
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+python3 - "$out" "$counts" "$techniques" "$rounds" "${builds[@]}" <<'PY'
 import json, sys
-out, counts, techniques, builds = sys.argv[1], sys.argv[2].split(","), sys.argv[3].split(","), sys.argv[4:]
+out, counts, techniques, rounds, builds = sys.argv[1], sys.argv[2].split(","), sys.argv[3].split(","), int(sys.argv[4]), sys.argv[5:]
 pairs = {n: json.load(open(f"{out}/pairs/ml-{n}-deferred.json"))["in_range_pairs"] for n in counts}
-def shading(build, n, technique):
-    stats = json.load(open(f"{out}/{build}/ml-{n}-{technique}.json"))
+def shading(round, build, n, technique):
+    stats = json.load(open(f"{out}/{round}/{build}/ml-{n}-{technique}.json"))
     geometry = sum(p["wall_ms"] for p in stats["passes"] if p["name"] == "geometry")
     return stats["frame_ms"]["median"], stats["frame_ms"]["median"] - geometry
 a, b = counts
 print(f"in-range pairs: {pairs[a]:,} at {a} lights, {pairs[b]:,} at {b}")
-print(f"{'technique':<12} {'build':<5} {'frame ms ' + a + ' -> ' + b:>24} {'w/o geometry':>22} {'ns per pair':>12}")
-for technique in techniques:
-    for build in builds:
-        (frame_a, shade_a), (frame_b, shade_b) = shading(build, a, technique), shading(build, b, technique)
-        ns = (shade_b - shade_a) * 1e6 / (pairs[b] - pairs[a])
-        print(f"{technique:<12} {build:<5} {frame_a:11.1f} -> {frame_b:9.1f} {shade_a:9.1f} -> {shade_b:9.1f} {ns:12.2f}")
+print(f"{'round':<5} {'technique':<12} {'build':<5} {'frame ms ' + a + ' -> ' + b:>24} {'w/o geometry':>22} {'ns per pair':>12}")
+ns = {}
+for round in range(1, rounds + 1):
+    for technique in techniques:
+        for build in builds:
+            (frame_a, shade_a), (frame_b, shade_b) = shading(round, build, a, technique), shading(round, build, b, technique)
+            ns.setdefault((technique, build), []).append((shade_b - shade_a) * 1e6 / (pairs[b] - pairs[a]))
+            print(f"{round:<5} {technique:<12} {build:<5} {frame_a:11.1f} -> {frame_b:9.1f} {shade_a:9.1f} -> {shade_b:9.1f} "
+                  f"{ns[technique, build][-1]:12.2f}")
+if rounds > 1:
+    print("ns per pair over the rounds, and against deferred's of the same round and build:")
+    for technique in techniques:
+        for build in builds:
+            values = ns[technique, build]
+            line = f"{technique:<12} {build:<5} {min(values):6.2f} - {max(values):5.2f}"
+            if ("deferred", build) in ns and technique != "deferred":
+                ratios = [v / d for v, d in zip(values, ns["deferred", build])]
+                line += f"   x deferred {min(ratios):5.2f} - {max(ratios):4.2f}"
+            print(line)
 PY
 [ -z "${OLD:-}" ] && exit 0
 for technique in ${techniques//,/ }; do
