@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <string>
 
 #include "core/Error.h"
@@ -82,10 +83,29 @@ Pass listPass(std::string_view name)
 
 std::size_t bytesOf(std::uint32_t uints) { return std::size_t{uints} * sizeof(std::uint32_t); }
 
+// The share of the grid a global light covers: kGlobalLightGridFraction, or for measuring
+// others (scripts/measure-global-fraction.sh) MANYLIGHTS_GLOBAL_LIGHT_FRACTION, a number > 0
+// (above 1 no light but an unbounded one is global).
+double globalLightGridFraction()
+{
+    static const double fraction = [] {
+        const char* text = std::getenv("MANYLIGHTS_GLOBAL_LIGHT_FRACTION");
+        if (text == nullptr)
+            return kGlobalLightGridFraction;
+        char* end = nullptr;
+        const double value = std::strtod(text, &end);
+        if (end == text || *end != '\0' || !(value > 0.0) || !std::isfinite(value))
+            throw Error(std::string("MANYLIGHTS_GLOBAL_LIGHT_FRACTION: expected a number > 0, got '") + text + "'");
+        return value;
+    }();
+    return fraction;
+}
+
 // The tiles a light's screen rectangle must cover to be global in a grid of `tiles`: at least one.
 std::uint32_t globalLightTiles(std::uint32_t tiles)
 {
-    return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::ceil(kGlobalLightGridFraction * tiles)));
+    const double wanted = std::ceil(globalLightGridFraction() * tiles);
+    return static_cast<std::uint32_t>(std::clamp(wanted, 1.0, static_cast<double>(tiles) + 1.0));
 }
 
 // A storage buffer of at least `uints` uints, made anew only when it has fewer.
