@@ -112,9 +112,15 @@ TEST_P(GlobalLights, LightsOverTheWholeViewHaveNoPairs)
     const Image image = renderPfm(scene, dir / "image.pfm",
                                   {"--size", "160x90", "--gbuffer", "seed", "--technique", technique, "--count-work",
                                    "--stats", (dir / "work.json").string()});
-    // All lights global, summed in the lights' order as forward sums them.
-    test::expectImagesNear(forward, image, test::kAgreementTolerance, technique);
     const nlohmann::json work = readStats(dir / "work.json");
+    // All lights global, summed in the lights' order as forward sums them: on llvmpipe, where
+    // both run the same arithmetic (TechniqueAgreementTest.cpp), the same bits. (llvmpipe's
+    // atomics hand out the candidates' slots nearly in the lights' order, so whether the list
+    // is sorted is tests/gl/GlobalLightOrderTest.cpp's to check.)
+    if (work["device"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(image.rgb, forward.rgb) << technique;
+    }
+    test::expectImagesNear(forward, image, test::kAgreementTolerance, technique);
     EXPECT_EQ(work["global_lights"].get<int>(), kWide);
     EXPECT_EQ(work["cluster_pairs"].get<double>(), 0.0);
     EXPECT_EQ(work["light_evaluations"], work["in_range_pairs"]);
