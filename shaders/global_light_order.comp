@@ -6,6 +6,8 @@
 // light's record beside it (lib/cluster_lists.glsl says why). The
 // pixels then sum the global lights in one order on every run. Where the candidates are more
 // than the list holds, globalLightCount() is 0 and nothing is written: they are wide lights.
+// The list's length goes after its last possible entry, where the lighting reads it with the
+// entries (a texel for all lanes on llvmpipe, not the status buffer lane by lane).
 // Loop iterations: GLOBAL_LIGHT_CAPACITY at most, within render/culling/LightBatches.h's bound.
 #include "lib/bindings.glsl"
 #include "lib/lights.glsl"
@@ -17,7 +19,7 @@ layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) readonly buffer
     uint candidate[];
 };
 layout(std430, binding = GLOBAL_LIGHTS_BUFFER_BINDING) writeonly buffer GlobalLights {
-    uint globalLight[];
+    uint globalLight[];  // GLOBAL_LIGHT_CAPACITY entries, then the count
 };
 layout(std430, binding = GLOBAL_LIGHT_RECORDS_BUFFER_BINDING) writeonly buffer GlobalLightRecords {
     GpuLight globalLightRecord[];
@@ -27,6 +29,8 @@ void main()
 {
     uint count = globalLightCount();
     uint i = gl_GlobalInvocationID.x;
+    if (i == 0u)
+        globalLight[GLOBAL_LIGHT_CAPACITY] = count;
     if (i >= count)
         return;
     uint lightIndex = candidate[i];

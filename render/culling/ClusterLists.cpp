@@ -145,7 +145,7 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
                                     clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT),
       globalLightCandidates_("global light candidates", bytesOf(kGlobalLightCapacity), nullptr, 0),
-      globalLights_("global lights", bytesOf(kGlobalLightCapacity), nullptr, 0),
+      globalLights_("global lights", bytesOf(kGlobalLightCapacity + 1), nullptr, 0),  // and the count
       globalLightRecords_("global light records", std::size_t{kGlobalLightCapacity} * sizeof(GpuLight), nullptr, 0),
       // A texture buffer holds 65,536 texels at least: the list always fits.
       globalLightTexels_("global light texels", GL_R32UI, globalLights_),
@@ -252,16 +252,17 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     });
     if (lightCount > 0) {
         runPairs(0);
-        passes.run(listPass("cluster pairs"), [&] {
-            bindAll();
-            bindGlobalLights();
-            globalLightOrder_.use();
-            glDispatchCompute(groupsFor(kGlobalLightCapacity), 1, 1);
-        });
         scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
                   std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
         runPairs(1);
     }
+    // Also without lights: it writes the list's length, which the lighting reads.
+    passes.run(listPass("cluster pairs"), [&] {
+        bindAll();
+        bindGlobalLights();
+        globalLightOrder_.use();
+        glDispatchCompute(groupsFor(kGlobalLightCapacity), 1, 1);
+    });
     passes.run(listPass("cluster lists"), [&] {
         bindAll();
         longLists_.use();

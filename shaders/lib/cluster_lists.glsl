@@ -26,7 +26,9 @@
 // lights' order: one order on every run, though not forward's where a pixel has both.
 // Needs lib/lighting.glsl and lib/clusters.glsl first.
 
+#ifdef COUNT_WORK
 #include "lib/cluster_list_status.glsl"
+#endif
 layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) readonly buffer ClusterListCounts {
     uint clusterListCount[];
 };
@@ -124,7 +126,8 @@ GpuLight globalLightRecord(uint entry, vec4 positionRadius)
 // both walks against the loop bound).
 vec3 shadeGlobalLights(Surface s, vec3 V, inout uint evaluated)
 {
-    uint count = globalLightCount();
+    // After the list's last possible entry: its length (global_light_order.comp).
+    uint count = globalLight(uint(GLOBAL_LIGHT_CAPACITY));
     vec3 color = vec3(0.0);
 #ifdef COUNT_WORK
     if (count > 0u)

@@ -1,8 +1,8 @@
 // The global list's sort (shaders/global_light_order.comp, render/culling/ClusterLists.h): the
 // candidates come from the counting run's atomics in any order, and must come out in the
 // lights' order with each light's record beside it, or not at all when they are more than the
-// list holds. The pass alone, on candidates shuffled here: on llvmpipe the atomics hand out
-// the slots nearly in the lights' order, so an image cannot show an unsorted list.
+// list holds; the list's length after its last possible entry. The pass alone, on candidates shuffled here: on llvmpipe
+// the atomics hand out the slots nearly in the lights' order, so an image cannot show an unsorted list.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -54,7 +54,8 @@ TEST_F(GlobalLightOrderTest, SortsTheCandidatesIntoTheLightsOrderWithTheirRecord
         gl::Buffer statusBuffer("test status", status.size() * sizeof(std::uint32_t), status.data(), 0);
         gl::Buffer candidateBuffer("test candidates", candidates.size() * sizeof(std::uint32_t), candidates.data(), 0);
         const std::vector<std::uint32_t> unwritten(kGlobalLightCapacity * (1 + sizeof(GpuLight) / 4), kUnwritten);
-        gl::Buffer sorted("test global lights", kGlobalLightCapacity * sizeof(std::uint32_t), unwritten.data(), 0);
+        gl::Buffer sorted("test global lights", (kGlobalLightCapacity + 1) * sizeof(std::uint32_t), unwritten.data(),
+                          0);
         gl::Buffer records("test global records", kGlobalLightCapacity * sizeof(GpuLight), unwritten.data(), 0);
         lightBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHTS_BUFFER_BINDING);
         statusBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
@@ -65,13 +66,14 @@ TEST_F(GlobalLightOrderTest, SortsTheCandidatesIntoTheLightsOrderWithTheirRecord
         glDispatchCompute(kGlobalLightCapacity / 64, 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
 
-        std::vector<std::uint32_t> order(kGlobalLightCapacity);
+        std::vector<std::uint32_t> order(kGlobalLightCapacity + 1);
         sorted.read(0, order.size() * sizeof(std::uint32_t), order.data());
         std::vector<GpuLight> recordsRead(kGlobalLightCapacity);
         records.read(0, recordsRead.size() * sizeof(GpuLight), recordsRead.data());
         const std::uint32_t listed = count <= kGlobalLightCapacity ? count : 0;
         std::vector<std::uint32_t> expected(candidates.begin(), candidates.begin() + listed);
         std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(order[kGlobalLightCapacity], listed) << count << " candidates: the list's length after it";
         for (std::uint32_t k = 0; k < kGlobalLightCapacity; ++k) {
             if (k < listed) {
                 ASSERT_EQ(order[k], expected[k]) << count << " candidates, entry " << k;
