@@ -23,7 +23,9 @@
 // and among the wide lights, marked. Where every candidate fits (globalLightCount()), the wide
 // program gives the marked ones no pair; where they do not, they are wide lights as any other.
 // All or none, so that which lights are global does not depend on the order the invocations
-// ran in, and the image stays the same from run to run.
+// ran in, and the image stays the same from run to run. A frame has a global list only where
+// the frame before had candidates (globalListPlanned), so that the lighting of a scene without
+// them does not pay for walking an empty list; the candidates are counted either way.
 //
 // A light's pairs may be written in any order (a wide light's slots are handed out by an
 // atomic), since no two of them share a cluster: sorted by cluster, each cluster's lights
@@ -60,6 +62,7 @@ layout(std430, binding = WIDE_LIGHTS_BUFFER_BINDING) buffer WideLights {
 const uint GLOBAL_CANDIDATE_BIT = 0x80000000u;
 #ifndef WIDE_LIGHTS
 layout(location = CLUSTER_PAIR_GLOBAL_TILES_LOCATION) uniform uint globalLightTiles;
+layout(location = CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION) uniform uint globalListPlanned;  // this frame has one
 layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) writeonly buffer GlobalLightCandidates {
     uint globalLightCandidate[];  // in the order the invocations ran: global_lights.comp sorts them
 };
@@ -189,13 +192,15 @@ void main()
         return;
     uvec2 size = last - first + 1u;
     if (emitPairs == 0u) {
+        // Counted whether or not this frame has a global list: the next frame's plan.
         bool global = light.unbounded || size.x * size.y >= globalLightTiles;
-        if (global || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
+        uint slot = global ? atomicAdd(globalLightCandidates, 1u) : 0u;
+        bool listed = global && globalListPlanned != 0u;
+        if (listed || light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
             lightPairCursor[lightIndex] = WIDE_LIGHT_MARK;
             lightTileRecord[lightIndex].x = NO_RECORD;
             uint entry = lightIndex;
-            if (global) {
-                uint slot = atomicAdd(globalLightCandidates, 1u);
+            if (listed) {
                 if (slot < uint(GLOBAL_LIGHT_CAPACITY))
                     globalLightCandidate[slot] = lightIndex;
                 entry |= GLOBAL_CANDIDATE_BIT;

@@ -20,7 +20,9 @@ void main()
     uint tile = clusterTileOfPixel(uvec2(gl_FragCoord.xy));
     uint cluster = tile * uint(CLUSTER_SLICES) + sliceOfDepth(viewDepth(s.position), tileDepthRange[tile]);
     uint evaluated = 0u;
+#ifdef GLOBAL_LIGHT_LIST
     color += shadeGlobalLights(s, V, evaluated);
+#endif
     color += shadeClusterListPart(cluster, 0u, s, V, evaluated);
     recordLightEvaluations(evaluated);
     outColor = vec4(color, 1.0);

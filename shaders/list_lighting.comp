@@ -8,7 +8,8 @@
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
 //   dispatch: the CPU does not know how many); pixels whose cluster's list is shorter than the
 //   part store nothing, the others add the part to the lit image.
-// Loop iterations: CLUSTER_LIST_PART, and GLOBAL_LIGHT_CAPACITY more with EVERY_TILE.
+// Loop iterations: CLUSTER_LIST_PART, and GLOBAL_LIGHT_CAPACITY more with GLOBAL_LIGHT_LIST (the
+// global list, which only EVERY_TILE walks).
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/light_batch.glsl"
@@ -46,7 +47,7 @@ void main()
 #endif
     vec3 V = viewVector(s.position);
     uint evaluated = 0u;
-#ifdef EVERY_TILE
+#ifdef GLOBAL_LIGHT_LIST
     vec3 color = shadeGlobalLights(s, V, evaluated);
 #else
     vec3 color = vec3(0.0);

@@ -21,6 +21,7 @@ namespace {
 // shaders get them as defines, so the numbers live here only).
 constexpr int kPairLightCountLocation = 52;
 constexpr int kPairGlobalTilesLocation = 53;
+constexpr int kPairGlobalPlannedLocation = 60;
 constexpr int kPairCapacityLocation = 54;
 constexpr int kPairEmitLocation = 59;
 constexpr int kSortShiftLocation = 55;
@@ -52,6 +53,7 @@ gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
     defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
     defines.emplace_back("CLUSTER_PAIR_GLOBAL_TILES_LOCATION", std::to_string(kPairGlobalTilesLocation));
+    defines.emplace_back("CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION", std::to_string(kPairGlobalPlannedLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
@@ -118,13 +120,15 @@ void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 
 }  // namespace
 
-gl::Defines clusterListDefines(gl::Defines defines, bool texels)
+gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList)
 {
     defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
     defines.emplace_back("CLUSTER_LIST_PART_LOCATION", std::to_string(kClusterListPartLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (texels)
         defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
+    if (globalList)
+        defines.emplace_back("GLOBAL_LIGHT_LIST", "1");
     return defines;
 }
 
@@ -223,6 +227,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
             narrowPairs_.set(kPairEmitLocation, emit);
             narrowPairs_.set(kPairCapacityLocation, capacity_);
             narrowPairs_.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
+            narrowPairs_.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
             narrowPairs_.use();
             glDispatchCompute(groupsX, 1, groupsZ);
         });
@@ -257,12 +262,14 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         runPairs(1);
     }
     // Also without lights: it writes the list's length, which the lighting reads.
-    passes.run(listPass("cluster pairs"), [&] {
-        bindAll();
-        bindGlobalLights();
-        globalLightOrder_.use();
-        glDispatchCompute(groupsFor(kGlobalLightCapacity), 1, 1);
-    });
+    if (globalListPlanned_)
+        passes.run(listPass("cluster pairs"), [&] {
+            bindAll();
+            bindGlobalLights();
+            globalLightOrder_.use();
+            glDispatchCompute(groupsFor(kGlobalLightCapacity), 1, 1);
+        });
+    globalListOfBuild_ = globalListPlanned_;
     passes.run(listPass("cluster lists"), [&] {
         bindAll();
         longLists_.use();
@@ -365,6 +372,10 @@ bool ClusterLists::fitted()
         return true;
     built_ = false;
     statusBuffer_.read(0, sizeof(Status), &status_);
+    const std::uint32_t candidates = status_.globalLightCandidates;
+    const bool listHeldThem = candidates <= kGlobalLightCapacity;
+    globalLightsOfFrame_ = globalListOfBuild_ && listHeldThem ? candidates : 0;
+    globalListPlanned_ = candidates > 0 && listHeldThem;
     const bool pairsFit = status_.pairsNeeded <= capacity_;
     const std::uint32_t partsNeeded =
         status_.longestList == 0 ? 0 : (status_.longestList - 1) / kClusterListPart;  // after the first

@@ -7,11 +7,11 @@ namespace manylights {
 
 namespace {
 
-LightingProgram clusteredLighting(const TechniqueOptions& options, bool listTexels)
+LightingProgram clusteredLighting(const TechniqueOptions& options, bool listTexels, bool globalList)
 {
     return LightingProgram(
         "clustered lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-        clusterListDefines(clusterGridDefines(shaderDefines(options), kClusteredGridShape), listTexels));
+        clusterListDefines(clusterGridDefines(shaderDefines(options), kClusteredGridShape), listTexels, globalList));
 }
 
 }  // namespace
@@ -20,7 +20,8 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kClusteredGridShape),
       lists_(kClusteredGridShape, shaderDefines(options)),
-      lighting_{clusteredLighting(options, false), clusteredLighting(options, true)}
+      lighting_{{clusteredLighting(options, false, false), clusteredLighting(options, false, true)},
+                {clusteredLighting(options, true, false), clusteredLighting(options, true, true)}}
 {
 }
 
@@ -33,7 +34,8 @@ void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fr
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();
     const LightBatch allLights{0, lightCount};
-    const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
+    const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0][lists_.hasGlobalList() ? 1 : 0].variant(
+        scene.lightingFeatures(), source);
     Pass lighting = lightBatchPass(allLights, Resource::LightGrid);
     // The lists may be read as texels (GL_TEXTURE_FETCH_BARRIER_BIT after the list passes'
     // storage writes, not only GL_SHADER_STORAGE_BARRIER_BIT).

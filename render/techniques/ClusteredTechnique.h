@@ -33,8 +33,9 @@ private:
     ClusterGrid grid_;
     ClusterLists lists_;
     // Part 0 of every list, the one pass over the image: reading the lists from the storage
-    // buffer and from texels (ClusterLists::readsTexels).
-    LightingProgram lighting_[2];
+    // buffer and from texels, walking the global list or not: [texels][global list]
+    // (ClusterLists::readsTexels, hasGlobalList).
+    LightingProgram lighting_[2][2];
 };
 
 }  // namespace manylights

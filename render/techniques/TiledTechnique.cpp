@@ -6,9 +6,10 @@ namespace manylights {
 
 namespace {
 
-LightingProgram tiledLighting(const TechniqueOptions& options, bool listTexels)
+LightingProgram tiledLighting(const TechniqueOptions& options, bool listTexels, bool globalList)
 {
-    gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), kTiledGridShape), listTexels);
+    gl::Defines defines =
+        clusterListDefines(clusterGridDefines(shaderDefines(options), kTiledGridShape), listTexels, globalList);
     defines.emplace_back("EVERY_TILE", "1");
     return LightingProgram("tiled lighting", {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, std::move(defines));
 }
@@ -19,15 +20,16 @@ TiledTechnique::TiledTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kTiledGridShape),
       lists_(kTiledGridShape, shaderDefines(options)),
-      lighting_{tiledLighting(options, false), tiledLighting(options, true)}
+      lighting_{{tiledLighting(options, false, false), tiledLighting(options, false, true)},
+                {tiledLighting(options, true, false), tiledLighting(options, true, true)}}
 {
 }
 
 void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
     buildListsOverSurfaces(scene, targets, passes, grid_, lists_);
-    const gl::Program& program =
-        lighting_[lists_.readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), scene.indexedLightSource());
+    const gl::Program& program = lighting_[lists_.readsTexels() ? 1 : 0][lists_.hasGlobalList() ? 1 : 0].variant(
+        scene.lightingFeatures(), scene.indexedLightSource());
     passes.run({.name = "lighting",
                 // The lists may be read as texels: fetches wait on the list passes' writes too.
                 .sampled = Resource::GBuffer | Resource::LightGrid,

@@ -32,7 +32,9 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    LightingProgram lighting_[2];  // reading the lists from the storage buffer, from texels
+    // [texels][global list]: reading the lists from the storage buffer or from texels, walking
+    // the global list or not (ClusterLists::readsTexels, hasGlobalList).
+    LightingProgram lighting_[2][2];
 };
 
 }  // namespace manylights

@@ -122,7 +122,7 @@ GpuLight globalLightRecord(uint entry, vec4 positionRadius)
 #endif
 
 // The global list, shaded at a surface: every pixel walks it before part 0 of its cluster's
-// list. Loop iterations: GLOBAL_LIGHT_CAPACITY at most (render/culling/ClusterLists.h counts
+// list, in programs built with GLOBAL_LIGHT_LIST (frames that have one, ClusterLists.h). Loop iterations: GLOBAL_LIGHT_CAPACITY at most (render/culling/ClusterLists.h counts
 // both walks against the loop bound).
 vec3 shadeGlobalLights(Surface s, vec3 V, inout uint evaluated)
 {
