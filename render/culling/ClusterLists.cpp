@@ -19,7 +19,6 @@ namespace {
 // shaders get them as defines, so the numbers live here only).
 constexpr int kPairLightCountLocation = 52;
 constexpr int kPairCapacityLocation = 54;
-constexpr int kPairEmitLocation = 59;
 constexpr int kSortShiftLocation = 55;
 constexpr int kSortChunksLocation = 56;
 constexpr int kSortCapacityLocation = 57;
@@ -40,16 +39,19 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // lights), so that a single image is rarely rendered twice.
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
-gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
+// A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run
+// (emit false) or the writing run.
+gl::Program pairProgram(const ClusterGridShape& shape, bool wide, bool emit)
 {
     gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
     defines.emplace_back("CLUSTER_PAIR_LIGHT_COUNT_LOCATION", std::to_string(kPairLightCountLocation));
-    defines.emplace_back("CLUSTER_PAIR_EMIT_LOCATION", std::to_string(kPairEmitLocation));
     defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
+    defines.emplace_back("EMIT_PAIRS", emit ? "1" : "0");
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
-    return defines;
+    return gl::Program(wide ? "cluster pairs of wide lights" : "cluster pairs",
+                       {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, defines);
 }
 
 enum class SortPass { Count, Scatter, ScatterGather };
@@ -97,8 +99,8 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels)
 }
 
 ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
-    : narrowPairs_("cluster pairs", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, false)),
-      widePairs_("cluster pairs of wide lights", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, true)),
+    : narrowPairs_{pairProgram(shape, false, false), pairProgram(shape, false, true)},
+      widePairs_{pairProgram(shape, true, false), pairProgram(shape, true, true)},
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
@@ -153,6 +155,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     ensure(lightPairOffsets_, "light pair offsets", lightCount);
     ensure(lightPairCursors_, "light pair cursors", lightCount);
     ensure(wideLights_, "wide lights", lightCount);
+    ensure(pairedLights_, "paired lights", lightCount);
     ensure(lightTileRecords_, "light tile records", 2 * lightCount);
     const auto bindAll = [&] {
         grid.bind();
@@ -160,6 +163,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         lightPairOffsets_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_OFFSETS_BUFFER_BINDING);
         lightPairCursors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_CURSORS_BUFFER_BINDING);
         wideLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::WIDE_LIGHTS_BUFFER_BINDING);
+        pairedLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIRED_LIGHTS_BUFFER_BINDING);
         lightTileRecords_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_TILE_RECORDS_BUFFER_BINDING);
         keys_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_IN_BUFFER_BINDING);
         lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
@@ -167,37 +171,40 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
         longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
     };
-    // Narrow lights along x and z of the dispatch (x has at most 65,535 workgroups); wide
-    // ones a workgroup per light and band of rows (lib/light_tiles.glsl).
+    // The counting run's narrow lights along x and z of its dispatch (x has at most 65,535
+    // workgroups); the writing run's are indirect, as many as the counting run found pairs for,
+    // and the wide lights' too, a workgroup each per band of rows (lib/light_tiles.glsl).
     const GLuint lightGroups = std::max<GLuint>(groupsFor(lightCount), 1);
     const GLuint groupsX = std::min<GLuint>(lightGroups, 32768);
     const GLuint groupsZ = (lightGroups + groupsX - 1) / groupsX;
     ML_ASSERT(grid.gridWidth() >= 1 && grid.gridWidth() <= kTilesPerBand);
     const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / grid.gridWidth());
     const auto bands = (static_cast<std::uint32_t>(grid.gridHeight()) + rowsPerBand - 1) / rowsPerBand;
-    const auto runPairs = [&](std::uint32_t emit) {
-        passes.run(listPass("cluster pairs"), [&] {
+    const Pass indirectPass{.name = "cluster pairs",
+                            .storage = Resource::LightGrid,
+                            .indirect = Resource::LightGrid,
+                            .writes = Resource::LightGrid};
+    const auto runPairs = [&](int emit) {
+        passes.run(emit ? indirectPass : listPass("cluster pairs"), [&] {
             bindAll();
-            narrowPairs_.set(kPairLightCountLocation, lightCount);
-            narrowPairs_.set(kPairEmitLocation, emit);
-            narrowPairs_.set(kPairCapacityLocation, capacity_);
-            narrowPairs_.use();
-            glDispatchCompute(groupsX, 1, groupsZ);
+            narrowPairs_[emit].set(kPairLightCountLocation, lightCount);
+            narrowPairs_[emit].set(kPairCapacityLocation, capacity_);
+            narrowPairs_[emit].use();
+            if (emit) {
+                statusBuffer_.bindAsDispatchIndirect();
+                glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, pairedLightGroups)));
+            } else {
+                glDispatchCompute(groupsX, 1, groupsZ);
+            }
         });
-        // The narrow run has listed the wide lights: a workgroup each per band.
-        passes.run({.name = "cluster pairs",
-                    .storage = Resource::LightGrid,
-                    .indirect = Resource::LightGrid,
-                    .writes = Resource::LightGrid},
-                   [&] {
-                       bindAll();
-                       widePairs_.set(kPairEmitLocation, emit);
-                       widePairs_.set(kPairCapacityLocation, capacity_);
-                       widePairs_.set(kRowsPerBandLocation, rowsPerBand);
-                       widePairs_.use();
-                       statusBuffer_.bindAsDispatchIndirect();
-                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
-                   });
+        passes.run(indirectPass, [&] {
+            bindAll();
+            widePairs_[emit].set(kPairCapacityLocation, capacity_);
+            widePairs_[emit].set(kRowsPerBandLocation, rowsPerBand);
+            widePairs_[emit].use();
+            statusBuffer_.bindAsDispatchIndirect();
+            glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
+        });
     };
 
     passes.run(listPass("cluster pairs"), [&] {
@@ -322,9 +329,9 @@ bool ClusterLists::fitted()
 std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
-    for (const gl::Buffer* buffer :
-         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0],
-          &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
+    for (const gl::Buffer* buffer : {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &pairedLights_,
+                                     &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0], &lights_[1], &spheres_,
+                                     &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_})
         bytes += buffer->size();
     return bytes;
 }

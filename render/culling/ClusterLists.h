@@ -5,9 +5,11 @@
 // The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
 // 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
 //    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
-//    culling tests of lib/cluster_culling.glsl.
+//    culling tests of lib/cluster_culling.glsl; it lists the wide lights and the narrow lights
+//    it found pairs for, each list the size of an indirect dispatch.
 // 2. A scan (render/culling/GpuScan.h) of the counts gives each light its first slot, and the total.
-// 3. cluster_pairs.comp again writes the pairs there and counts each cluster's.
+// 3. cluster_pairs.comp again, compiled for writing, writes the pairs there and counts each
+//    cluster's: an invocation per listed narrow light, a workgroup per wide light and band.
 // 4. cluster_long_lists.comp notes the longest list and the tiles of lists longer than a part.
 // 5. A scan of the clusters' counts gives each list its first entry.
 // 6. A stable radix sort by cluster (pair_sort.comp and the scan, kSortRadixBits a digit)
@@ -99,15 +101,20 @@ private:
         std::uint32_t longTileGroups[3] = {0, 1, 1};
         std::uint32_t pairsNeeded = 0;
         std::uint32_t longestList = 0;
-        std::uint32_t wideLightGroups[3] = {0, 1, 1};
+        std::uint32_t wideLightGroups[3] = {0, 1, 0};  // y: the bands
         std::uint32_t listVisits = 0;
+        std::uint32_t wideLights = 0;
+        // The writing run's workgroups of narrow lights: x up to 32,768, then z (the counting
+        // run adds them as it lists the lights it found pairs for).
+        std::uint32_t pairedLightGroups[3] = {0, 1, 0};
+        std::uint32_t pairedLights = 0;
     };
 
     void plan(std::uint32_t pairs);
     void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
 
-    gl::Program narrowPairs_;
-    gl::Program widePairs_;
+    gl::Program narrowPairs_[2];  // the counting run's, the writing run's
+    gl::Program widePairs_[2];
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
@@ -125,6 +132,7 @@ private:
     gl::Buffer lightPairOffsets_;
     gl::Buffer lightPairCursors_;
     gl::Buffer wideLights_;
+    gl::Buffer pairedLights_;      // the narrow lights the counting run found pairs for
     gl::Buffer lightTileRecords_;  // what the counting run found for a light of a few tiles
     gl::Buffer keys_[2];
     gl::Buffer lights_[2];

@@ -42,6 +42,7 @@ const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; pair_sort.comp PairSpheresOut
 const int LIGHT_TILE_RECORDS_BUFFER_BINDING = 28;    // cluster_pairs.comp
+const int PAIRED_LIGHTS_BUFFER_BINDING = 29;         // cluster_pairs.comp
 
 // Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)

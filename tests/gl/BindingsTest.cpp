@@ -72,6 +72,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::StorageBlock, "LightPairOffsets"}, LIGHT_PAIR_OFFSETS_BUFFER_BINDING},
         {{Kind::StorageBlock, "LightPairCursors"}, LIGHT_PAIR_CURSORS_BUFFER_BINDING},
         {{Kind::StorageBlock, "WideLights"}, WIDE_LIGHTS_BUFFER_BINDING},
+        {{Kind::StorageBlock, "PairedLights"}, PAIRED_LIGHTS_BUFFER_BINDING},
         {{Kind::StorageBlock, "PairKeys"}, PAIR_KEYS_IN_BUFFER_BINDING},
         {{Kind::StorageBlock, "PairLights"}, CLUSTER_LIST_LIGHTS_BUFFER_BINDING},
         {{Kind::StorageBlock, "PairKeysIn"}, PAIR_KEYS_IN_BUFFER_BINDING},
