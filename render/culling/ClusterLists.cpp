@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "gl/Driver.h"
 #include "render/culling/LightTiles.h"
+#include "render/effects/ShadowMaps.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -31,7 +32,11 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // llvmpipe's per-workgroup allocations then go through.
 constexpr std::uint32_t kNarrowLightTiles = 64;
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
-static_assert(kClusterListPart + 1024 < kMaxLoopIterations);
+// A part's walk: each entry tested once and shaded at most once, two iterations per chunk of 32
+// (lib/cluster_lists.glsl); the shadow filters of the shadowed lights (LightBatches.cpp's
+// count); room for the loops around it.
+static_assert(2 * kClusterListPart + 2 * (kClusterListPart / 32) + 16 * (kMaxShadowLights + 1) + 1024 <=
+              kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
 constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the

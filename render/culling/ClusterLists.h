@@ -44,8 +44,9 @@
 namespace manylights {
 
 // The lights one invocation of the lighting walks (a part of a list): within the loop bound
-// of render/culling/LightBatches.h, with room for the iterations around the walk.
-inline constexpr std::uint32_t kClusterListPart = 8192;
+// of render/culling/LightBatches.h, with room for the iterations around the walk (each entry
+// may take two: its reach test and its shading, ClusterLists.cpp).
+inline constexpr std::uint32_t kClusterListPart = 4096;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks

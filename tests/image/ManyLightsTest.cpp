@@ -134,7 +134,7 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
 
 // 262,144 small point and spot lights (tests/scenes/small_lights_262144.json) around a floor, a
 // box and a ball: the light lists of clustered and tiled (render/culling/ClusterLists.h) against
-// deferred, which walks every light at every pixel. At 96x72 the longest lists pass 8,192
+// deferred, which walks every light at every pixel. At 96x72 the longest lists pass 4,096
 // lights, so the passes over the long lists' tiles run too, and the first frame's storage is
 // too small, so the frame is redone. The seed G-buffer keeps every input exact, so the images
 // differ only in the order of the sums: deferred adds a light batch at a time, the lists add
