@@ -45,10 +45,12 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
 // A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run
-// (emit false) or the writing run.
-gl::Program pairProgram(const ClusterGridShape& shape, bool wide, bool emit)
+// (emit false) or the writing run, reading the grid as texels or from storage buffers.
+gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit, bool gridTexels)
 {
     gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
+    if (gridTexels)
+        defines.emplace_back("CLUSTER_GRID_TEXELS", "1");
     defines.emplace_back("CLUSTER_PAIR_LIGHT_COUNT_LOCATION", std::to_string(kPairLightCountLocation));
     defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
@@ -104,8 +106,7 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels)
 }
 
 ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
-    : narrowPairs_{pairProgram(shape, false, false), pairProgram(shape, false, true)},
-      widePairs_{pairProgram(shape, true, false), pairProgram(shape, true, true)},
+    : shape_(shape),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
@@ -145,6 +146,14 @@ void ClusterLists::plan(std::uint32_t pairs)
         texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
+const gl::Program& ClusterLists::pairProgram(bool wide, bool emit, bool gridTexels)
+{
+    std::optional<gl::Program>& program = pairPrograms_[wide][emit][gridTexels];
+    if (!program)
+        program.emplace(makePairProgram(shape_, wide, emit, gridTexels));
+    return *program;
+}
+
 void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
 {
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
@@ -162,8 +171,13 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     ensure(wideLights_, "wide lights", lightCount);
     ensure(pairedLights_, "paired lights", lightCount);
     ensure(lightTileRecords_, "light tile records", 2 * lightCount);
+    // The grid as texels where the lights are (the software rasteriser's choice,
+    // RendererDesc::lightTexels) and the driver's texture buffers hold it.
+    const bool gridTexels = sceneTexels_ && grid.hasTexels();
     const auto bindAll = [&] {
         grid.bind();
+        if (gridTexels)
+            grid.bindTexels();
         statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
         lightPairOffsets_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_OFFSETS_BUFFER_BINDING);
         lightPairCursors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_CURSORS_BUFFER_BINDING);
@@ -185,16 +199,22 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     ML_ASSERT(grid.gridWidth() >= 1 && grid.gridWidth() <= kTilesPerBand);
     const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / grid.gridWidth());
     const auto bands = (static_cast<std::uint32_t>(grid.gridHeight()) + rowsPerBand - 1) / rowsPerBand;
+    const Pass pairPass{.name = "cluster pairs",
+                        .sampled = Resource::LightGrid,
+                        .storage = Resource::LightGrid,
+                        .writes = Resource::LightGrid};
     const Pass indirectPass{.name = "cluster pairs",
+                            .sampled = Resource::LightGrid,
                             .storage = Resource::LightGrid,
                             .indirect = Resource::LightGrid,
                             .writes = Resource::LightGrid};
-    const auto runPairs = [&](int emit) {
-        passes.run(emit ? indirectPass : listPass("cluster pairs"), [&] {
+    const auto runPairs = [&](bool emit) {
+        passes.run(emit ? indirectPass : pairPass, [&] {
             bindAll();
-            narrowPairs_[emit].set(kPairLightCountLocation, lightCount);
-            narrowPairs_[emit].set(kPairCapacityLocation, capacity_);
-            narrowPairs_[emit].use();
+            const gl::Program& narrow = pairProgram(false, emit, gridTexels);
+            narrow.set(kPairLightCountLocation, lightCount);
+            narrow.set(kPairCapacityLocation, capacity_);
+            narrow.use();
             if (emit) {
                 statusBuffer_.bindAsDispatchIndirect();
                 glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, pairedLightGroups)));
@@ -204,9 +224,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         });
         passes.run(indirectPass, [&] {
             bindAll();
-            widePairs_[emit].set(kPairCapacityLocation, capacity_);
-            widePairs_[emit].set(kRowsPerBandLocation, rowsPerBand);
-            widePairs_[emit].use();
+            const gl::Program& wide = pairProgram(true, emit, gridTexels);
+            wide.set(kPairCapacityLocation, capacity_);
+            wide.set(kRowsPerBandLocation, rowsPerBand);
+            wide.use();
             statusBuffer_.bindAsDispatchIndirect();
             glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
         });
@@ -221,10 +242,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         clusterCounts_.clearToZero(bytesOf(clusters));
     });
     if (lightCount > 0) {
-        runPairs(0);
+        runPairs(false);
         scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
                   std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
-        runPairs(1);
+        runPairs(true);
     }
     passes.run(listPass("cluster lists"), [&] {
         bindAll();

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -114,8 +115,11 @@ private:
     void plan(std::uint32_t pairs);
     void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
 
-    gl::Program narrowPairs_[2];  // the counting run's, the writing run's
-    gl::Program widePairs_[2];
+    // cluster_pairs.comp's programs, [wide][writing run][grid as texels], made when first used.
+    const gl::Program& pairProgram(bool wide, bool emit, bool gridTexels);
+
+    ClusterGridShape shape_;
+    std::optional<gl::Program> pairPrograms_[2][2][2];
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;

@@ -59,6 +59,11 @@ const int CLUSTER_LIST_TEXELS_UNIT = 6;  // lib/cluster_lists.glsl clusterListTe
 const int SPECULAR_MAP_UNIT = 7;      // lib/material.glsl (or the metallic-roughness map)
 const int CLUSTER_LIST_SPHERES_UNIT = 7;  // lib/cluster_lists.glsl clusterListSphereTexels (no material maps there)
 const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
+// lib/cluster_culling.glsl's grid as texels (CLUSTER_GRID_TEXELS): cluster_pairs.comp, which
+// has no material maps or shadows.
+const int CLUSTER_TILE_DEPTHS_UNIT = 8;
+const int CLUSTER_TILE_SLICES_UNIT = 9;
+const int CLUSTER_BOUNDS_UNIT = 10;
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl
 const int POINT_SHADOWS_UNIT = 11;      // lib/shadows.glsl
