@@ -1,21 +1,25 @@
 #version 450 core
 // Clustered, once per frame (render/culling/ClusterLists.h): the (cluster, light) pairs, in two runs of
-// the same program: the first (emitPairs 0) counts each light's pairs, which a scan turns into
-// each light's first slot; the second (emitPairs 1) writes them there, the cluster as the sort
-// key and the light as the value, and counts each cluster's. One program for both, so that
-// both runs make the same decisions to the last bit. The lights are shared out two ways, a
-// program each:
-// - without WIDE_LIGHTS, an invocation per light walks the tiles its sphere covers on screen,
-//   when they are at most CLUSTER_PAIR_NARROW_TILES; the counting pass lists the others as
-//   wide lights. Most lights of a large scene are small: an invocation each, not a workgroup
-//   (at a million lights a workgroup per light cost 0.6 us of llvmpipe's dispatch alone);
-// - with WIDE_LIGHTS, a workgroup per wide light and band of tile rows (an indirect dispatch
+// two programs each. The counting run counts each light's pairs, which a scan turns into each
+// light's first slot; the writing run writes them there, the cluster as the sort key and the
+// light as the value, and counts each cluster's. Each program is compiled for each run
+// (EMIT_PAIRS 0 and 1) from one source, so that both runs make the same decisions to the last
+// bit and neither carries the other's code: llvmpipe runs every line of an invocation's
+// program under a mask, whichever branch its lanes take (courtyard, a million lights: the
+// writing run 32 -> 24 ms as a program of its own). The lights are shared out two ways:
+// - the narrow program, an invocation per light, walks the tiles its sphere covers on screen,
+//   when they are at most CLUSTER_PAIR_NARROW_TILES; the counting run lists the others as wide
+//   lights. Most lights of a large scene are small: an invocation each, not a workgroup (at a
+//   million lights a workgroup per light cost 0.6 us of llvmpipe's dispatch alone). The
+//   counting run also lists the lights it found pairs for, and keeps what it found for those
+//   of at most 2 x 2 tiles (most lights of a large scene): the tiles and each one's slices, 64
+//   bits. The writing run is an invocation per listed light (an indirect dispatch), and only
+//   writes a kept light's pairs instead of culling it again: most lights of a large scene reach
+//   no surface, and cost the writing run nothing;
+// - the wide program, a workgroup per wide light and band of tile rows (an indirect dispatch
 //   over the list), its LIGHT_TILE_LANES invocations sharing out the tiles
 //   (lib/light_tiles.glsl): 8 lanes in lock step each walking a light of hundreds of tiles
 //   would wait for the largest.
-// The counting run keeps what it found for a narrow light of at most 2 x 2 tiles (most lights
-// of a large scene): the tiles and each one's slices, 64 bits, so that the writing run only
-// writes that light's pairs instead of culling it again.
 //
 // A light whose screen rectangle covers at least globalLightTiles tiles (or that is unbounded)
 // is a candidate for the global list (lib/cluster_lists.glsl), which every pixel walks: the
@@ -28,8 +32,9 @@
 // them does not pay for walking an empty list; the candidates are counted either way.
 //
 // A light's pairs may be written in any order (a wide light's slots are handed out by an
-// atomic), since no two of them share a cluster: sorted by cluster, each cluster's lights
-// follow the lights' order, whatever order the invocations ran in.
+// atomic) and the lights with pairs listed in any order (by an atomic too), since no two of a
+// light's pairs share a cluster and its slots follow from its index: sorted by cluster, each
+// cluster's lights follow the lights' order, whatever order the invocations ran in.
 //
 // Loop iterations per invocation: CLUSTER_PAIR_NARROW_TILES tiles, or at most 1,024 (the bands
 // of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
@@ -48,7 +53,7 @@
 layout(local_size_x = 64) in;
 #endif
 
-layout(location = CLUSTER_PAIR_EMIT_LOCATION) uniform uint emitPairs;
+const uint emitPairs = EMIT_PAIRS;  // 0 in the counting run, 1 in the writing run
 #ifndef WIDE_LIGHTS
 layout(location = CLUSTER_PAIR_LIGHT_COUNT_LOCATION) uniform uint lightCount;
 #endif
@@ -56,24 +61,24 @@ layout(std430, binding = LIGHT_PAIR_OFFSETS_BUFFER_BINDING) buffer LightPairOffs
     uint lightPairOffset[];  // counting: each light's pairs; writing: its first slot
 };
 layout(std430, binding = WIDE_LIGHTS_BUFFER_BINDING) buffer WideLights {
-    uint wideLight[];  // the lights the narrow pass left to the wide one, GLOBAL_CANDIDATE_BIT
+    uint wideLight[];  // the lights for the wide program, GLOBAL_CANDIDATE_BIT marking candidates
+};
+layout(std430, binding = PAIRED_LIGHTS_BUFFER_BINDING) buffer PairedLights {
+    uint pairedLight[];  // the narrow lights with pairs, for the writing run
 };
 // Marks a wide light that is a candidate for the global list (light indices are below 2^24).
 const uint GLOBAL_CANDIDATE_BIT = 0x80000000u;
-#ifndef WIDE_LIGHTS
+#if !defined(WIDE_LIGHTS) && !EMIT_PAIRS
 layout(location = CLUSTER_PAIR_GLOBAL_TILES_LOCATION) uniform uint globalLightTiles;
 layout(location = CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION) uniform uint globalListPlanned;  // this frame has one
 layout(std430, binding = GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING) writeonly buffer GlobalLightCandidates {
-    uint globalLightCandidate[];  // in the order the invocations ran: global_lights.comp sorts them
+    uint globalLightCandidate[];  // in the order the invocations ran: global_light_order.comp sorts them
 };
 #endif
 layout(location = CLUSTER_PAIR_CAPACITY_LOCATION) uniform uint pairCapacity;
 layout(std430, binding = LIGHT_PAIR_CURSORS_BUFFER_BINDING) buffer LightPairCursors {
-    uint lightPairCursor[];  // a wide light's slots handed out so far, from WIDE_LIGHT_MARK
+    uint lightPairCursor[];  // a wide light's slots handed out so far
 };
-// The counting run marks the wide lights' cursors, so that the writing run leaves them to the
-// wide program whatever its own sums would say.
-const uint WIDE_LIGHT_MARK = 0x80000000u;
 layout(std430, binding = PAIR_KEYS_IN_BUFFER_BINDING) writeonly buffer PairKeys {
     uint pairKey[];  // the cluster
 };
@@ -101,6 +106,38 @@ uint tileOfRect(uvec2 first, uvec2 size, uint k, uvec2 grid)
     return (first.y + k / size.x) * grid.x + first.x + k % size.x;
 }
 #endif
+
+// The indirect dispatches over listed lights (the wide lights; the narrow lights with pairs)
+// have their workgroups along x up to GROUPS_PER_ROW and then along z: a dispatch may have no
+// more than 65,535 along x.
+const uint GROUPS_PER_ROW = 32768u;
+
+// The workgroup of a dispatch listed that way (the first of z's row, the first after it...).
+uint listedGroup()
+{
+    return gl_WorkGroupID.z * GROUPS_PER_ROW + gl_WorkGroupID.x;
+}
+
+// What the item at `index` of a list adds to the dispatch over it, `itemsPerGroup` items a
+// workgroup: (1, _) where it opens a workgroup of the first row, (_, 1) where it opens a row.
+uvec2 listedDispatchGrowth(uint index, uint itemsPerGroup)
+{
+    if (index % itemsPerGroup != 0u)
+        return uvec2(0u);
+    uint group = index / itemsPerGroup;
+    return uvec2(group < GROUPS_PER_ROW ? 1u : 0u, group % GROUPS_PER_ROW == 0u ? 1u : 0u);
+}
+
+// The tiles the light's sphere covers, first to last; false when it reaches none (wholly
+// before the near plane, or off screen). Both runs call it on the same light with the same
+// inputs: the same answer.
+bool lightTileRect(ViewLight light, uvec2 grid, out uvec2 first, out uvec2 last)
+{
+    first = uvec2(0u);
+    last = grid - 1u;
+    return light.unbounded || (-light.centre.z + light.radius >= frame.projection.z &&
+                               sphereTileRect(light.centre, light.radius, uint(CLUSTER_TILE_SIZE), grid, first, last));
+}
 
 void emitPair(uint slot, uint cluster, uint lightIndex)
 {
@@ -133,17 +170,20 @@ uint tilePairs(ViewLight light, uint lightIndex, uint tile, uint slot)
         return pairs;
 #ifdef WIDE_LIGHTS
     // A wide light's invocations share its slots: one atomic per tile, not per pair.
-    slot = lightPairOffset[lightIndex] + (atomicAdd(lightPairCursor[lightIndex], pairs) - WIDE_LIGHT_MARK);
+    slot = lightPairOffset[lightIndex] + atomicAdd(lightPairCursor[lightIndex], pairs);
 #endif
     emitTilePairs(slices, tile, lightIndex, slot);
     return pairs;
 }
 
+#ifdef WIDE_LIGHTS
 void main()
 {
+    uint wide = listedGroup();
+    if (wide >= wideLights)
+        return;
     uvec2 grid = clusterTileGrid();
-#ifdef WIDE_LIGHTS
-    uint entry = wideLight[gl_WorkGroupID.x];
+    uint entry = wideLight[wide];
     // A candidate for the global list has no pairs where the list holds every candidate.
     if ((entry & GLOBAL_CANDIDATE_BIT) != 0u && globalLightCount() != 0u)
         return;
@@ -157,84 +197,94 @@ void main()
         pairs += tilePairs(light, lightIndex, tileOfRun(run, i, grid.x), 0u);
     if (emitPairs == 0u && pairs != 0u)
         atomicAdd(lightPairOffset[lightIndex], pairs);
+}
+#elif EMIT_PAIRS
+void main()
+{
+    uint paired = listedGroup() * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (paired >= pairedLights)
+        return;
+    uint lightIndex = pairedLight[paired];
+    uvec2 grid = clusterTileGrid();
+    uint slot = lightPairOffset[lightIndex];
+    uvec2 record = lightTileRecord[lightIndex];
+    if (record.x != NO_RECORD) {
+        uvec2 first = uvec2(record.x & RECORD_COORDINATE_LIMIT, (record.x >> 15u) & RECORD_COORDINATE_LIMIT);
+        uvec2 size = uvec2(1u + ((record.x >> 30u) & 1u), 1u + (record.x >> 31u));
+        for (uint k = 0u; k < size.x * size.y; ++k) {
+            uint slices = (record.y >> (8u * k)) & 0xffu;
+            emitTilePairs(slices, tileOfRect(first, size, k, grid), lightIndex, slot);
+            slot += uint(bitCount(slices));
+        }
+        return;
+    }
+    ViewLight light = viewLight(lights[lightIndex]);
+    uvec2 first;
+    uvec2 last;
+    lightTileRect(light, grid, first, last);  // true: the counting run found pairs
+    uvec2 size = last - first + 1u;
+    for (uint k = 0u; k < size.x * size.y; ++k)
+        slot += tilePairs(light, lightIndex, tileOfRect(first, size, k, grid), slot);
+}
 #else
+void main()
+{
     // Lights along x and z (a dispatch has at most 65,535 workgroups along x).
     uint lightIndex = (gl_WorkGroupID.z * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x +
                       gl_LocalInvocationID.x;
     if (lightIndex >= lightCount)
         return;
-    // The writing run skips the lights the counting run found no pair for (most lights of a
-    // large scene reach no surface): their slots end where they begin.
-    if (emitPairs != 0u &&
-        (lightIndex + 1u < lightCount ? lightPairOffset[lightIndex + 1u] : pairsNeeded) == lightPairOffset[lightIndex])
-        return;
-    if (emitPairs != 0u) {
-        uvec2 record = lightTileRecord[lightIndex];
-        if (record.x != NO_RECORD) {
-            uvec2 first = uvec2(record.x & RECORD_COORDINATE_LIMIT, (record.x >> 15u) & RECORD_COORDINATE_LIMIT);
-            uvec2 size = uvec2(1u + ((record.x >> 30u) & 1u), 1u + (record.x >> 31u));
-            uint slot = lightPairOffset[lightIndex];
-            for (uint k = 0u; k < size.x * size.y; ++k) {
-                uint slices = (record.y >> (8u * k)) & 0xffu;
-                emitTilePairs(slices, tileOfRect(first, size, k, grid), lightIndex, slot);
-                slot += uint(bitCount(slices));
-            }
-            return;
-        }
-    }
+    uvec2 grid = clusterTileGrid();
     ViewLight light = viewLight(lights[lightIndex]);
-    if (light.radius <= 0.0)
-        return;
-    uvec2 first = uvec2(0u);
-    uvec2 last = grid - 1u;
-    if (!light.unbounded && (-light.centre.z + light.radius < frame.projection.z ||
-                             !sphereTileRect(light.centre, light.radius, uint(CLUSTER_TILE_SIZE), grid, first, last)))
+    uvec2 first;
+    uvec2 last;
+    if (light.radius <= 0.0 || !lightTileRect(light, grid, first, last))
         return;
     uvec2 size = last - first + 1u;
-    if (emitPairs == 0u) {
-        // Counted whether or not this frame has a global list: the next frame's plan.
-        bool global = light.unbounded || size.x * size.y >= globalLightTiles;
-        uint slot = global ? atomicAdd(globalLightCandidates, 1u) : 0u;
-        bool listed = global && globalListPlanned != 0u;
-        if (listed || light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
-            lightPairCursor[lightIndex] = WIDE_LIGHT_MARK;
-            lightTileRecord[lightIndex].x = NO_RECORD;
-            uint entry = lightIndex;
-            if (listed) {
-                if (slot < uint(GLOBAL_LIGHT_CAPACITY))
-                    globalLightCandidate[slot] = lightIndex;
-                entry |= GLOBAL_CANDIDATE_BIT;
-            }
-            wideLight[atomicAdd(wideLightGroups[0], 1u)] = entry;
-            return;
+    // Counted whether or not this frame has a global list: the next frame's plan.
+    bool global = light.unbounded || size.x * size.y >= globalLightTiles;
+    uint candidate = global ? atomicAdd(globalLightCandidates, 1u) : 0u;
+    bool listed = global && globalListPlanned != 0u;
+    if (listed || light.unbounded || size.x * size.y > uint(CLUSTER_PAIR_NARROW_TILES)) {
+        uint entry = lightIndex;
+        if (listed) {
+            if (candidate < uint(GLOBAL_LIGHT_CAPACITY))
+                globalLightCandidate[candidate] = lightIndex;
+            entry |= GLOBAL_CANDIDATE_BIT;
         }
-#if CLUSTER_SLICES <= 8
-        if (size.x <= 2u && size.y <= 2u && last.x < RECORD_COORDINATE_LIMIT && last.y < RECORD_COORDINATE_LIMIT) {
-            uint masks = 0u;
-            uint pairs = 0u;
-            for (uint k = 0u; k < size.x * size.y; ++k) {
-                uint slices = lightSlicesOfTile(light, tileOfRect(first, size, k, grid));
-                masks |= slices << (8u * k);
-                pairs += uint(bitCount(slices));
-            }
-            if (pairs != 0u) {
-                lightPairOffset[lightIndex] = pairs;
-                lightTileRecord[lightIndex] =
-                    uvec2(first.x | first.y << 15u | (size.x - 1u) << 30u | (size.y - 1u) << 31u, masks);
-            }
-            return;
-        }
-#endif
-        lightTileRecord[lightIndex].x = NO_RECORD;
-    } else if (lightPairCursor[lightIndex] == WIDE_LIGHT_MARK) {
+        uint wide = atomicAdd(wideLights, 1u);
+        wideLight[wide] = entry;
+        uvec2 growth = listedDispatchGrowth(wide, 1u);
+        if (growth.x != 0u)
+            atomicAdd(wideLightGroups[0], 1u);
+        if (growth.y != 0u)
+            atomicAdd(wideLightGroups[2], 1u);
         return;
     }
-    uint slot = emitPairs != 0u ? lightPairOffset[lightIndex] : 0u;
+    // One walk over the tiles for every narrow light, the slices of the first four kept as
+    // they come (the record's, when the light covers at most 2 x 2 tiles): one copy of the
+    // tile test in the program, not one for the recorded lights and one for the others.
+    uint masks = 0u;
     uint pairs = 0u;
-    for (uint y = first.y; y <= last.y; ++y)
-        for (uint x = first.x; x <= last.x; ++x)
-            pairs += tilePairs(light, lightIndex, y * grid.x + x, slot + pairs);
-    if (emitPairs == 0u && pairs != 0u)
-        lightPairOffset[lightIndex] = pairs;
-#endif
+    for (uint k = 0u; k < size.x * size.y; ++k) {
+        uint slices = lightSlicesOfTile(light, tileOfRect(first, size, k, grid));
+        masks |= slices << (8u * (k & 3u));
+        pairs += uint(bitCount(slices));
+    }
+    if (pairs == 0u)
+        return;
+    lightPairOffset[lightIndex] = pairs;
+    bool recorded = CLUSTER_SLICES <= 8 && size.x <= 2u && size.y <= 2u && last.x < RECORD_COORDINATE_LIMIT &&
+                    last.y < RECORD_COORDINATE_LIMIT;
+    lightTileRecord[lightIndex] =
+        recorded ? uvec2(first.x | first.y << 15u | (size.x - 1u) << 30u | (size.y - 1u) << 31u, masks)
+                 : uvec2(NO_RECORD, 0u);
+    uint paired = atomicAdd(pairedLights, 1u);
+    pairedLight[paired] = lightIndex;
+    uvec2 growth = listedDispatchGrowth(paired, gl_WorkGroupSize.x);
+    if (growth.x != 0u)
+        atomicAdd(pairedLightGroups[0], 1u);
+    if (growth.y != 0u)
+        atomicAdd(pairedLightGroups[2], 1u);
 }
+#endif

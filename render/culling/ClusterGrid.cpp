@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "gl/Driver.h"
 #include "render/culling/LightTiles.h"
 #include "render/scene/GpuScene.h"
 
@@ -66,6 +67,12 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
         // Dynamic: coverDepthRanges writes them from the CPU.
         tileDepthRanges_ = gl::Buffer("cluster tile depth ranges", 4 * tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
         tileSlices_ = gl::Buffer("cluster tile slices", tileBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        const bool texels = static_cast<std::int64_t>(tiles) <= gl::queryInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
+        tileDepthRangeTexels_ = texels
+                                    ? gl::BufferTexture("cluster tile depth range texels", GL_RGBA32F, tileDepthRanges_)
+                                    : gl::BufferTexture();
+        tileSliceTexels_ =
+            texels ? gl::BufferTexture("cluster tile slice texels", GL_R32UI, tileSlices_) : gl::BufferTexture();
     }
     // Sized for the largest batch of this frame: the size is known before any pass runs.
     const std::size_t words = shape_.surfaceBounds ? 0 : std::max<std::size_t>(maskWordsFor(largestBatch), 1);
@@ -76,8 +83,12 @@ void ClusterGrid::resize(int width, int height, std::uint32_t largestBatch)
     if (words > 0 && (!summaries_ || summaries_.size() < summaryBytes))
         summaries_ = gl::Buffer("cluster mask summaries", summaryBytes, nullptr, 0);
     const std::size_t boundsBytes = 2 * 4 * sizeof(float) * clusterCount_;
-    if (shape_.surfaceBounds && (!bounds_ || bounds_.size() != boundsBytes))
+    if (shape_.surfaceBounds && (!bounds_ || bounds_.size() != boundsBytes)) {
         bounds_ = gl::Buffer("cluster surface bounds", boundsBytes, nullptr, 0);
+        boundTexels_ = static_cast<std::int64_t>(2 * clusterCount_) <= gl::queryInteger(GL_MAX_TEXTURE_BUFFER_SIZE)
+                           ? gl::BufferTexture("cluster surface bound texels", GL_RGBA32F, bounds_)
+                           : gl::BufferTexture();
+    }
 }
 
 void ClusterGrid::bind() const
@@ -90,6 +101,15 @@ void ClusterGrid::bind() const
     }
     if (bounds_)
         bounds_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_BOUNDS_BUFFER_BINDING);
+}
+
+void ClusterGrid::bindTexels() const
+{
+    ML_ASSERT(hasTexels());
+    tileDepthRangeTexels_.bindUnit(bindings::CLUSTER_TILE_DEPTHS_UNIT);
+    tileSliceTexels_.bindUnit(bindings::CLUSTER_TILE_SLICES_UNIT);
+    if (boundTexels_)
+        boundTexels_.bindUnit(bindings::CLUSTER_BOUNDS_UNIT);
 }
 
 Pass ClusterGrid::fitPass()

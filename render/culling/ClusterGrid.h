@@ -19,6 +19,7 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 #include "render/culling/LightBatches.h"
 #include "render/frame/FramePasses.h"
 
@@ -58,6 +59,11 @@ public:
     void resize(int width, int height, std::uint32_t largestBatch);
     // Binds the buffers at lib/clusters.glsl's binding points.
     void bind() const;
+    // Whether the tiles and surface boxes can be read as texels too (lib/cluster_culling.glsl,
+    // CLUSTER_GRID_TEXELS): where the driver's texture buffers hold them. After resize.
+    bool hasTexels() const { return tileDepthRangeTexels_ && (!bounds_ || boundTexels_); }
+    // Binds those texel views at lib/cluster_culling.glsl's units; where hasTexels().
+    void bindTexels() const;
     // The passes the grid is built in: fitting it to the surfaces (the G-buffer) and setting
     // the lights (coverDepthRanges and assignLights), which the scene binds for.
     static Pass fitPass();
@@ -98,6 +104,10 @@ private:
     gl::Buffer masks_;
     gl::Buffer summaries_;
     gl::Buffer bounds_;  // with surfaceBounds: lib/clusters.glsl's clusterBounds
+    // Texel views of the buffers above, where the driver's texture buffers hold them.
+    gl::BufferTexture tileDepthRangeTexels_;
+    gl::BufferTexture tileSliceTexels_;
+    gl::BufferTexture boundTexels_;
 };
 
 }  // namespace manylights

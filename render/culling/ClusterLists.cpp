@@ -11,6 +11,7 @@
 #include "core/Error.h"
 #include "gl/Driver.h"
 #include "render/culling/LightTiles.h"
+#include "render/effects/ShadowMaps.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -23,7 +24,6 @@ constexpr int kPairLightCountLocation = 52;
 constexpr int kPairGlobalTilesLocation = 53;
 constexpr int kPairGlobalPlannedLocation = 60;
 constexpr int kPairCapacityLocation = 54;
-constexpr int kPairEmitLocation = 59;
 constexpr int kSortShiftLocation = 55;
 constexpr int kSortChunksLocation = 56;
 constexpr int kSortCapacityLocation = 57;
@@ -36,8 +36,12 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // llvmpipe's per-workgroup allocations then go through.
 constexpr std::uint32_t kNarrowLightTiles = 64;
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
-// Part 0 of a list is walked after the global list, by the same invocation.
-static_assert(kClusterListPart + kGlobalLightCapacity + 1024 < kMaxLoopIterations);
+// A part's walk: each entry tested once and shaded at most once, two iterations per chunk of 32
+// (lib/cluster_lists.glsl); before it, in part 0, the global list, an iteration per light; the
+// shadow filters of the shadowed lights (LightBatches.cpp's count); room for the loops around it.
+static_assert(2 * kClusterListPart + 2 * (kClusterListPart / 32) + kGlobalLightCapacity + 16 * (kMaxShadowLights + 1) +
+                  1024 <=
+              kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
 constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the
@@ -45,19 +49,24 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // lights), so that a single image is rarely rendered twice.
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
-gl::Defines pairDefines(const ClusterGridShape& shape, bool wide)
+// A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run
+// (emit false) or the writing run, reading the grid as texels or from storage buffers.
+gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit, bool gridTexels)
 {
     gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
+    if (gridTexels)
+        defines.emplace_back("CLUSTER_GRID_TEXELS", "1");
     defines.emplace_back("CLUSTER_PAIR_LIGHT_COUNT_LOCATION", std::to_string(kPairLightCountLocation));
-    defines.emplace_back("CLUSTER_PAIR_EMIT_LOCATION", std::to_string(kPairEmitLocation));
     defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
+    defines.emplace_back("EMIT_PAIRS", emit ? "1" : "0");
     defines.emplace_back("CLUSTER_PAIR_GLOBAL_TILES_LOCATION", std::to_string(kPairGlobalTilesLocation));
     defines.emplace_back("CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION", std::to_string(kPairGlobalPlannedLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
-    return defines;
+    return gl::Program(wide ? "cluster pairs of wide lights" : "cluster pairs",
+                       {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, defines);
 }
 
 enum class SortPass { Count, Scatter, ScatterGather };
@@ -133,8 +142,7 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList
 }
 
 ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
-    : narrowPairs_("cluster pairs", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, false)),
-      widePairs_("cluster pairs of wide lights", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, pairDefines(shape, true)),
+    : shape_(shape),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
@@ -182,6 +190,14 @@ void ClusterLists::plan(std::uint32_t pairs)
         texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
+const gl::Program& ClusterLists::pairProgram(bool wide, bool emit, bool gridTexels)
+{
+    std::optional<gl::Program>& program = pairPrograms_[wide][emit][gridTexels];
+    if (!program)
+        program.emplace(makePairProgram(shape_, wide, emit, gridTexels));
+    return *program;
+}
+
 void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
 {
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
@@ -197,13 +213,20 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     ensure(lightPairOffsets_, "light pair offsets", lightCount);
     ensure(lightPairCursors_, "light pair cursors", lightCount);
     ensure(wideLights_, "wide lights", lightCount);
+    ensure(pairedLights_, "paired lights", lightCount);
     ensure(lightTileRecords_, "light tile records", 2 * lightCount);
+    // The grid as texels where the lights are (the software rasteriser's choice,
+    // RendererDesc::lightTexels) and the driver's texture buffers hold it.
+    const bool gridTexels = sceneTexels_ && grid.hasTexels();
     const auto bindAll = [&] {
         grid.bind();
+        if (gridTexels)
+            grid.bindTexels();
         statusBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
         lightPairOffsets_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_OFFSETS_BUFFER_BINDING);
         lightPairCursors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_PAIR_CURSORS_BUFFER_BINDING);
         wideLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::WIDE_LIGHTS_BUFFER_BINDING);
+        pairedLights_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIRED_LIGHTS_BUFFER_BINDING);
         lightTileRecords_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_TILE_RECORDS_BUFFER_BINDING);
         keys_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::PAIR_KEYS_IN_BUFFER_BINDING);
         lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
@@ -212,39 +235,51 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
         globalLightCandidates_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING);
     };
-    // Narrow lights along x and z of the dispatch (x has at most 65,535 workgroups); wide
-    // ones a workgroup per light and band of rows (lib/light_tiles.glsl).
+    // The counting run's narrow lights along x and z of its dispatch (x has at most 65,535
+    // workgroups); the writing run's are indirect, as many as the counting run found pairs for,
+    // and the wide lights' too, a workgroup each per band of rows (lib/light_tiles.glsl).
     const GLuint lightGroups = std::max<GLuint>(groupsFor(lightCount), 1);
     const GLuint groupsX = std::min<GLuint>(lightGroups, 32768);
     const GLuint groupsZ = (lightGroups + groupsX - 1) / groupsX;
     ML_ASSERT(grid.gridWidth() >= 1 && grid.gridWidth() <= kTilesPerBand);
     const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / grid.gridWidth());
     const auto bands = (static_cast<std::uint32_t>(grid.gridHeight()) + rowsPerBand - 1) / rowsPerBand;
-    const auto runPairs = [&](std::uint32_t emit) {
-        passes.run(listPass("cluster pairs"), [&] {
+    const Pass pairPass{.name = "cluster pairs",
+                        .sampled = Resource::LightGrid,
+                        .storage = Resource::LightGrid,
+                        .writes = Resource::LightGrid};
+    const Pass indirectPass{.name = "cluster pairs",
+                            .sampled = Resource::LightGrid,
+                            .storage = Resource::LightGrid,
+                            .indirect = Resource::LightGrid,
+                            .writes = Resource::LightGrid};
+    const auto runPairs = [&](bool emit) {
+        passes.run(emit ? indirectPass : pairPass, [&] {
             bindAll();
-            narrowPairs_.set(kPairLightCountLocation, lightCount);
-            narrowPairs_.set(kPairEmitLocation, emit);
-            narrowPairs_.set(kPairCapacityLocation, capacity_);
-            narrowPairs_.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
-            narrowPairs_.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
-            narrowPairs_.use();
-            glDispatchCompute(groupsX, 1, groupsZ);
+            const gl::Program& narrow = pairProgram(false, emit, gridTexels);
+            narrow.set(kPairLightCountLocation, lightCount);
+            narrow.set(kPairCapacityLocation, capacity_);
+            if (!emit) {
+                narrow.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
+                narrow.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
+            }
+            narrow.use();
+            if (emit) {
+                statusBuffer_.bindAsDispatchIndirect();
+                glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, pairedLightGroups)));
+            } else {
+                glDispatchCompute(groupsX, 1, groupsZ);
+            }
         });
-        // The narrow run has listed the wide lights: a workgroup each per band.
-        passes.run({.name = "cluster pairs",
-                    .storage = Resource::LightGrid,
-                    .indirect = Resource::LightGrid,
-                    .writes = Resource::LightGrid},
-                   [&] {
-                       bindAll();
-                       widePairs_.set(kPairEmitLocation, emit);
-                       widePairs_.set(kPairCapacityLocation, capacity_);
-                       widePairs_.set(kRowsPerBandLocation, rowsPerBand);
-                       widePairs_.use();
-                       statusBuffer_.bindAsDispatchIndirect();
-                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
-                   });
+        passes.run(indirectPass, [&] {
+            bindAll();
+            const gl::Program& wide = pairProgram(true, emit, gridTexels);
+            wide.set(kPairCapacityLocation, capacity_);
+            wide.set(kRowsPerBandLocation, rowsPerBand);
+            wide.use();
+            statusBuffer_.bindAsDispatchIndirect();
+            glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
+        });
     };
 
     passes.run(listPass("cluster pairs"), [&] {
@@ -256,10 +291,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         clusterCounts_.clearToZero(bytesOf(clusters));
     });
     if (lightCount > 0) {
-        runPairs(0);
+        runPairs(false);
         scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
                   std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
-        runPairs(1);
+        runPairs(true);
     }
     // Also without lights: it writes the list's length, which the lighting reads.
     if (globalListPlanned_)
@@ -392,9 +427,9 @@ std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
-         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0],
-          &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_, &histogram_,
-          &globalLightCandidates_, &globalLights_, &globalLightRecords_})
+         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &pairedLights_, &lightTileRecords_, &keys_[0],
+          &keys_[1], &lights_[0], &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_,
+          &histogram_, &globalLightCandidates_, &globalLights_, &globalLightRecords_})
         bytes += buffer->size();
     return bytes;
 }

@@ -5,10 +5,13 @@
 // The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
 // 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
 //    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
-//    culling tests of lib/cluster_culling.glsl. The lights covering most of the grid it lists
-//    for the global list instead (below), which global_light_order.comp then sorts.
+//    culling tests of lib/cluster_culling.glsl; it lists the wide lights and the narrow lights
+//    it found pairs for, each list the size of an indirect dispatch. The lights covering most
+//    of the grid it lists for the global list instead (below), which global_light_order.comp
+//    then sorts.
 // 2. A scan (render/culling/GpuScan.h) of the counts gives each light its first slot, and the total.
-// 3. cluster_pairs.comp again writes the pairs there and counts each cluster's.
+// 3. cluster_pairs.comp again, compiled for writing, writes the pairs there and counts each
+//    cluster's: an invocation per listed narrow light, a workgroup per wide light and band.
 // 4. cluster_long_lists.comp notes the longest list and the tiles of lists longer than a part.
 // 5. A scan of the clusters' counts gives each list its first entry.
 // 6. A stable radix sort by cluster (pair_sort.comp and the scan, kSortRadixBits a digit)
@@ -38,6 +41,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -52,8 +56,9 @@
 namespace manylights {
 
 // The lights one invocation of the lighting walks (a part of a list): within the loop bound
-// of render/culling/LightBatches.h, with room for the iterations around the walk.
-inline constexpr std::uint32_t kClusterListPart = 8192;
+// of render/culling/LightBatches.h, with room for the iterations around the walk (each entry
+// may take two: its reach test and its shading, ClusterLists.cpp).
+inline constexpr std::uint32_t kClusterListPart = 4096;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
@@ -128,8 +133,13 @@ private:
         std::uint32_t longTileGroups[3] = {0, 1, 1};
         std::uint32_t pairsNeeded = 0;
         std::uint32_t longestList = 0;
-        std::uint32_t wideLightGroups[3] = {0, 1, 1};
+        std::uint32_t wideLightGroups[3] = {0, 1, 0};  // y: the bands
         std::uint32_t listVisits = 0;
+        std::uint32_t wideLights = 0;
+        // The writing run's workgroups of narrow lights: x up to 32,768, then z (the counting
+        // run adds them as it lists the lights it found pairs for).
+        std::uint32_t pairedLightGroups[3] = {0, 1, 0};
+        std::uint32_t pairedLights = 0;
         std::uint32_t globalLightCandidates = 0;
     };
 
@@ -137,8 +147,11 @@ private:
     void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
     void bindGlobalLights() const;
 
-    gl::Program narrowPairs_;
-    gl::Program widePairs_;
+    // cluster_pairs.comp's programs, [wide][writing run][grid as texels], made when first used.
+    const gl::Program& pairProgram(bool wide, bool emit, bool gridTexels);
+
+    ClusterGridShape shape_;
+    std::optional<gl::Program> pairPrograms_[2][2][2];
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
@@ -160,6 +173,7 @@ private:
     gl::Buffer lightPairOffsets_;
     gl::Buffer lightPairCursors_;
     gl::Buffer wideLights_;
+    gl::Buffer pairedLights_;      // the narrow lights the counting run found pairs for
     gl::Buffer lightTileRecords_;  // what the counting run found for a light of a few tiles
     gl::Buffer keys_[2];
     gl::Buffer lights_[2];

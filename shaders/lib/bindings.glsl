@@ -42,9 +42,11 @@ const int WIDE_LIGHTS_BUFFER_BINDING = 25;           // cluster_pairs.comp
 const int CLUSTER_BOUNDS_BUFFER_BINDING = 26;        // lib/clusters.glsl ClusterBounds (CLUSTER_SURFACE_BOUNDS)
 const int CLUSTER_LIST_SPHERES_BUFFER_BINDING = 27;  // lib/cluster_lists.glsl; pair_sort.comp PairSpheresOut
 const int LIGHT_TILE_RECORDS_BUFFER_BINDING = 28;    // cluster_pairs.comp
-const int GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING = 29;  // cluster_pairs.comp, global_light_order.comp
-const int GLOBAL_LIGHTS_BUFFER_BINDING = 30;          // lib/cluster_lists.glsl; global_light_order.comp
-const int GLOBAL_LIGHT_RECORDS_BUFFER_BINDING = 31;   // lib/cluster_lists.glsl; global_light_order.comp
+const int PAIRED_LIGHTS_BUFFER_BINDING = 29;         // cluster_pairs.comp
+const int GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING = 30;  // cluster_pairs.comp, global_light_order.comp
+const int GLOBAL_LIGHTS_BUFFER_BINDING = 31;          // lib/cluster_lists.glsl; global_light_order.comp
+// Shares PAIR_LIGHTS_OUT's number: only pair_sort.comp uses that.
+const int GLOBAL_LIGHT_RECORDS_BUFFER_BINDING = 17;   // lib/cluster_lists.glsl; global_light_order.comp
 
 // Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
@@ -62,6 +64,11 @@ const int SPECULAR_MAP_UNIT = 7;      // lib/material.glsl (or the metallic-roug
 const int CLUSTER_LIST_SPHERES_UNIT = 7;  // lib/cluster_lists.glsl clusterListSphereTexels (no material maps there)
 const int NORMAL_MAP_UNIT = 8;        // lib/material.glsl
 const int GLOBAL_LIGHT_TEXELS_UNIT = 8;  // lib/cluster_lists.glsl globalLightTexels (no material maps there)
+// lib/cluster_culling.glsl's grid as texels (CLUSTER_GRID_TEXELS): cluster_pairs.comp, which
+// has no material maps or shadows.
+const int CLUSTER_TILE_DEPTHS_UNIT = 8;
+const int CLUSTER_TILE_SLICES_UNIT = 9;
+const int CLUSTER_BOUNDS_UNIT = 10;
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SPOT_SHADOWS_UNIT = 10;       // lib/shadows.glsl
 const int POINT_SHADOWS_UNIT = 11;      // lib/shadows.glsl

@@ -24,9 +24,9 @@ namespace {
 
 class GlobalLightOrderTest : public GlContextTest {};
 
-// lib/cluster_list_status.glsl: ClusterListStatus, whose tenth uint counts the candidates.
-constexpr std::size_t kStatusUints = 10;
-constexpr std::size_t kCandidatesIndex = 9;
+// lib/cluster_list_status.glsl: ClusterListStatus, whose last uint counts the candidates.
+constexpr std::size_t kStatusUints = 15;
+constexpr std::size_t kCandidatesIndex = 14;
 constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
 
 TEST_F(GlobalLightOrderTest, SortsTheCandidatesIntoTheLightsOrderWithTheirRecords)

@@ -134,7 +134,7 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
 
 // 262,144 small point and spot lights (tests/scenes/small_lights_262144.json) around a floor, a
 // box and a ball: the light lists of clustered and tiled (render/culling/ClusterLists.h) against
-// deferred, which walks every light at every pixel. At 96x72 the longest lists pass 8,192
+// deferred, which walks every light at every pixel. At 96x72 the longest lists pass 4,096
 // lights, so the passes over the long lists' tiles run too, and the first frame's storage is
 // too small, so the frame is redone. The seed G-buffer keeps every input exact, so the images
 // differ only in the order of the sums: deferred adds a light batch at a time, the lists add
@@ -184,6 +184,57 @@ TEST(SmallLights262144, ClusteredAndTiledEqualDeferredAndEachOtherRunToRun)
     EXPECT_GE(work["light_evaluations"].get<double>(), inRange);
     EXPECT_GT(work["cluster_list_visits"].get<double>(), work["light_evaluations"].get<double>());
 }
+
+// The lights on one spot again, each with a range of 0.8 m: at 10 m and 1280x720 its sphere is
+// about 140 pixels across on screen, over 64 tiles of 16 pixels, so every one of the 131,072
+// is a wide light of the light lists (render/culling/ClusterLists.h), a workgroup each. That is
+// more workgroups than a dispatch may have along x (65,535 is all GL promises), so the list of
+// wide lights goes on into the dispatch's z. The image is still the one-light image times the
+// summed intensities (the rule and the tolerance of SumsEveryLight above).
+class WideLightsOnOneSpot : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WideLightsOnOneSpot, SumsEveryLight)
+{
+    const std::string& technique = GetParam();
+    const auto dir = scratchDirectory();
+    constexpr double kRange = 0.8;
+    // The sphere's radius on screen, in pixels: range / distance over tan(fov_y / 2), times
+    // half the image height.
+    const double radiusPixels = kRange / 10.0 / std::tan(22.5 * M_PI / 180.0) * 360.0;
+    ASSERT_GT((2.0 * radiusPixels / 16.0) * (2.0 * radiusPixels / 16.0), 64.0);
+    const auto withRange = [&](const std::string& scene) {
+        nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + scene));
+        if (json.contains("light_sets"))
+            for (auto& set : json["light_sets"])
+                set["range"] = {kRange, kRange};
+        if (json.contains("lights"))
+            for (auto& light : json["lights"])
+                light["range"] = kRange;
+        const auto path = dir / ("wide-" + scene);
+        test::writeFile(path, json.dump());
+        return path.string();
+    };
+    const std::vector<Light> lights = expandLights(loadSceneFile(withRange("lights_on_one_spot.json")));
+    ASSERT_GT(lights.size(), 2u * 65535u);
+    double total[3] = {0.0, 0.0, 0.0};
+    for (const Light& light : lights)
+        for (int c = 0; c < 3; ++c)
+            total[c] += light.intensity[c];
+    const std::vector<std::string> args = {"--size", "1280x720", "--gbuffer", "seed", "--technique", technique};
+    const Image one = renderPfm(withRange("one_light_on_one_spot.json"), dir / "one.pfm", args);
+    const Image many = renderPfm(withRange("lights_on_one_spot.json"), dir / "many.pfm", args);
+    Image expected = one;
+    int lit = 0;
+    for (std::size_t i = 0; i < expected.rgb.size(); ++i) {
+        expected.rgb[i] = static_cast<float>(static_cast<double>(one.rgb[i]) * total[i % 3]);
+        lit += expected.rgb[i] > 0.0f;
+    }
+    test::expectImagesNear(expected, many, {.relative = 8e-3}, technique);
+    EXPECT_GE(lit, 3) << "the square should cover a pixel";
+}
+
+INSTANTIATE_TEST_SUITE_P(LightLists, WideLightsOnOneSpot, ::testing::Values("clustered", "tiled"),
+                         test::techniqueTestName);
 
 INSTANTIATE_TEST_SUITE_P(EveryTechnique, WorkAtUserSizes, ::testing::ValuesIn(techniqueNames()),
                          test::techniqueTestName);
