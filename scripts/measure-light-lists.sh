@@ -11,7 +11,8 @@
 #        also that build's frames at 1,024, 4,096 and 16,384 lights (OLD_LIGHTS), interleaved
 #        with this build's (e.g. git worktree add /tmp/before 029410a && make -C /tmp/before build)
 #   OLD=... OLD_ONLY=1 OLD_LIGHTS=1024,16384,1048576 scripts/measure-light-lists.sh
-#        that comparison alone
+#        that comparison alone (ROUNDS= rounds, default 2, the builds' order swapped every other
+#        round; each line the frame and its pairs, sort and lighting passes, ms)
 #   LIGHTS=1024,16384 SIZE=640x360 FRAMES=1 scripts/measure-light-lists.sh   a quicker look
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,14 +24,22 @@ source scripts/measure-common.sh
 if [ -n "${OLD:-}" ]; then
   echo "== the build before against this one, interleaved (frame ms, median of $frames)"
   old_lights=${OLD_LIGHTS:-1024,4096,16384}
-  cases=$((2 * $(echo "$old_lights" | tr ',' '\n' | wc -l)))
   # A build from before the display pass (029410a) has no --classic and no display pass to leave out.
   classic() { "$1" bench --help | grep -q -- --classic && echo --classic || true; }
-  for round in 1 2; do
-    for binary in "$OLD" "$ML"; do
+  for round in $(seq "${ROUNDS:-2}"); do
+    # Every other round the other build first, so that a load that changes meets both alike.
+    binaries=("$OLD" "$ML")
+    [ $((round % 2)) = 0 ] && binaries=("$ML" "$OLD")
+    for binary in "${binaries[@]}"; do
       "$binary" bench bench/courtyard.json --techniques clustered,tiled --lights "$old_lights" --size "$size" \
-        --frames "$frames" --warmup 1 $(classic "$binary") | tail -n "$cases" |
-        sed "s|^|round $round $([ "$binary" = "$ML" ] && echo this || echo before): |"
+        --frames "$frames" --warmup 1 $(classic "$binary") --csv out/measure-light-lists-ab.csv >/dev/null
+      python3 - out/measure-light-lists-ab.csv "round $round $([ "$binary" = "$ML" ] && echo this || echo before)" <<'PY'
+import csv, sys
+for row in csv.DictReader(open(sys.argv[1])):
+    passes = {p.split(":")[0]: float(p.split(":")[1]) for p in row["passes"].split(";")}
+    print(f"{sys.argv[2]}: {row['technique']:<9} {int(row['lights']):>9,} lights: frame {float(row['frame_ms_median']):6.1f} ms;"
+          + "".join(f" {name} {passes[name]:.0f}" for name in ("cluster pairs", "pair sort", "lighting") if name in passes))
+PY
     done
   done
   # Start-up with a million lights: a whole render of a tiny image (the lights' sort and upload,
