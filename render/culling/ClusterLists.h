@@ -64,10 +64,11 @@ inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
 inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
 // The most lights the global list holds. Part 0 of a list is walked after the global list, so
-// both are within the loop bound together (ClusterLists.cpp checks), and the sort's rank
-// count walks the list once per light: 4,096 lights that each cover half the screen would
-// cost far more to light than either.
-inline constexpr std::uint32_t kGlobalLightCapacity = 4096;
+// both are within the loop bound together, with the shadow filters (ClusterLists.cpp checks:
+// 4,096 did not fit beside the chunked walk of a part), and the sort's rank count walks the
+// list once per light: 2,048 lights that each cover half the screen cost far more to light
+// than either.
+inline constexpr std::uint32_t kGlobalLightCapacity = 2048;
 // The share of the grid's tiles a light's screen rectangle must cover to be global
 // (docs/techniques.md has the measurements).
 inline constexpr double kGlobalLightGridFraction = 0.5;
