@@ -70,13 +70,7 @@ vec4 globalLightSphere(uint entry)
 // The rest of the global light whose sphere globalLightSphere() fetched.
 GpuLight globalLightRecord(uint entry, vec4 positionRadius)
 {
-    int first = int(entry) * 4;
-    GpuLight light;
-    light.positionRadius = positionRadius;
-    light.intensityExponent = texelFetch(globalLightRecordTexels, first + 1);
-    light.attenuation = texelFetch(globalLightRecordTexels, first + 2);
-    light.spotAxisCosCutoff = texelFetch(globalLightRecordTexels, first + 3);
-    return light;
+    return lightFromTexels(globalLightRecordTexels, int(entry) * 4, positionRadius);
 }
 #else
 layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) readonly buffer ClusterListLights {

@@ -12,6 +12,18 @@ layout(std430, binding = LIGHTS_BUFFER_BINDING) readonly buffer Lights {
     GpuLight lights[];
 };
 
+// A light kept as four RGBA32F texels from `first` of `texels` (the light texels; the global
+// list's records, lib/cluster_lists.glsl), its first texel, positionRadius, fetched already.
+GpuLight lightFromTexels(samplerBuffer texels, int first, vec4 positionRadius)
+{
+    GpuLight light;
+    light.positionRadius = positionRadius;
+    light.intensityExponent = texelFetch(texels, first + 1);
+    light.attenuation = texelFetch(texels, first + 2);
+    light.spotAxisCosCutoff = texelFetch(texels, first + 3);
+    return light;
+}
+
 #ifdef LIGHT_WINDOW_BINDING
 // The batch's lights as a uniform block bound to their range of the same buffer
 // (render/culling/LightBatches.h: light windows), for passes where every pixel walks the batch in
@@ -46,12 +58,7 @@ layout(binding = LIGHT_TEXELS_UNIT) uniform samplerBuffer lightTexels;
 GpuLight batchLight(uint lightIndex)
 {
     int first = int(lightIndex) * 4;
-    GpuLight light;
-    light.positionRadius = texelFetch(lightTexels, first);
-    light.intensityExponent = texelFetch(lightTexels, first + 1);
-    light.attenuation = texelFetch(lightTexels, first + 2);
-    light.spotAxisCosCutoff = texelFetch(lightTexels, first + 3);
-    return light;
+    return lightFromTexels(lightTexels, first, texelFetch(lightTexels, first));
 }
 
 vec4 lightPositionRadius(uint lightIndex)
@@ -62,13 +69,7 @@ vec4 lightPositionRadius(uint lightIndex)
 // The rest of the light whose first texel was fetched already (lightPositionRadius).
 GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
 {
-    int first = int(lightIndex) * 4;
-    GpuLight light;
-    light.positionRadius = positionRadius;
-    light.intensityExponent = texelFetch(lightTexels, first + 1);
-    light.attenuation = texelFetch(lightTexels, first + 2);
-    light.spotAxisCosCutoff = texelFetch(lightTexels, first + 3);
-    return light;
+    return lightFromTexels(lightTexels, int(lightIndex) * 4, positionRadius);
 }
 #else
 GpuLight batchLight(uint lightIndex)
