@@ -13,6 +13,7 @@
 // sums the same way. A light dropped or added twice is a whole light's difference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -149,6 +150,30 @@ TEST_P(GlobalLights, MoreThanTheCapacityAllFallBackToPairs)
 }
 
 INSTANTIATE_TEST_SUITE_P(ListTechniques, GlobalLights, ::testing::Values("tiled", "clustered"));
+
+// The measuring knob MANYLIGHTS_GLOBAL_LIGHT_FRACTION (docs/cli.md) is read like a user's
+// input: a value that is not a number > 0 is one line naming the variable and the value, exit
+// status 1, and the earlier image kept.
+TEST(GlobalLightFraction, ABadValueIsExitOneAndKeepsTheOldImage)
+{
+    const auto dir = scratchDirectory();
+    const std::string image = (dir / "old.png").string();
+    const std::vector<std::string> args = {"render", "-o", image, "--size", "64x36", "--technique", "clustered"};
+    ASSERT_EQ(test::runExecutable(args).exitCode, 0);
+    const auto before = std::filesystem::last_write_time(image);
+    for (const std::string value : {"abc", "0", "-1", "nan", "inf", "0.5x"}) {
+        const test::ProcessResult result = test::runExecutable(args, "MANYLIGHTS_GLOBAL_LIGHT_FRACTION=" + value);
+        EXPECT_EQ(result.exitCode, 1) << value << ": " << result.stderrText;
+        EXPECT_NE(
+            result.stderrText.find("MANYLIGHTS_GLOBAL_LIGHT_FRACTION: expected a number > 0, got '" + value + "'"),
+            std::string::npos)
+            << result.stderrText;
+        EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+        EXPECT_EQ(std::filesystem::last_write_time(image), before) << value;
+    }
+    // A value > 0 is taken (above 1: only unbounded lights would be global).
+    EXPECT_EQ(test::runExecutable(args, "MANYLIGHTS_GLOBAL_LIGHT_FRACTION=2").exitCode, 0);
+}
 
 }  // namespace
 }  // namespace manylights
