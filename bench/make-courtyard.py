@@ -13,7 +13,11 @@ area each light covers stays constant and the average number of lights reaching 
 pixel stays about the same from 256 to 65536 lights. The layer is thinner than the smallest
 range of the sweep (0.41 m at 65536 lights), so even then most lights reach the ground.
 
-The scene is a file in the repository; this script documents how it was made and remakes it
+bench/courtyard-moving.json is the same scene with every light drifting (a Lissajous wander of
+1 m in x and z, docs/scene-format.md "Animation"): with `bench --fps` it measures what moving
+lights cost per frame.
+
+The scenes are files in the repository; this script documents how they were made and remakes them
 (deterministically: fixed seed, Python's own Mersenne Twister). Run it from anywhere:
     python3 bench/make-courtyard.py
 """
@@ -189,10 +193,16 @@ def main():
         },
         "objects": objects,
     }
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "courtyard.json")
+    here = os.path.dirname(os.path.abspath(__file__))
+    path = os.path.join(here, "courtyard.json")
     with open(path, "w") as out:
         out.write(format_scene(scene))
     print(f"wrote {path}: {len(objects)} objects")
+    scene["light_sets"][0]["animation"] = {"drift": {"amplitude": [1.0, 0.0, 1.0]}}
+    path = os.path.join(here, "courtyard-moving.json")
+    with open(path, "w") as out:
+        out.write(format_scene(scene))
+    print(f"wrote {path}: the same with every light drifting")
 
 
 def format_scene(scene):

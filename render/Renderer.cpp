@@ -129,6 +129,8 @@ FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
     profiler_.beginFrame();
     targets_->gbuffer.invalidate();
     FramePasses passes(gpuScene_, *targets_, profiler_);
+    if (gpuScene_.lightPosePending())
+        passes.run({.name = "pose lights"}, [&] { gpuScene_.applyLightPose(); });
     if (desc_.wireframe && view == ViewMode::Final)
         passes.setLitImagePolygonMode(PolygonMode::Lines);
     prepareShadowing(view, passes);

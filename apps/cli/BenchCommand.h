@@ -2,6 +2,7 @@
 // scene and reports frame times and work counts as a table, a CSV and an SVG plot.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct BenchOptions {
     std::vector<ImageSize> sizes{kDefaultImageSize};
     int frames = 5;
     int warmup = 1;
+    // --fps F: frame k of a combination (warm-up frames first, k from 1) is rendered at scene
+    // time k / F, so that what the scene animates moves every frame, and its time counts the
+    // posing (Renderer::setTime) as well as the frame. None: every frame at time 0.
+    std::optional<double> fps;
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
     bool countWork = false;

@@ -197,10 +197,12 @@ void ShadowMaps::ensureArrays(int spotLayers, int cubes)
 void ShadowMaps::updateLocal(FramePasses& passes)
 {
     const GpuScene& scene = passes.scene();
-    const std::vector<Light>& lights = scene.lights();
-    lightCount_ = lights.size();
+    lightCount_ = scene.lightCount();
     shadowedLights_.clear();
+    // The posed lights are asked for only where some may cast shadows: a frame without shadow
+    // lights does not pose a million moving lights on the CPU (render/scene/SceneLights.h).
     if (localBudget_ > 0) {
+        const std::vector<Light>& lights = scene.lights();
         std::vector<ShadowCandidate> candidates;
         candidates.reserve(lights.size());
         for (const Light& light : lights)
@@ -213,7 +215,7 @@ void ShadowMaps::updateLocal(FramePasses& passes)
     std::vector<LocalSlot> kept;
     std::vector<std::size_t> fresh;
     for (std::size_t light : shadowedLights_) {
-        const bool cube = needsCube(lights[light]);
+        const bool cube = needsCube(scene.lights()[light]);
         const auto old = std::find_if(slots_.begin(), slots_.end(),
                                       [&](const LocalSlot& s) { return s.light == light && s.cube == cube; });
         if (old != slots_.end())
@@ -224,7 +226,7 @@ void ShadowMaps::updateLocal(FramePasses& passes)
     for (std::size_t light : fresh) {
         LocalSlot slot;
         slot.light = light;
-        slot.cube = needsCube(lights[light]);
+        slot.cube = needsCube(scene.lights()[light]);
         slot.layer = 0;
         while (std::any_of(kept.begin(), kept.end(),
                            [&](const LocalSlot& s) { return s.cube == slot.cube && s.layer == slot.layer; }))

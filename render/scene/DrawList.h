@@ -23,6 +23,8 @@
 
 namespace manylights {
 
+class SceneLights;
+
 // std430 layout of shaders/lib/instances.glsl: Instance. One per draw item, written each frame.
 struct GpuInstance {
     glm::mat4 model;
@@ -51,8 +53,9 @@ public:
     // Binds the vertex array.
     void bind() const;
     // Poses the items at time t (scene/Animation.h): object transforms, and light markers at
-    // `posedLights` (the lights at t). Call order() and writeInstances() after.
-    void pose(double t, const std::vector<Light>& posedLights);
+    // `lights` posed at t (asked for only where there are markers: posing the lights on the
+    // CPU is work a scene without markers does not need). Call order() and writeInstances() after.
+    void pose(double t, const SceneLights& lights);
     // Opaque surfaces drawn nearest first let what lies behind them fail the depth test before
     // its fragments are shaded (docs/performance.md). Orders the items within each batch of
     // objects and the batches by their view depth from `eye` along `viewAxis`; the caller then

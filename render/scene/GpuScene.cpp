@@ -50,7 +50,7 @@ void GpuScene::setCamera(const Camera& camera)
 void GpuScene::setTime(double t)
 {
     lights_.pose(t);
-    draws_.pose(t, lights_.posed());
+    draws_.pose(t, lights_);
     frame_.setTime(t);
     reorderDraws();
 }

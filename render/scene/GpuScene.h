@@ -78,9 +78,14 @@ public:
     // The camera the frame uniforms are made for; the scene's own until set (the viewer moves it).
     void setCamera(const Camera& camera);
     const Camera& camera() const { return frame_.camera(); }
-    // Poses the scene at time t (scene/Animation.h): object transforms, the light buffer (one
-    // update) and the frame uniforms' time. A pure function of t: no state carries over.
+    // Poses the scene at time t (scene/Animation.h): object transforms, the frame uniforms'
+    // time, and the lights (their buffer at the next applyLightPose). A pure function of t: no
+    // state carries over.
     void setTime(double t);
+    // Whether the lights' buffer has yet to be posed at time(), and poses it on the GPU
+    // (SceneLights::applyPose): the frame's first pass.
+    bool lightPosePending() const { return lights_.posePending(); }
+    void applyLightPose() { lights_.applyPose(); }
     // Switches the ambient, diffuse and specular terms of the lighting on (1) or off (0).
     void setLightingTerms(const glm::vec3& terms) { frame_.setLightingTerms(terms); }
     double time() const { return frame_.time(); }
@@ -105,7 +110,8 @@ public:
     {
         frame_.setShadowing(directionalShadow, ambientOcclusion);
     }
-    // The lights as posed at time() (their animations applied), and as the shaders get them.
+    // The lights as posed at time() (their animations applied), and as the shaders get them:
+    // the first call after a setTime that moved lights poses them on the CPU.
     const std::vector<Light>& lights() const { return lights_.posed(); }
     const std::vector<GpuLight>& packedLights() const { return lights_.packed(); }
     const FrameUniforms& frameUniforms() const { return frame_.uniforms(); }

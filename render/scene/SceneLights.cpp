@@ -1,10 +1,13 @@
 #include "render/scene/SceneLights.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <string>
 
 #include "core/Error.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/Locations.h"
 #include "scene/Animation.h"
 #include "scene/Falloff.h"
 #include "scene/SpatialOrder.h"
@@ -16,6 +19,12 @@ namespace {
 constexpr GLuint kLightsBinding = bindings::LIGHTS_BUFFER_BINDING;
 // Point lights get cos(cutoff) = −2: every direction passes the spot test and S = 1.
 constexpr float kPointLightCosCutoff = -2.0f;
+// shaders/pose_lights.comp's kinds of motion (POSE_ORBIT, POSE_DRIFT) and workgroup size.
+constexpr std::uint32_t kOrbitMotion = 0;
+constexpr std::uint32_t kDriftMotion = 1;
+constexpr GLuint kPoseGroupSize = 64;
+// Workgroups along x before the dispatch goes on along z (GL promises 65,535 along each).
+constexpr GLuint kPoseGroupsPerRow = 32768;
 }  // namespace
 
 static_assert(kLightsPerWindow * sizeof(GpuLight) == kLightWindowBytes);
@@ -37,6 +46,22 @@ GpuLight packLight(const Light& light, float attenuationThreshold)
     return packed;
 }
 
+GpuLightMotion packMotion(const Light& light, std::uint32_t index)
+{
+    ML_ASSERT(light.animation);
+    GpuLightMotion packed{};
+    packed.restPosition = glm::vec4(light.position, std::bit_cast<float>(index));
+    if (const auto* orbit = std::get_if<OrbitAnimation>(&*light.animation)) {
+        packed.settings = glm::vec4(orbit->radius, orbit->degreesPerSecond, orbit->phaseDegrees, 0.0f);
+        packed.periods = glm::vec4(0.0f, 0.0f, 0.0f, std::bit_cast<float>(kOrbitMotion));
+    } else {
+        const DriftAnimation& drift = std::get<DriftAnimation>(*light.animation);
+        packed.settings = glm::vec4(drift.amplitude, drift.phaseDegrees);
+        packed.periods = glm::vec4(drift.period, std::bit_cast<float>(kDriftMotion));
+    }
+    return packed;
+}
+
 namespace {
 
 // The lights in the order of their rest positions along a Morton curve (scene/SpatialOrder.h).
@@ -53,10 +78,6 @@ std::vector<Light> inSpatialOrder(const std::vector<Light>& lights)
     return ordered;
 }
 
-// Runs of animated lights closer than this are uploaded as one range: fewer calls for a few
-// more bytes.
-constexpr std::size_t kUploadRunGap = 64;
-
 }  // namespace
 
 SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver)
@@ -65,20 +86,31 @@ SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThre
       attenuationThreshold_(attenuationThreshold),
       texelsBeforeWindows_(driver.lightTexelsBeforeWindows)
 {
+    // Packed at time 0 on the CPU, uploaded with the lights at rest; the GPU poses the moving
+    // ones from then on.
+    std::vector<GpuLightMotion> motions;
     packed_.reserve(rest_.size());
     for (std::size_t i = 0; i < rest_.size(); ++i) {
-        packed_.push_back(packLight(rest_[i], attenuationThreshold_));
-        if (rest_[i].animation)
+        if (rest_[i].animation) {
             animated_.push_back(i);
+            motions.push_back(packMotion(rest_[i], static_cast<std::uint32_t>(i)));
+            posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, 0.0);
+        }
+        packed_.push_back(packLight(posed_[i], attenuationThreshold_));
     }
-    // Whole windows (bindWindow), so that every window bound is backed by the buffer. Dynamic
-    // storage: pose() rewrites the animated lights' part every frame of an animation.
+    // Whole windows (bindWindow), so that every window bound is backed by the buffer. Written
+    // once from here; pose_lights.comp writes the moving lights' positions.
     const std::size_t windows = std::max<std::size_t>(1, (packed_.size() + kLightsPerWindow - 1) / kLightsPerWindow);
     buffer_ = gl::Buffer("lights", windows * kLightWindowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     if (!packed_.empty())
         buffer_.update(0, packed_.size() * sizeof(GpuLight), packed_.data());
+    if (!motions.empty()) {
+        motions_ = gl::Buffer::fromSpan<GpuLightMotion>("light motions", motions, 0);
+        poseProgram_ = gl::Program(
+            "pose lights", {{GL_COMPUTE_SHADER, "pose_lights.comp"}},
+            {{"POSE_ORBIT", std::to_string(kOrbitMotion) + "u"}, {"POSE_DRIFT", std::to_string(kDriftMotion) + "u"}});
+    }
     setTexels(true);
-    pose(0.0);
 }
 
 void SceneLights::pose(double t)
@@ -86,21 +118,40 @@ void SceneLights::pose(double t)
     // Lights at rest were packed and uploaded once: a frame pays for the lights that move.
     if (animated_.empty() || posedAt_ == t)
         return;
-    for (std::size_t i : animated_) {
-        posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, t);
-        packed_[i] = packLight(posed_[i], attenuationThreshold_);
-    }
-    for (std::size_t run = 0; run < animated_.size();) {
-        std::size_t end = run + 1;
-        while (end < animated_.size() && animated_[end] - animated_[end - 1] <= kUploadRunGap)
-            ++end;
-        const std::size_t first = animated_[run];
-        const std::size_t count = animated_[end - 1] + 1 - first;
-        buffer_.update(first * sizeof(GpuLight), count * sizeof(GpuLight), &packed_[first]);
-        run = end;
-    }
     posedAt_ = t;
     ++version_;
+}
+
+void SceneLights::applyPose()
+{
+    if (!posePending())
+        return;
+    const auto count = static_cast<GLuint>(animated_.size());
+    const GLuint groups = (count + kPoseGroupSize - 1) / kPoseGroupSize;
+    const GLuint groupsX = std::min(groups, kPoseGroupsPerRow);
+    buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding);
+    motions_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_MOTIONS_BUFFER_BINDING);
+    poseProgram_.set(locations::POSE_TIME_LOCATION, posedAt_);
+    poseProgram_.set(locations::POSE_MOTION_COUNT_LOCATION, count);
+    poseProgram_.use();
+    glDispatchCompute(groupsX, 1, (groups + groupsX - 1) / groupsX);
+    // Every later pass reads the lights in one of these ways: as storage, as texels, as a
+    // uniform window, or back on the CPU (tests).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    gpuPosedAt_ = posedAt_;
+}
+
+void SceneLights::poseOnCpu() const
+{
+    if (cpuPosedAt_ == posedAt_)
+        return;
+    // A motion moves the light and nothing else: its radius and the rest stay as packed.
+    for (std::size_t i : animated_) {
+        posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, posedAt_);
+        packed_[i].positionRadius = glm::vec4(posed_[i].position, packed_[i].positionRadius.w);
+    }
+    cpuPosedAt_ = posedAt_;
 }
 
 void SceneLights::bind() const

@@ -3,15 +3,21 @@
 // (render/culling/LightBatches.h), with a version counter for passes that cache what they derive
 // from the lights. Made from the expanded light list alone (scene/LightSets.h): no other
 // route to the lights.
+//
+// Moving lights are posed on the GPU (shaders/pose_lights.comp): their motions are uploaded
+// once, and a frame whose time moved them runs one dispatch that writes their positions. The
+// CPU poses them too, but only when something on the CPU asks for the posed lights (light
+// markers, shadow selection, the CPU-culled techniques): a frame of tiled or clustered with a
+// million moving lights costs the CPU nothing per light.
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "gl/Buffer.h"
+#include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/DriverProfile.h"
 #include "render/culling/LightBatches.h"
@@ -32,6 +38,18 @@ static_assert(sizeof(GpuLight) == 64);
 // Packs a light for the GPU with its culling radius (lightRadius).
 GpuLight packLight(const Light& light, float attenuationThreshold);
 
+// std430 layout of shaders/pose_lights.comp: LightMotion. An animated light's motion, with its
+// rest position and its index among the lights.
+struct GpuLightMotion {
+    glm::vec4 restPosition;  // w: the light's index, as bits
+    glm::vec4 settings;
+    glm::vec4 periods;  // w: the kind, as bits
+};
+static_assert(sizeof(GpuLightMotion) == 48);
+
+// Packs light `index`'s motion (it has an animation) for the GPU.
+GpuLightMotion packMotion(const Light& light, std::uint32_t index);
+
 class SceneLights {
 public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights),
@@ -43,18 +61,34 @@ public:
     // clustered"). Every index below is into that order.
     SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver);
 
-    // Poses the lights at time t (scene/Animation.h): repacks and uploads the animated lights
-    // only (a run of them per buffer update), and nothing when none animates or t is the last
-    // pose's. The version changes only when something moved.
+    // Poses the lights at time t (scene/Animation.h): notes the time; the GPU pose runs at
+    // applyPose(), the CPU's when posed() or packed() is next asked for. Nothing when none
+    // animates or t is the last pose's. The version changes only when something moved.
     void pose(double t);
+    // Whether a pose() has moved lights that the buffer does not have yet.
+    bool posePending() const { return gpuPosedAt_ != posedAt_; }
+    // Writes the animated lights' positions at the last pose() into the buffer, on the GPU (one
+    // dispatch), and makes them visible to every later read of the lights; nothing when
+    // !posePending(). Renderer runs it as the frame's first pass.
+    void applyPose();
 
     std::size_t count() const { return rest_.size(); }
     float attenuationThreshold() const { return attenuationThreshold_; }
-    // The lights at rest, and as posed by pose() (their animations applied).
+    // The lights at rest, and as posed by pose() (their animations applied; posed on the CPU
+    // at the first call after a pose). The GPU's positions agree with these to within the
+    // float sine's rounding (shaders/pose_lights.comp).
     const std::vector<Light>& rest() const { return rest_; }
-    const std::vector<Light>& posed() const { return posed_; }
+    const std::vector<Light>& posed() const
+    {
+        poseOnCpu();
+        return posed_;
+    }
     // The posed lights as the shaders get them.
-    const std::vector<GpuLight>& packed() const { return packed_; }
+    const std::vector<GpuLight>& packed() const
+    {
+        poseOnCpu();
+        return packed_;
+    }
     // Changes whenever the lights move, for passes that cache data derived from them.
     std::uint64_t version() const { return version_; }
 
@@ -90,11 +124,20 @@ public:
     }
 
 private:
-    std::vector<Light> rest_;   // their animations move them
-    std::vector<Light> posed_;  // at the last pose()
-    std::vector<GpuLight> packed_;
+    void poseOnCpu() const;
+
+    std::vector<Light> rest_;           // their animations move them
+    mutable std::vector<Light> posed_;  // at cpuPosedAt_
+    mutable std::vector<GpuLight> packed_;
     std::vector<std::size_t> animated_;  // the lights with an animation, in order
-    std::optional<double> posedAt_;      // the time of the last pose that moved anything
+    // The time of the last pose, and the times the CPU's copies and the buffer were posed at
+    // (all three 0 from the constructor, which packs and uploads the lights as at t = 0).
+    double posedAt_ = 0.0;
+    mutable double cpuPosedAt_ = 0.0;
+    double gpuPosedAt_ = 0.0;
+    gl::Buffer motions_;  // the animated lights' GpuLightMotion, uploaded once
+    gl::Program poseProgram_;
+    gl::BufferTexture motionTexels_;  // shaders/pose_lights.comp, where some light moves
     float attenuationThreshold_;
     bool texelsBeforeWindows_;
     std::uint64_t version_ = 0;

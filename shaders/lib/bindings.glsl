@@ -15,6 +15,7 @@ const int LIGHTS_BUFFER_BINDING = 0;                  // lib/lights.glsl Lights
 const int LUMINANCE_RESULT_BUFFER_BINDING = 0;        // log_luminance.comp Result
 const int TILE_QUADS_BUFFER_BINDING = 1;              // tiled_quads.vert TileQuads
 const int VOLUME_LIGHTS_BUFFER_BINDING = 1;           // volume.vert VolumeLights
+const int LIGHT_MOTIONS_BUFFER_BINDING = 1;           // pose_lights.comp LightMotions
 const int CLUSTER_TILE_DEPTHS_BUFFER_BINDING = 2;     // lib/clusters.glsl ClusterTileDepths
 const int CLUSTER_TILE_SLICES_BUFFER_BINDING = 3;     // lib/clusters.glsl ClusterTileSlices
 const int TILE_LIGHTS_BUFFER_BINDING = 3;             // tiled_quads.frag TileLights

@@ -25,6 +25,10 @@ const int INSTANCE_BASE_LOCATION = 33;
 // shadow_depth.vert (render/effects/ShadowMaps.cpp).
 const int LIGHT_VIEW_PROJECTION_LOCATION = 20;
 
+// pose_lights.comp (render/scene/SceneLights.cpp).
+const int POSE_TIME_LOCATION = 0;
+const int POSE_MOTION_COUNT_LOCATION = 1;
+
 // tiled_quads.vert (render/techniques/TiledQuadsTechnique.cpp).
 const int TILE_FIRST_QUAD_LOCATION = 0;
 const int TILES_X_LOCATION = 1;

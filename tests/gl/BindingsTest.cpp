@@ -50,6 +50,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::StorageBlock, "Result"}, LUMINANCE_RESULT_BUFFER_BINDING},
         {{Kind::StorageBlock, "TileQuads"}, TILE_QUADS_BUFFER_BINDING},
         {{Kind::StorageBlock, "VolumeLights"}, VOLUME_LIGHTS_BUFFER_BINDING},
+        {{Kind::StorageBlock, "LightMotions"}, LIGHT_MOTIONS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ClusterTileDepths"}, CLUSTER_TILE_DEPTHS_BUFFER_BINDING},
         {{Kind::StorageBlock, "ClusterTileSlices"}, CLUSTER_TILE_SLICES_BUFFER_BINDING},
         {{Kind::StorageBlock, "TileLights"}, TILE_LIGHTS_BUFFER_BINDING},
@@ -215,7 +216,9 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     pane.material = scene.materials.size() - 1;
     pane.transform = glm::translate(pane.transform, glm::vec3(0.0f, 0.5f, 0.0f));
     scene.objects.push_back(pane);
-    const std::vector<Light> lights = expandLights(scene);
+    std::vector<Light> lights = expandLights(scene);
+    // A moving light, for the pass that poses lights on the GPU (render/scene/SceneLights.h).
+    lights.front().animation = OrbitAnimation{};
 
     RendererDesc desc{
         .width = 96,
@@ -224,6 +227,7 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
         .display = DisplaySettings{
             .exposure = 1.0f, .toneCurve = ToneCurve::Aces, .srgb = true, .antialiasing = Antialiasing::Fxaa}};
     Renderer renderer(scene, lights, desc);
+    renderer.setTime(1.0);
     // The renderer keeps every technique variant it made: their programs stay alive to the end.
     // Without light texels the lights come from the other sources (windows, storage buffer).
     for (const bool count : {false, true}) {

@@ -1,5 +1,6 @@
 // The lights on the GPU (render/scene/SceneLights.h): kept in Morton order of their rest positions,
-// packed and uploaded once when at rest, and only the animated ones posed and uploaded again.
+// packed and uploaded once, and the animated ones posed again on the GPU (shaders/pose_lights.comp),
+// where they must agree with the CPU's pose (scene/Animation.h).
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -43,6 +44,37 @@ void expectSameLights(const std::vector<GpuLight>& actual, const std::vector<Gpu
     }
 }
 
+// The GPU's pose against the CPU's: everything but the position the same bit for bit, and the
+// position within the float sine's rounding. Both reduce the angle in double and take the
+// sine and cosine in float; llvmpipe's and the C library's float sines differ by a few ulp
+// (~2.4e-7 each), times the offset's reach (orbit radius or drift amplitude, here at most
+// 3 m), plus the ulp of the sum (~2e-6 at 30 m): 1e-5 m is four times that, and a hundred
+// times below what a wrong pose gives (a sign or a phase off moves a light by centimetres or more).
+// Returns how many positions differ from the rest position.
+int expectPosedAsOnTheCpu(const std::vector<GpuLight>& gpu, const SceneLights& lights)
+{
+    constexpr float kTolerance = 1e-5f;
+    const std::vector<GpuLight>& cpu = lights.packed();
+    EXPECT_EQ(gpu.size(), cpu.size());
+    int moved = 0;
+    int mismatches = 0;
+    for (std::size_t i = 0; i < std::min(gpu.size(), cpu.size()) && mismatches < 10; ++i) {
+        const glm::vec3 g(gpu[i].positionRadius);
+        const glm::vec3 c(cpu[i].positionRadius);
+        const bool close = glm::all(glm::lessThanEqual(glm::abs(g - c), glm::vec3(kTolerance)));
+        const bool rest = gpu[i].positionRadius.w == cpu[i].positionRadius.w &&
+                          gpu[i].intensityExponent == cpu[i].intensityExponent &&
+                          gpu[i].attenuation == cpu[i].attenuation &&
+                          gpu[i].spotAxisCosCutoff == cpu[i].spotAxisCosCutoff;
+        EXPECT_TRUE(close) << "light " << i << ": GPU (" << g.x << ", " << g.y << ", " << g.z << "), CPU (" << c.x
+                           << ", " << c.y << ", " << c.z << ")";
+        EXPECT_TRUE(rest) << "light " << i << ": more than its position changed";
+        mismatches += close && rest ? 0 : 1;
+        moved += g != lights.rest()[i].position ? 1 : 0;
+    }
+    return moved;
+}
+
 TEST_F(SceneLightsTest, LightsAreKeptInMortonOrderOfTheirRestPositions)
 {
     // Drawn in an order that jumps across the box; the ranges tell them apart.
@@ -71,8 +103,7 @@ TEST_F(SceneLightsTest, LightsAtRestAreNotPosedAgain)
 
 TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
 {
-    // Many still lights with a few orbiting ones among them, far apart in the order, so that the
-    // upload goes in several runs.
+    // Many still lights with a few orbiting ones among them, far apart in the order.
     std::vector<Light> drawn;
     for (int i = 0; i < 600; ++i) {
         Light light = pointLight({float(i % 30), 0.0f, float(i / 30)}, 0.5f + 0.001f * float(i));
@@ -82,14 +113,20 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
     }
     SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
     const std::vector<GpuLight> atZero = lights.packed();
+    expectSameLights(lightsOnTheGpu(lights), atZero);
     const auto version = lights.version();
     lights.pose(1.0);  // a quarter turn
     EXPECT_NE(lights.version(), version);
+    EXPECT_TRUE(lights.posePending());
+    expectSameLights(lightsOnTheGpu(lights), atZero);  // until the frame poses them
+    lights.applyPose();
+    EXPECT_FALSE(lights.posePending());
     int moved = 0;
     for (std::size_t i = 0; i < lights.count(); ++i) {
         const Light& rest = lights.rest()[i];
         const glm::vec3 expected = animatedPosition(rest.position, rest.animation, 1.0);
         EXPECT_EQ(glm::vec3(lights.packed()[i].positionRadius), expected) << "light " << i;
+        EXPECT_EQ(lights.posed()[i].position, expected) << "light " << i;
         if (rest.animation) {
             ++moved;
             EXPECT_NE(lights.packed()[i].positionRadius, atZero[i].positionRadius);
@@ -98,10 +135,53 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
         }
     }
     EXPECT_EQ(moved, 7);
-    expectSameLights(lightsOnTheGpu(lights), lights.packed());
+    EXPECT_EQ(expectPosedAsOnTheCpu(lightsOnTheGpu(lights), lights), 7);
     const auto posedVersion = lights.version();
     lights.pose(1.0);
     EXPECT_EQ(lights.version(), posedVersion) << "the same time poses nothing again";
+    EXPECT_FALSE(lights.posePending());
+}
+
+// Every motion and setting the scene format has, at times where a float angle would be far
+// off (t = 12,345.678 s: 30 degrees/s is 370,370 degrees), both ways round and with phases.
+TEST_F(SceneLightsTest, TheGpuPosesEveryMotionAsTheCpuDoes)
+{
+    std::vector<Light> drawn;
+    for (int i = 0; i < 1000; ++i) {
+        Light light = pointLight({float(i % 40) - 20.0f, 0.5f + float(i % 3), float(i / 40) - 12.0f}, 1.0f);
+        const float phase = 137.5f * float(i);
+        if (i % 2 == 0)
+            light.animation = OrbitAnimation{.radius = 0.5f + float(i % 5) * 0.5f,
+                                             .degreesPerSecond = i % 4 == 0 ? 30.0f : -45.0f,
+                                             .phaseDegrees = phase};
+        else if (i % 7 != 0)
+            light.animation = DriftAnimation{.amplitude = {1.0f + float(i % 3), 0.25f, 3.0f},
+                                             .period = {7.0f, 5.0f + float(i % 4), 11.0f},
+                                             .phaseDegrees = phase};
+        drawn.push_back(light);
+    }
+    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    for (const double t : {0.25, 3.0, 12345.678, 0.0}) {
+        lights.pose(t);
+        lights.applyPose();
+        const int moved = expectPosedAsOnTheCpu(lightsOnTheGpu(lights), lights);
+        EXPECT_GT(moved, 800) << "at t = " << t;
+    }
+}
+
+// Past 32,768 workgroups of 64 the dispatch goes on along z: the last light is posed too.
+TEST_F(SceneLightsTest, TheGpuPosesLightsPastOneRowOfWorkgroups)
+{
+    constexpr std::size_t kLights = 32768 * 64 + 100;
+    std::vector<Light> drawn(kLights, pointLight({0, 0, 0}, 1.0f));
+    for (std::size_t i = 0; i < kLights; ++i) {
+        drawn[i].position = {float(i % 2048) * 0.01f, 0.0f, float(i / 2048) * 0.01f};
+        drawn[i].animation = OrbitAnimation{.radius = 0.001f * float(1 + i % 7)};
+    }
+    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    lights.pose(2.0);
+    lights.applyPose();
+    EXPECT_EQ(expectPosedAsOnTheCpu(lightsOnTheGpu(lights), lights), static_cast<int>(kLights));
 }
 
 }  // namespace

@@ -144,6 +144,26 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+// `--fps`: each frame at a new time, so the default scene's moving lights are posed on the GPU
+// in every timed frame (its `pose lights` pass); without it every frame is at time 0, posed
+// once when the renderer was made, and no frame has the pass.
+TEST(Bench, FpsPosesTheMovingLightsInEveryFrame)
+{
+    const auto dir = scratchDirectory();
+    for (const bool animate : {false, true}) {
+        const auto csv = dir / (animate ? "moving.csv" : "still.csv");
+        std::vector<std::string> args = {"bench", "--techniques", "clustered", "--size", "64x36",     "--frames",
+                                         "2",     "--warmup",     "1",         "--csv",  csv.string()};
+        if (animate)
+            args.insert(args.end(), {"--fps", "10"});
+        const test::ProcessResult result = runExecutable(args);
+        ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+        const std::vector<std::string> rows = lines(readText(csv));
+        ASSERT_EQ(rows.size(), 2u);
+        EXPECT_EQ(occurrences(rows[1], "pose lights:"), animate ? 1u : 0u) << rows[1];
+    }
+}
+
 // A job array's tasks (docs/cli.md, "On a cluster"): three shards of a four-case sweep, each
 // its own process, time each case once; only shard 1's CSV has the header, so the CSVs
 // concatenate into one valid CSV with the whole sweep's rows.
@@ -222,6 +242,8 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"malformed_size", {"--size", "64x36,big"}, "--size"},
                       UsageCase{"zero_frames", {"--frames", "0"}, "--frames"},
                       UsageCase{"negative_warmup", {"--warmup", "-1"}, "--warmup"},
+                      UsageCase{"fps_zero", {"--fps", "0"}, "--fps"},
+                      UsageCase{"fps_not_a_number", {"--fps", "nan"}, "--fps"},
                       UsageCase{"plot_not_svg", {"--plot", "plot.png"}, "--plot"},
                       UsageCase{"shard_zero", {"--shard", "0/3"}, "--shard"},
                       UsageCase{"shard_past_the_count", {"--shard", "4/3"}, "--shard"},
