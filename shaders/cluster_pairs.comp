@@ -47,6 +47,7 @@
 #include "lib/culling.glsl"
 #include "lib/cluster_culling.glsl"
 #include "lib/cluster_list_status.glsl"
+#include "lib/listed_dispatch.glsl"
 #ifdef WIDE_LIGHTS
 #include "lib/light_tiles.glsl"
 #else
@@ -106,27 +107,6 @@ uint tileOfRect(uvec2 first, uvec2 size, uint k, uvec2 grid)
     return (first.y + k / size.x) * grid.x + first.x + k % size.x;
 }
 #endif
-
-// The indirect dispatches over listed lights (the wide lights; the narrow lights with pairs)
-// have their workgroups along x up to GROUPS_PER_ROW and then along z: a dispatch may have no
-// more than 65,535 along x.
-const uint GROUPS_PER_ROW = 32768u;
-
-// The workgroup of a dispatch listed that way (the first of z's row, the first after it...).
-uint listedGroup()
-{
-    return gl_WorkGroupID.z * GROUPS_PER_ROW + gl_WorkGroupID.x;
-}
-
-// What the item at `index` of a list adds to the dispatch over it, `itemsPerGroup` items a
-// workgroup: (1, _) where it opens a workgroup of the first row, (_, 1) where it opens a row.
-uvec2 listedDispatchGrowth(uint index, uint itemsPerGroup)
-{
-    if (index % itemsPerGroup != 0u)
-        return uvec2(0u);
-    uint group = index / itemsPerGroup;
-    return uvec2(group < GROUPS_PER_ROW ? 1u : 0u, group % GROUPS_PER_ROW == 0u ? 1u : 0u);
-}
 
 // The tiles the light's sphere covers, first to last; false when it reaches none (wholly
 // before the near plane, or off screen). Both runs call it on the same light with the same

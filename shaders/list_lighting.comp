@@ -6,7 +6,7 @@
 //   list.
 // - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
-//   dispatch: the CPU does not know how many); pixels whose cluster's list is shorter than the
+//   dispatch: the CPU does not know how many; lib/listed_dispatch.glsl); pixels whose cluster's list is shorter than the
 //   part store nothing, the others add the part to the lit image.
 // Loop iterations: CLUSTER_LIST_PART, and GLOBAL_LIGHT_CAPACITY more with GLOBAL_LIGHT_LIST (the
 // global list, which only EVERY_TILE walks).
@@ -16,7 +16,11 @@
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/clusters.glsl"
+// The status before lib/cluster_lists.glsl, which includes it only when counting work: the
+// later parts read the number of tiles listed.
+#include "lib/cluster_list_status.glsl"
 #include "lib/cluster_lists.glsl"
+#include "lib/listed_dispatch.glsl"
 
 layout(local_size_x = CLUSTER_TILE_SIZE, local_size_y = CLUSTER_TILE_SIZE) in;
 layout(location = CLUSTER_LIST_PART_LOCATION) uniform uint part;
@@ -31,7 +35,10 @@ void main()
 #ifdef EVERY_TILE
     uint tile = gl_WorkGroupID.y * clusterTileGrid().x + gl_WorkGroupID.x;
 #else
-    uint tile = longListTile[gl_WorkGroupID.x];
+    uint listed = listedGroup();
+    if (listed >= longTiles)
+        return;
+    uint tile = longListTile[listed];
 #endif
     uvec2 lo;
     uvec2 hi;

@@ -202,7 +202,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
 {
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     sceneTexels_ = scene.indexedLightSource() == LightSource::TexelBuffer;
-    lightCount_ = lightCount;
+    lightMemoryBytes_ = scene.lightMemoryBytes();
     const std::uint32_t clusters = grid.clusterCount();
     if (capacity_ == 0)
         plan(clusters * kFirstPlanPairsPerCell);
@@ -436,14 +436,13 @@ std::size_t ClusterLists::memoryBytes() const
 
 std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) const
 {
-    const std::size_t lightBytes = std::size_t{lightCount_} * sizeof(GpuLight);
     return {{"clusters", static_cast<double>(grid.clusterCount())},
             {"cluster_pairs", static_cast<double>(status_.pairsNeeded)},
             {"longest_cluster_list", static_cast<double>(status_.longestList)},
             {"global_lights", static_cast<double>(globalLights())},
             {"cluster_list_visits", static_cast<double>(status_.listVisits)},
             {"cluster_rebuilds", static_cast<double>(rebuilds_)},
-            {"gpu_memory_bytes", static_cast<double>(lightBytes + memoryBytes() + grid.memoryBytes())}};
+            {"gpu_memory_bytes", static_cast<double>(lightMemoryBytes_ + memoryBytes() + grid.memoryBytes())}};
 }
 
 void buildListsOverSurfaces(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, ClusterGrid& grid,

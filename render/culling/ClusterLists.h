@@ -126,12 +126,13 @@ public:
     // The --stats counters of a technique lit from these lists over `grid`, of the last frame:
     // clusters (the grid's size), cluster_pairs, longest_cluster_list, global_lights,
     // cluster_list_visits (when counting work), cluster_rebuilds (frames redone so far) and
-    // gpu_memory_bytes (the lights, the lists, the global list and the grid).
+    // gpu_memory_bytes (the lights and their motions, the lists, the global list and the grid).
     std::vector<TechniqueCounter> counters(const ClusterGrid& grid) const;
 
 private:
     struct Status {  // lib/cluster_list_status.glsl
-        std::uint32_t longTileGroups[3] = {0, 1, 1};
+        // The long-list tiles' workgroups: x up to 32,768, then z (lib/listed_dispatch.glsl).
+        std::uint32_t longTileGroups[3] = {0, 1, 0};
         std::uint32_t pairsNeeded = 0;
         std::uint32_t longestList = 0;
         std::uint32_t wideLightGroups[3] = {0, 1, 0};  // y: the bands
@@ -142,6 +143,7 @@ private:
         std::uint32_t pairedLightGroups[3] = {0, 1, 0};
         std::uint32_t pairedLights = 0;
         std::uint32_t globalLightCandidates = 0;
+        std::uint32_t longTiles = 0;
     };
 
     void plan(std::uint32_t pairs);
@@ -164,7 +166,7 @@ private:
     std::uint32_t capacity_ = 0;    // pairs the storage holds
     std::uint32_t laterParts_ = 0;  // planned
     std::uint64_t rebuilds_ = 0;
-    std::uint32_t lightCount_ = 0;  // of the last frame
+    std::size_t lightMemoryBytes_ = 0;  // the scene's lights' (GpuScene::lightMemoryBytes), last frame
     Status status_;
     bool built_ = false;             // a frame was built whose status fitted() has not read
     bool globalListPlanned_ = true;  // for the next frame built (hasGlobalList)

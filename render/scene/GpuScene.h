@@ -101,6 +101,8 @@ public:
     static Mesh lightMarkerMesh() { return DrawList::lightMarkerMesh(); }
 
     std::size_t lightCount() const { return lights_.count(); }
+    // The GPU memory the lights hold (SceneLights::memoryBytes).
+    std::size_t lightMemoryBytes() const { return lights_.memoryBytes(); }
     // The kinds of light the scene has and what the frame's shadowing reads, which the lighting
     // programs are specialised for.
     LightingFeatures lightingFeatures() const;

@@ -91,6 +91,8 @@ public:
     }
     // Changes whenever the lights move, for passes that cache data derived from them.
     std::uint64_t version() const { return version_; }
+    // GPU memory held: the light buffer (whole windows) and the moving lights' motions.
+    std::size_t memoryBytes() const { return buffer_.size() + motions_.size(); }
 
     // Binds the storage buffer and, where there are some, the light texels.
     void bind() const;

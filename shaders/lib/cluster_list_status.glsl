@@ -5,7 +5,9 @@
 // The global lights (lib/cluster_lists.glsl) are the lights cluster_pairs.comp found covering
 // most of the grid: at most GLOBAL_LIGHT_CAPACITY of them, all or none (ClusterLists.h says why).
 layout(std430, binding = CLUSTER_LIST_STATUS_BUFFER_BINDING) buffer ClusterListStatus {
-    uint longTileGroups[3];  // x: tiles holding a list longer than a part (list_lighting.comp)
+    // The tiles holding a list longer than a part, a workgroup each (x, then z past 32,768 in
+    // x) of list_lighting.comp; their count is longTiles.
+    uint longTileGroups[3];
     uint pairsNeeded;        // (cluster, light) pairs of the frame: the list storage it needs
     uint longestList;        // the longest cluster list
     // The lights covering more tiles than one invocation takes, a workgroup each (x, then z past
@@ -18,6 +20,7 @@ layout(std430, binding = CLUSTER_LIST_STATUS_BUFFER_BINDING) buffer ClusterListS
     uint pairedLightGroups[3];
     uint pairedLights;  // the narrow lights with pairs
     uint globalLightCandidates;  // lights covering enough of the grid to be global, all of them
+    uint longTiles;              // the tiles cluster_long_lists.comp listed
 };
 
 #ifdef GLOBAL_LIGHT_CAPACITY

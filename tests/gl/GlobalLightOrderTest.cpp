@@ -24,8 +24,8 @@ namespace {
 
 class GlobalLightOrderTest : public GlContextTest {};
 
-// lib/cluster_list_status.glsl: ClusterListStatus, whose last uint counts the candidates.
-constexpr std::size_t kStatusUints = 15;
+// lib/cluster_list_status.glsl: ClusterListStatus, whose 15th uint counts the candidates.
+constexpr std::size_t kStatusUints = 16;
 constexpr std::size_t kCandidatesIndex = 14;
 constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
 

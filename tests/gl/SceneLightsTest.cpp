@@ -142,6 +142,26 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
     EXPECT_FALSE(lights.posePending());
 }
 
+// The memory said in --stats (gpu_memory_bytes): the light buffer in whole windows, and a
+// motion of 48 bytes for each moving light only.
+TEST_F(SceneLightsTest, MemoryIsTheBufferAndTheMovingLightsMotions)
+{
+    std::vector<Light> drawn;
+    for (int i = 0; i < 1500; ++i) {
+        Light light = pointLight({float(i % 40), 0.0f, float(i / 40)}, 1.0f);
+        if (i % 3 == 0)
+            light.animation = DriftAnimation{};
+        drawn.push_back(light);
+    }
+    const SceneLights moving(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    const std::size_t windows = (1500 + kLightsPerWindow - 1) / kLightsPerWindow;
+    EXPECT_EQ(moving.memoryBytes(), windows * kLightWindowBytes + 500 * sizeof(GpuLightMotion));
+    for (Light& light : drawn)
+        light.animation.reset();
+    const SceneLights still(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    EXPECT_EQ(still.memoryBytes(), windows * kLightWindowBytes);
+}
+
 // Every motion and setting the scene format has, at times where a float angle would be far
 // off (t = 12,345.678 s: 30 degrees/s is 370,370 degrees), both ways round and with phases.
 TEST_F(SceneLightsTest, TheGpuPosesEveryMotionAsTheCpuDoes)
