@@ -6,8 +6,9 @@
 //   list.
 // - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
-//   dispatch: the CPU does not know how many; lib/listed_dispatch.glsl); pixels whose cluster's list is shorter than the
-//   part store nothing, the others add the part to the lit image.
+//   dispatch: the CPU does not know how many; lib/listed_dispatch.glsl); pixels whose
+//   cluster's list is shorter than the part store nothing, the others add the part to the
+//   lit image.
 // Loop iterations: CLUSTER_LIST_PART, and GLOBAL_LIGHT_CAPACITY more with GLOBAL_LIGHT_LIST (the
 // global list, which only EVERY_TILE walks).
 #include "lib/bindings.glsl"
