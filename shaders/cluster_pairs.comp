@@ -209,9 +209,8 @@ void main()
 #else
 void main()
 {
-    // Lights along x and z (a dispatch has at most 65,535 workgroups along x).
-    uint lightIndex = (gl_WorkGroupID.z * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x +
-                      gl_LocalInvocationID.x;
+    // Lights in rows of workgroups (render/programs/WorkgroupRows.h).
+    uint lightIndex = listedGroup() * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (lightIndex >= lightCount)
         return;
     uvec2 grid = clusterTileGrid();

@@ -11,10 +11,11 @@
 // a visible fraction of a degree), then the sine and cosine are taken in float. The two agree
 // to within the float sine's rounding (tests/gl/SceneLightsTest.cpp).
 //
-// Workgroups go on along z past the x limit (x has at most 65,535), so the dispatch covers
-// the format's 16,777,216 lights. No loop.
+// Workgroups in rows (render/programs/WorkgroupRows.h: x up to 32,768, then z), so the
+// dispatch covers the format's 16,777,216 lights. No loop.
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
+#include "lib/listed_dispatch.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -64,8 +65,7 @@ vec3 driftOffset(LightMotion m)
 
 void main()
 {
-    uint index = (gl_WorkGroupID.z * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x
-               + gl_LocalInvocationID.x;
+    uint index = listedGroup() * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (index >= motionCount)
         return;
     LightMotion m = motion[index];

@@ -1,5 +1,6 @@
 #include "render/culling/ClusterLists.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/WorkgroupRows.h"
 
 #include <algorithm>
 #include <bit>
@@ -235,12 +236,9 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
         globalLightCandidates_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING);
     };
-    // The counting run's narrow lights along x and z of its dispatch (x has at most 65,535
-    // workgroups); the writing run's are indirect, as many as the counting run found pairs for,
-    // and the wide lights' too, a workgroup each per band of rows (lib/light_tiles.glsl).
-    const GLuint lightGroups = std::max<GLuint>(groupsFor(lightCount), 1);
-    const GLuint groupsX = std::min<GLuint>(lightGroups, 32768);
-    const GLuint groupsZ = (lightGroups + groupsX - 1) / groupsX;
+    // The counting run's narrow lights in rows of workgroups (render/programs/WorkgroupRows.h);
+    // the writing run's are indirect, as many as the counting run found pairs for, and the wide
+    // lights' too, a workgroup each per band of rows (lib/light_tiles.glsl).
     ML_ASSERT(grid.gridWidth() >= 1 && grid.gridWidth() <= kTilesPerBand);
     const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / grid.gridWidth());
     const auto bands = (static_cast<std::uint32_t>(grid.gridHeight()) + rowsPerBand - 1) / rowsPerBand;
@@ -268,7 +266,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
                 statusBuffer_.bindAsDispatchIndirect();
                 glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, pairedLightGroups)));
             } else {
-                glDispatchCompute(groupsX, 1, groupsZ);
+                dispatchComputeInRows(groupsFor(lightCount));
             }
         });
         passes.run(indirectPass, [&] {

@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "render/programs/Bindings.h"
 #include "render/programs/Locations.h"
+#include "render/programs/WorkgroupRows.h"
 #include "scene/Animation.h"
 #include "scene/Falloff.h"
 #include "scene/SpatialOrder.h"
@@ -23,8 +24,6 @@ constexpr float kPointLightCosCutoff = -2.0f;
 constexpr std::uint32_t kOrbitMotion = 0;
 constexpr std::uint32_t kDriftMotion = 1;
 constexpr GLuint kPoseGroupSize = 64;
-// Workgroups along x before the dispatch goes on along z (GL promises 65,535 along each).
-constexpr GLuint kPoseGroupsPerRow = 32768;
 }  // namespace
 
 static_assert(kLightsPerWindow * sizeof(GpuLight) == kLightWindowBytes);
@@ -127,14 +126,12 @@ void SceneLights::applyPose()
     if (!posePending())
         return;
     const auto count = static_cast<GLuint>(animated_.size());
-    const GLuint groups = (count + kPoseGroupSize - 1) / kPoseGroupSize;
-    const GLuint groupsX = std::min(groups, kPoseGroupsPerRow);
     buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding);
     motions_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::LIGHT_MOTIONS_BUFFER_BINDING);
     poseProgram_.set(locations::POSE_TIME_LOCATION, posedAt_);
     poseProgram_.set(locations::POSE_MOTION_COUNT_LOCATION, count);
     poseProgram_.use();
-    glDispatchCompute(groupsX, 1, (groups + groupsX - 1) / groupsX);
+    dispatchComputeInRows((count + kPoseGroupSize - 1) / kPoseGroupSize);
     // Every later pass reads the lights in one of these ways: as storage, as texels, as a
     // uniform window, or back on the CPU (tests).
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |

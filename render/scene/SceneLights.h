@@ -137,9 +137,8 @@ private:
     double posedAt_ = 0.0;
     mutable double cpuPosedAt_ = 0.0;
     double gpuPosedAt_ = 0.0;
-    gl::Buffer motions_;  // the animated lights' GpuLightMotion, uploaded once
-    gl::Program poseProgram_;
-    gl::BufferTexture motionTexels_;  // shaders/pose_lights.comp, where some light moves
+    gl::Buffer motions_;       // the animated lights' GpuLightMotion, uploaded once
+    gl::Program poseProgram_;  // shaders/pose_lights.comp, where some light moves
     float attenuationThreshold_;
     bool texelsBeforeWindows_;
     std::uint64_t version_ = 0;

@@ -1,8 +1,10 @@
-// Indirect dispatches over a list the GPU makes (the wide lights and the narrow lights with
-// pairs of cluster_pairs.comp, the tiles with long lists of cluster_long_lists.comp): the pass
-// that lists the items also grows the dispatch's workgroup counts, along x up to
-// GROUPS_PER_ROW and then along z, since a dispatch may have no more than 65,535 workgroups
-// along x (GL's promised minimum) and the lists can be longer.
+// Dispatches in rows of workgroups, along x up to GROUPS_PER_ROW and then along z, since a
+// dispatch may have no more than 65,535 workgroups along x (GL's promised minimum) and a
+// million lights need more. The CPU sizes some (render/programs/WorkgroupRows.h, whose
+// kWorkgroupsPerRow is this number: every light of cluster_pairs.comp's counting run, every
+// moving light of pose_lights.comp); the others are indirect dispatches over a list the GPU
+// makes (the wide lights and the narrow lights with pairs of cluster_pairs.comp, the tiles with
+// long lists of cluster_long_lists.comp), whose listing pass grows the counts.
 const uint GROUPS_PER_ROW = 32768u;
 
 // The workgroup of a dispatch listed that way (the first of z's row, the first after it...).
