@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <set>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "GlContextTest.h"
 #include "gl/Program.h"
+#include "render/programs/Bindings.h"
 #include "render/scene/GpuScene.h"
 #include "scene/DefaultScene.h"
 #include "scene/LightSets.h"
@@ -131,6 +134,51 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     EXPECT_EQ(drawn, (objectItems + 1) / 2);
     EXPECT_LT(halfPrimitives, objectTriangles);
     EXPECT_GT(halfPrimitives, 0u);
+}
+
+// The light markers' instance records follow their lights at any time: the CPU poses the
+// lights for them (SceneLights::posed) though the GPU poses the lights' buffer, so a marker
+// left at its rest position or at an earlier time would show here. Exact: a marker's model
+// is a translation to its light's position and a scale.
+TEST_F(InstancingTest, LightMarkersFollowTheirMovingLights)
+{
+    const Scene scene = makeDefaultScene();
+    GpuScene gpuScene(scene, expandLights(scene), driverChoices(DriverProfile::Auto));
+    const LightingProgram programs("geometry pass",
+                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
+    const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {
+        return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
+    };
+    gpuScene.setViewport(64, 64);
+    const auto byCoordinates = [](const glm::vec3& a, const glm::vec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    std::vector<glm::vec3> atZero;
+    for (const double t : {0.0, 2.5, 7.0}) {
+        gpuScene.setTime(t);
+        gpuScene.bind();
+        primitivesGenerated([&] { gpuScene.drawObjects(programFor); });  // binds the instance records
+        GLint buffer = 0;
+        glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, bindings::INSTANCES_BUFFER_BINDING, &buffer);
+        const GpuScene::DrawBatch markers = gpuScene.batches().back();
+        std::vector<GpuInstance> records(markers.itemCount);
+        glGetNamedBufferSubData(static_cast<GLuint>(buffer),
+                                static_cast<GLintptr>(markers.firstItem * sizeof(GpuInstance)),
+                                static_cast<GLsizeiptr>(records.size() * sizeof(GpuInstance)), records.data());
+        std::vector<glm::vec3> markerPositions;
+        for (const GpuInstance& record : records)
+            markerPositions.emplace_back(record.model[3]);
+        std::vector<glm::vec3> lightPositions;
+        for (const Light& light : gpuScene.lights())
+            lightPositions.push_back(light.position);
+        std::sort(markerPositions.begin(), markerPositions.end(), byCoordinates);
+        std::sort(lightPositions.begin(), lightPositions.end(), byCoordinates);
+        EXPECT_EQ(markerPositions, lightPositions) << "at t = " << t;
+        if (t == 0.0)
+            atZero = markerPositions;
+        else
+            EXPECT_NE(markerPositions, atZero) << "the default scene's lights move: at t = " << t;
+    }
 }
 
 }  // namespace
