@@ -36,6 +36,13 @@
 // light's pairs share a cluster and its slots follow from its index: sorted by cluster, each
 // cluster's lights follow the lights' order, whatever order the invocations ran in.
 //
+// With CLUSTER_MASKS (a frame of at most ClusterLists.h's kMaskedListLights lights) the pairs
+// are bits instead: each sets the light's bit in its cluster's mask (and, where the masks are
+// summarised, the mask word's bit in the cluster's summary) and counts the cluster's pair, and cluster_mask_lists.comp turns the
+// masks into the same lists as the sort would, in the lights' order. Then no light needs a
+// slot: the narrow lights set their bits in the counting run, which has no writing run after
+// it, and the wide lights in the wide program's writing run.
+//
 // Loop iterations per invocation: CLUSTER_PAIR_NARROW_TILES tiles, or at most 1,024 (the bands
 // of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
 // about 9,200 at most, within render/culling/LightBatches.h's bound.
@@ -89,6 +96,28 @@ layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) writeonly buffer Pa
 layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) buffer ClusterListCounts {
     uint clusterPairCount[];  // each cluster's pairs (its list's length)
 };
+#ifdef CLUSTER_MASKS
+// The words of each cluster's mask: a bit per light (lib/clusters.glsl's masks, over every
+// light of the frame instead of a batch).
+layout(location = CLUSTER_MASK_WORDS_LOCATION) uniform uint maskWords;
+
+// Sets the light's bit in the masks of the clusters `slices` (bit k: slice k) of `tile`.
+void setTileBits(uint slices, uint tile, uint lightIndex)
+{
+    uint word = lightIndex / 32u;
+    uint bit = 1u << (lightIndex % 32u);
+    uint summaryWords = (maskWords + 31u) / 32u;
+    while (slices != 0u) {
+        uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
+        slices &= slices - 1u;
+        // The first bit set in a word marks the word in the summary, where the masks have one
+        // (more than 32 words: cluster_mask_lists.comp says why).
+        if (atomicOr(clusterLightMasks[cluster * maskWords + word], bit) == 0u && maskWords > 32u)
+            atomicOr(clusterMaskSummaries[cluster * summaryWords + word / 32u], 1u << (word % 32u));
+        atomicAdd(clusterPairCount[cluster], 1u);
+    }
+}
+#endif
 #ifndef WIDE_LIGHTS
 // Per light, what the counting run found, for the writing run: x the rectangle of at most
 // 2 x 2 tiles (first tile's x in bits 0-14 and y in 15-29, one more column in bit 30, one more
@@ -148,6 +177,10 @@ uint tilePairs(ViewLight light, uint lightIndex, uint tile, uint slot)
     uint pairs = uint(bitCount(slices));
     if (emitPairs == 0u || pairs == 0u)
         return pairs;
+#ifdef CLUSTER_MASKS
+    setTileBits(slices, tile, lightIndex);
+    return pairs;
+#endif
 #ifdef WIDE_LIGHTS
     // A wide light's invocations share its slots: one atomic per tile, not per pair.
     slot = lightPairOffset[lightIndex] + atomicAdd(lightPairCursor[lightIndex], pairs);
@@ -240,6 +273,12 @@ void main()
             atomicAdd(wideLightGroups[2], 1u);
         return;
     }
+#ifdef CLUSTER_MASKS
+    for (uint k = 0u; k < size.x * size.y; ++k) {
+        uint tile = tileOfRect(first, size, k, grid);
+        setTileBits(lightSlicesOfTile(light, tile), tile, lightIndex);
+    }
+#else
     // One walk over the tiles for every narrow light, the slices of the first four kept as
     // they come (the record's, when the light covers at most 2 x 2 tiles): one copy of the
     // tile test in the program, not one for the recorded lights and one for the others.
@@ -265,5 +304,6 @@ void main()
         atomicAdd(pairedLightGroups[0], 1u);
     if (growth.y != 0u)
         atomicAdd(pairedLightGroups[2], 1u);
+#endif
 }
 #endif

@@ -83,11 +83,10 @@ void main()
                 uint above = uint(clamp(floor(coordinate + 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 occupied |= (1u << below) | (1u << above);
 #ifdef CLUSTER_SURFACE_BOUNDS
-                lo[below] = min(lo[below], surface.xyz);
-                hi[below] = max(hi[below], surface.xyz);
-                if (above != below) {
-                    lo[above] = min(lo[above], surface.xyz);
-                    hi[above] = max(hi[above], surface.xyz);
+                for (int k = 0; k < CLUSTER_SLICES; ++k) {
+                    bool inSlice = uint(k) == below || uint(k) == above;
+                    lo[k] = inSlice ? min(lo[k], surface.xyz) : lo[k];
+                    hi[k] = inSlice ? max(hi[k], surface.xyz) : hi[k];
                 }
 #endif
             }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "core/Error.h"
@@ -28,6 +29,8 @@ constexpr int kPairCapacityLocation = 54;
 constexpr int kSortShiftLocation = 55;
 constexpr int kSortChunksLocation = 56;
 constexpr int kSortCapacityLocation = 57;
+constexpr int kMaskWordsLocation = 61;
+constexpr int kMaskClustersLocation = 62;
 constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // The most tiles one invocation of cluster_pairs.comp walks for a light; lights covering
 // more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64 measured alike
@@ -50,9 +53,10 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // lights), so that a single image is rarely rendered twice.
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
-// A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run
-// (emit false) or the writing run, reading the grid as texels or from storage buffers.
-gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit, bool gridTexels)
+// A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run,
+// the writing run or the masks' run (the counting run's for the narrow lights, the writing
+// run's for the wide), reading the grid as texels or from storage buffers.
+gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit, bool masks, bool gridTexels)
 {
     gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
     if (gridTexels)
@@ -64,10 +68,22 @@ gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit,
     defines.emplace_back("CLUSTER_PAIR_GLOBAL_TILES_LOCATION", std::to_string(kPairGlobalTilesLocation));
     defines.emplace_back("CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION", std::to_string(kPairGlobalPlannedLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
+    defines.emplace_back("CLUSTER_MASK_WORDS_LOCATION", std::to_string(kMaskWordsLocation));
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
+    if (masks)
+        defines.emplace_back("CLUSTER_MASKS", "1");
     return gl::Program(wide ? "cluster pairs of wide lights" : "cluster pairs",
                        {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, defines);
+}
+
+gl::Program makeMaskListProgram(const ClusterGridShape& shape)
+{
+    gl::Defines defines = clusterGridDefines({}, shape);
+    defines.emplace_back("CLUSTER_MASK_WORDS_LOCATION", std::to_string(kMaskWordsLocation));
+    defines.emplace_back("CLUSTER_MASK_CLUSTERS_LOCATION", std::to_string(kMaskClustersLocation));
+    defines.emplace_back("CLUSTER_MASK_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
+    return gl::Program("cluster mask lists", {{GL_COMPUTE_SHADER, "cluster_mask_lists.comp"}}, defines);
 }
 
 enum class SortPass { Count, Scatter, ScatterGather };
@@ -113,6 +129,21 @@ double globalLightGridFraction()
     return fraction;
 }
 
+// kMaskedListLights, or for measuring and testing MANYLIGHTS_MASKED_LIST_LIGHTS, a whole number
+// (0: every frame sorts its pairs).
+std::uint32_t maskedListLights()
+{
+    const char* text = std::getenv("MANYLIGHTS_MASKED_LIST_LIGHTS");
+    if (text == nullptr)
+        return kMaskedListLights;
+    char* end = nullptr;
+    const unsigned long value = std::strtoul(text, &end, 10);
+    if (end == text || *end != '\0' || text[0] == '-' || value > std::numeric_limits<std::uint32_t>::max())
+        throw Error(std::string("MANYLIGHTS_MASKED_LIST_LIGHTS: expected a whole number of lights, got '") + text +
+                    "'");
+    return static_cast<std::uint32_t>(value);
+}
+
 // The tiles a light's screen rectangle must cover to be global in a grid of `tiles`: at least one.
 std::uint32_t globalLightTiles(std::uint32_t tiles)
 {
@@ -144,6 +175,8 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList
 
 ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
     : shape_(shape),
+      maskedListLights_(maskedListLights()),
+      maskLists_(makeMaskListProgram(shape)),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
       sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
@@ -191,12 +224,46 @@ void ClusterLists::plan(std::uint32_t pairs)
         texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
-const gl::Program& ClusterLists::pairProgram(bool wide, bool emit, bool gridTexels)
+const gl::Program& ClusterLists::pairProgram(bool wide, PairRun run, bool gridTexels)
 {
-    std::optional<gl::Program>& program = pairPrograms_[wide][emit][gridTexels];
-    if (!program)
-        program.emplace(makePairProgram(shape_, wide, emit, gridTexels));
+    std::optional<gl::Program>& program = pairPrograms_[wide][static_cast<int>(run)][gridTexels];
+    if (!program) {
+        // The narrow lights set their bits as they are counted; the wide lights in a run after.
+        const bool emit = run == PairRun::Write || (run == PairRun::Mask && wide);
+        program.emplace(makePairProgram(shape_, wide, emit, run == PairRun::Mask, gridTexels));
+    }
     return *program;
+}
+
+std::uint32_t ClusterLists::maskWordsFor(std::uint32_t lightCount, std::uint32_t clusterCount) const
+{
+    if (lightCount == 0 || lightCount > maskedListLights_)
+        return 0;
+    const std::uint32_t words = (lightCount + 31) / 32;
+    const std::size_t bytes = std::size_t{clusterCount} * (words + (words + 31) / 32) * sizeof(std::uint32_t);
+    return bytes <= kMaskedListBudgetBytes ? words : 0;
+}
+
+void ClusterLists::ensureMasks(std::uint32_t clusterCount, std::uint32_t words)
+{
+    if (words == 0) {
+        // A frame past the masks' lights: their memory goes back (--stats counts what is held).
+        masks_ = gl::Buffer();
+        maskSummaries_ = gl::Buffer();
+        return;
+    }
+    const std::size_t maskBytes = std::size_t{clusterCount} * words * sizeof(std::uint32_t);
+    const std::size_t summaryBytes = std::size_t{clusterCount} * ((words + 31) / 32) * sizeof(std::uint32_t);
+    // Zero when made; cluster_mask_lists.comp leaves them zero after every frame, whatever
+    // layout (words a cluster) the next frame has.
+    if (!masks_ || masks_.size() < maskBytes) {
+        masks_ = gl::Buffer("cluster list masks", maskBytes, nullptr, 0);
+        masks_.clearToZero(maskBytes);
+    }
+    if (!maskSummaries_ || maskSummaries_.size() < summaryBytes) {
+        maskSummaries_ = gl::Buffer("cluster list mask summaries", summaryBytes, nullptr, 0);
+        maskSummaries_.clearToZero(summaryBytes);
+    }
 }
 
 void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const ClusterGrid& grid)
@@ -208,6 +275,8 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
     if (capacity_ == 0)
         plan(clusters * kFirstPlanPairsPerCell);
     const auto tiles = static_cast<std::uint32_t>(grid.gridWidth() * grid.gridHeight());
+    const std::uint32_t maskWords = maskWordsFor(lightCount, clusters);
+    masked_ = maskWords > 0;
     ensure(clusterCounts_, "cluster list counts", clusters);
     ensure(clusterFirsts_, "cluster list firsts", clusters);
     ensure(longListTiles_, "cluster long list tiles", tiles);
@@ -235,6 +304,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
         longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
         globalLightCandidates_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING);
+        if (masked_) {
+            masks_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING);
+            maskSummaries_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING);
+        }
     };
     // The counting run's narrow lights in rows of workgroups (render/programs/WorkgroupRows.h);
     // the writing run's are indirect, as many as the counting run found pairs for, and the wide
@@ -251,16 +324,19 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
                             .storage = Resource::LightGrid,
                             .indirect = Resource::LightGrid,
                             .writes = Resource::LightGrid};
-    const auto runPairs = [&](bool emit) {
+    const auto runPairs = [&](PairRun run) {
+        const bool emit = run == PairRun::Write;
         passes.run(emit ? indirectPass : pairPass, [&] {
             bindAll();
-            const gl::Program& narrow = pairProgram(false, emit, gridTexels);
+            const gl::Program& narrow = pairProgram(false, run, gridTexels);
             narrow.set(kPairLightCountLocation, lightCount);
             narrow.set(kPairCapacityLocation, capacity_);
             if (!emit) {
                 narrow.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
                 narrow.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
             }
+            if (run == PairRun::Mask)
+                narrow.set(kMaskWordsLocation, maskWords);
             narrow.use();
             if (emit) {
                 statusBuffer_.bindAsDispatchIndirect();
@@ -271,9 +347,11 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         });
         passes.run(indirectPass, [&] {
             bindAll();
-            const gl::Program& wide = pairProgram(true, emit, gridTexels);
+            const gl::Program& wide = pairProgram(true, run, gridTexels);
             wide.set(kPairCapacityLocation, capacity_);
             wide.set(kRowsPerBandLocation, rowsPerBand);
+            if (run == PairRun::Mask)
+                wide.set(kMaskWordsLocation, maskWords);
             wide.use();
             statusBuffer_.bindAsDispatchIndirect();
             glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
@@ -287,12 +365,16 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         lightPairOffsets_.clearToZero(bytesOf(std::max(lightCount, 1u)));
         lightPairCursors_.clearToZero(bytesOf(std::max(lightCount, 1u)));
         clusterCounts_.clearToZero(bytesOf(clusters));
+        ensureMasks(clusters, maskWords);
     });
-    if (lightCount > 0) {
-        runPairs(false);
-        scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount,
-                  std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)});
-        runPairs(true);
+    const auto pairsNeeded = std::pair{&statusBuffer_, static_cast<std::uint32_t>(offsetof(Status, pairsNeeded) / 4)};
+    if (masked_) {
+        // The counting run sets the narrow lights' bits; the wide lights' run after it.
+        runPairs(PairRun::Mask);
+    } else if (lightCount > 0) {
+        runPairs(PairRun::Count);
+        scan_.run(passes, "cluster pairs", lightPairOffsets_, lightCount, pairsNeeded);
+        runPairs(PairRun::Write);
     }
     // Also without lights: it writes the list's length, which the lighting reads.
     if (globalListPlanned_)
@@ -314,11 +396,31 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
                 .transfers = Resource::LightGrid,
                 .writes = Resource::LightGrid},
                [&] { clusterCounts_.copyTo(clusterFirsts_, bytesOf(clusters)); });
-    scan_.run(passes, "cluster lists", clusterFirsts_, clusters);
+    // Where the pairs were bits, their total is the lists' (no scan of the lights' counts gave it).
+    scan_.run(passes, "cluster lists", clusterFirsts_, clusters, masked_ ? std::optional(pairsNeeded) : std::nullopt);
     sorted_ = 0;
-    if (lightCount > 0)
+    if (masked_)
+        listMasks(passes, clusters, maskWords);
+    else if (lightCount > 0)
         sortPairs(passes, clusters);
     built_ = true;
+}
+
+void ClusterLists::listMasks(FramePasses& passes, std::uint32_t clusterCount, std::uint32_t words)
+{
+    passes.run(listPass("mask lists"), [&] {
+        masks_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIGHT_MASKS_BUFFER_BINDING);
+        maskSummaries_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_MASK_SUMMARIES_BUFFER_BINDING);
+        clusterFirsts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_FIRSTS_BUFFER_BINDING);
+        clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
+        lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
+        spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
+        maskLists_.set(kMaskWordsLocation, words);
+        maskLists_.set(kMaskClustersLocation, clusterCount);
+        maskLists_.set(kPairCapacityLocation, capacity_);
+        maskLists_.use();
+        dispatchComputeInRows(groupsFor(clusterCount));
+    });
 }
 
 void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
@@ -425,9 +527,9 @@ std::size_t ClusterLists::memoryBytes() const
 {
     std::size_t bytes = scan_.memoryBytes() + statusBuffer_.size();
     for (const gl::Buffer* buffer :
-         {&lightPairOffsets_, &lightPairCursors_, &wideLights_, &pairedLights_, &lightTileRecords_, &keys_[0],
-          &keys_[1], &lights_[0], &lights_[1], &spheres_, &clusterCounts_, &clusterFirsts_, &longListTiles_,
-          &histogram_, &globalLightCandidates_, &globalLights_, &globalLightRecords_})
+         {&masks_, &maskSummaries_, &lightPairOffsets_, &lightPairCursors_, &wideLights_, &pairedLights_,
+          &lightTileRecords_, &keys_[0], &keys_[1], &lights_[0], &lights_[1], &spheres_, &clusterCounts_,
+          &clusterFirsts_, &longListTiles_, &histogram_, &globalLightCandidates_, &globalLights_, &globalLightRecords_})
         bytes += buffer->size();
     return bytes;
 }
@@ -440,6 +542,7 @@ std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) co
             {"global_lights", static_cast<double>(globalLights())},
             {"cluster_list_visits", static_cast<double>(status_.listVisits)},
             {"cluster_rebuilds", static_cast<double>(rebuilds_)},
+            {"cluster_lists_from_masks", masked_ ? 1.0 : 0.0},
             {"gpu_memory_bytes", static_cast<double>(lightMemoryBytes_ + memoryBytes() + grid.memoryBytes())}};
 }
 

@@ -18,6 +18,15 @@
 //    puts each cluster's lights together, in the lights' order: the sum over a pixel's lights
 //    runs in one order on every run, so the image is a function of the scene alone. Its last
 //    digit also copies each pair's light sphere beside it, for the lighting's reach test.
+// A frame of at most kMaskedListLights lights (and masks within kMaskedListBudgetBytes) sorts
+// nothing: steps 1 and 3 set each pair as the light's bit in its cluster's mask instead (the
+// narrow lights in the counting run, which then needs no writing run, nor step 2), and after
+// step 5 cluster_mask_lists.comp walks each cluster's mask in bit order into its list: the
+// same lists, in the same order, as the sort makes. The sort costs what the pairs are (the
+// courtyard has 200,000 to 230,000 at 1280x720 from 1,024 to 16,384 lights: 10 ms on
+// llvmpipe, four digits of 15-bit keys); the masks cost a bit per light per cluster, which at
+// 1,024 lights is 32 words a cluster (docs/techniques.md has the measurements).
+//
 // Sorted pairs rather than bit masks over light batches (the grid's other user, the
 // transparency pass, keeps masks): a mask costs a bit per light for every cluster, so a frame
 // of a million lights needed 128 batches, each a mask clear, an assignment and a lighting pass
@@ -78,6 +87,14 @@ inline constexpr double kGlobalLightGridFraction = 0.5;
 // the global list (ClusterLists::hasGlobalList).
 gl::Defines clusterListDefines(gl::Defines defines, bool texels = false, bool globalList = false);
 
+// The most lights whose lists are built from bit masks (above) rather than sorted, where the
+// masks of every cluster take at most kMaskedListBudgetBytes (a frame of 8,192 lights at
+// 1280x720 in clustered's grid: 29.5 MB). MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists
+// are made, sets another number for measuring (scripts/measure-masked-lists.sh) and testing:
+// 0 sorts every frame's pairs.
+inline constexpr std::uint32_t kMaskedListLights = 8192;
+inline constexpr std::size_t kMaskedListBudgetBytes = std::size_t{64} << 20;
+
 // The shape of the clustered technique's grid (docs/techniques.md has the measurements).
 inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 8, .surfaceBounds = true};
 
@@ -119,13 +136,16 @@ public:
     // List entries the lighting walked (all pixels, all parts, the global list's too), when
     // counting work.
     std::uint32_t listVisits() const { return status_.listVisits; }
+    // Whether the frame built last made its lists from bit masks (kMaskedListLights).
+    bool masked() const { return masked_; }
     // The lights of the last frame's global list (0 where it had none or the candidates were too many).
     std::uint32_t globalLights() const { return globalLightsOfFrame_; }
     // The GPU memory of the lists and their culling structures.
     std::size_t memoryBytes() const;
     // The --stats counters of a technique lit from these lists over `grid`, of the last frame:
     // clusters (the grid's size), cluster_pairs, longest_cluster_list, global_lights,
-    // cluster_list_visits (when counting work), cluster_rebuilds (frames redone so far) and
+    // cluster_list_visits (when counting work), cluster_rebuilds (frames redone so far),
+    // cluster_lists_from_masks (1 where the last frame's lists were made from bit masks) and
     // gpu_memory_bytes (the lights and their motions, the lists, the global list and the grid).
     std::vector<TechniqueCounter> counters(const ClusterGrid& grid) const;
 
@@ -146,15 +166,26 @@ private:
         std::uint32_t longTiles = 0;
     };
 
+    // What a program of cluster_pairs.comp does with the pairs it finds: counts them, writes
+    // them to their slots, or sets them in the masks (and counts each cluster's).
+    enum class PairRun { Count, Write, Mask };
+
     void plan(std::uint32_t pairs);
+    // The mask words of each cluster for `lightCount` lights, or 0 where the frame's pairs are
+    // sorted instead (kMaskedListLights).
+    std::uint32_t maskWordsFor(std::uint32_t lightCount, std::uint32_t clusterCount) const;
+    void ensureMasks(std::uint32_t clusterCount, std::uint32_t words);
     void sortPairs(FramePasses& passes, std::uint32_t clusterCount);
+    void listMasks(FramePasses& passes, std::uint32_t clusterCount, std::uint32_t words);
     void bindGlobalLights() const;
 
-    // cluster_pairs.comp's programs, [wide][writing run][grid as texels], made when first used.
-    const gl::Program& pairProgram(bool wide, bool emit, bool gridTexels);
+    // cluster_pairs.comp's programs, [wide][run][grid as texels], made when first used.
+    const gl::Program& pairProgram(bool wide, PairRun run, bool gridTexels);
 
     ClusterGridShape shape_;
-    std::optional<gl::Program> pairPrograms_[2][2][2];
+    std::uint32_t maskedListLights_;  // kMaskedListLights or MANYLIGHTS_MASKED_LIST_LIGHTS
+    std::optional<gl::Program> pairPrograms_[2][3][2];
+    gl::Program maskLists_;
     gl::Program longLists_;
     gl::Program sortCount_;
     gl::Program sortScatter_;
@@ -171,6 +202,7 @@ private:
     bool built_ = false;             // a frame was built whose status fitted() has not read
     bool globalListPlanned_ = true;  // for the next frame built (hasGlobalList)
     bool globalListOfBuild_ = true;  // of the frame built last, whose status fitted() reads
+    bool masked_ = false;            // the frame built last made its lists from masks
     std::uint32_t globalLightsOfFrame_ = 0;
 
     gl::Buffer lightPairOffsets_;
@@ -191,6 +223,11 @@ private:
     gl::Buffer longListTiles_;
     gl::Buffer histogram_;
     gl::Buffer statusBuffer_;
+    // Each cluster's bit mask over the frame's lights and its summary (a bit per mask word
+    // holding a light), where the frame is masked. All zero between frames:
+    // cluster_mask_lists.comp clears what it reads.
+    gl::Buffer masks_;
+    gl::Buffer maskSummaries_;
     gl::Buffer globalLightCandidates_;  // kGlobalLightCapacity lights, in any order
     gl::Buffer globalLights_;           // in the lights' order
     gl::Buffer globalLightRecords_;     // their GpuLight records, beside them

@@ -151,28 +151,43 @@ TEST_P(GlobalLights, MoreThanTheCapacityAllFallBackToPairs)
 
 INSTANTIATE_TEST_SUITE_P(ListTechniques, GlobalLights, ::testing::Values("tiled", "clustered"));
 
-// The measuring knob MANYLIGHTS_GLOBAL_LIGHT_FRACTION (docs/cli.md) is read like a user's
-// input: a value that is not a number > 0 is one line naming the variable and the value, exit
-// status 1, and the earlier image kept.
-TEST(GlobalLightFraction, ABadValueIsExitOneAndKeepsTheOldImage)
+// The measuring knobs of the lists (docs/cli.md) are read like a user's input: a bad value of
+// `variable` is one line naming the variable, `expected` and the value, exit status 1, and the
+// earlier image kept; each of `good` is taken.
+void expectKnobChecked(const std::string& variable, const std::vector<std::string>& bad, const std::string& expected,
+                       const std::vector<std::string>& good)
 {
     const auto dir = scratchDirectory();
     const std::string image = (dir / "old.png").string();
-    const std::vector<std::string> args = {"render", "-o", image, "--size", "64x36", "--technique", "clustered"};
-    ASSERT_EQ(test::runExecutable(args).exitCode, 0);
-    const auto before = std::filesystem::last_write_time(image);
-    for (const std::string value : {"abc", "0", "-1", "nan", "inf", "0.5x"}) {
-        const test::ProcessResult result = test::runExecutable(args, "MANYLIGHTS_GLOBAL_LIGHT_FRACTION=" + value);
-        EXPECT_EQ(result.exitCode, 1) << value << ": " << result.stderrText;
-        EXPECT_NE(
-            result.stderrText.find("MANYLIGHTS_GLOBAL_LIGHT_FRACTION: expected a number > 0, got '" + value + "'"),
-            std::string::npos)
-            << result.stderrText;
-        EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
-        EXPECT_EQ(std::filesystem::last_write_time(image), before) << value;
+    for (const std::string technique : {"clustered", "tiled"}) {
+        const std::vector<std::string> args = {"render", "-o", image, "--size", "64x36", "--technique", technique};
+        ASSERT_EQ(test::runExecutable(args).exitCode, 0);
+        const auto before = std::filesystem::last_write_time(image);
+        for (const std::string& value : bad) {
+            const test::ProcessResult result = test::runExecutable(args, variable + "=" + value);
+            EXPECT_EQ(result.exitCode, 1) << value << ": " << result.stderrText;
+            EXPECT_NE(result.stderrText.find(variable + ": " + expected + ", got '" + value + "'"), std::string::npos)
+                << result.stderrText;
+            EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+            EXPECT_EQ(std::filesystem::last_write_time(image), before) << value;
+        }
+        for (const std::string& value : good)
+            EXPECT_EQ(test::runExecutable(args, variable + "=" + value).exitCode, 0) << variable << "=" << value;
     }
-    // A value > 0 is taken (above 1: only unbounded lights would be global).
-    EXPECT_EQ(test::runExecutable(args, "MANYLIGHTS_GLOBAL_LIGHT_FRACTION=2").exitCode, 0);
+}
+
+// A number > 0 (above 1: only unbounded lights would be global).
+TEST(GlobalLightFraction, ABadValueIsExitOneAndKeepsTheOldImage)
+{
+    expectKnobChecked("MANYLIGHTS_GLOBAL_LIGHT_FRACTION", {"abc", "0", "-1", "nan", "inf", "0.5x"},
+                      "expected a number > 0", {"0.25", "2"});
+}
+
+// A whole number of lights, 0 included (every frame sorts its pairs; render/culling/ClusterLists.h).
+TEST(MaskedListLights, ABadValueIsExitOneAndKeepsTheOldImage)
+{
+    expectKnobChecked("MANYLIGHTS_MASKED_LIST_LIGHTS", {"abc", "-1", "1.5", "12x", "", "99999999999"},
+                      "expected a whole number of lights", {"0", "16384"});
 }
 
 }  // namespace

@@ -1,0 +1,81 @@
+#version 450 core
+// Clustered, once per frame of at most kMaskedListLights lights (render/culling/ClusterLists.h),
+// in place of the pair sort: each cluster's mask (a bit per light, set by cluster_pairs.comp
+// compiled with CLUSTER_MASKS) becomes its list, from the first entry the scan of the
+// clusters' counts gave it, the lights in their order (bit order), each light's sphere beside
+// it: the very lists the sort makes. An invocation per cluster, in rows of workgroups
+// (render/programs/WorkgroupRows.h).
+//
+// It also clears what it read, the words its summary marks and the summary, so that the
+// masks are all zero for the next frame without a clear of the whole buffer (a frame of 8,192
+// lights at 1920x1080 would clear 67 MB; most clusters' masks hold a few bits). Every set bit
+// is in a marked word (a word's first bit marks it), so no bit survives the frame, whatever
+// the capacity of the lists.
+//
+// Loop iterations: the summary's words, at most kMaskedListLights / 1,024, plus the marked
+// words, at most kMaskedListLights / 32, plus the cluster's lights, at most kMaskedListLights:
+// 8,456 for 8,192 lights, within render/culling/LightBatches.h's bound.
+#include "lib/bindings.glsl"
+#include "lib/frame.glsl"
+#include "lib/lights.glsl"
+#include "lib/clusters.glsl"
+#include "lib/listed_dispatch.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(location = CLUSTER_MASK_WORDS_LOCATION) uniform uint maskWords;
+layout(location = CLUSTER_MASK_CLUSTERS_LOCATION) uniform uint clusterCount;
+layout(location = CLUSTER_MASK_CAPACITY_LOCATION) uniform uint pairCapacity;
+
+layout(std430, binding = CLUSTER_LIST_FIRSTS_BUFFER_BINDING) readonly buffer ClusterListFirsts {
+    uint clusterListFirst[];
+};
+layout(std430, binding = CLUSTER_LIST_LIGHTS_BUFFER_BINDING) writeonly buffer ClusterListLights {
+    uint clusterListLight[];
+};
+layout(std430, binding = CLUSTER_LIST_SPHERES_BUFFER_BINDING) writeonly buffer ClusterListSpheres {
+    vec4 clusterListSphere[];
+};
+
+layout(std430, binding = CLUSTER_LIST_COUNTS_BUFFER_BINDING) readonly buffer ClusterListCounts {
+    uint clusterListCount[];
+};
+
+void main()
+{
+    uint cluster = listedGroup() * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (cluster >= clusterCount)
+        return;
+    uint entry = clusterListFirst[cluster];
+    uint end = entry + clusterListCount[cluster];
+    bool summarised = maskWords > 32u;
+    uint summaryWords = (maskWords + 31u) / 32u;
+    for (uint s = 0u; s < summaryWords && entry < end; ++s) {
+        uint marked = ~0u;
+        if (summarised) {
+            marked = clusterMaskSummaries[cluster * summaryWords + s];
+            clusterMaskSummaries[cluster * summaryWords + s] = 0u;
+        } else if (maskWords < 32u) {
+            marked = (1u << maskWords) - 1u;
+        }
+        while (marked != 0u && entry < end) {
+            uint word = s * 32u + uint(findLSB(marked));
+            marked &= marked - 1u;
+            uint bits = clusterLightMasks[cluster * maskWords + word];
+            if (bits == 0u)
+                continue;
+            clusterLightMasks[cluster * maskWords + word] = 0u;
+            while (bits != 0u) {
+                uint lightIndex = word * 32u + uint(findLSB(bits));
+                bits &= bits - 1u;
+                // Past the storage the frame was planned with, the CPU redoes the frame
+                // (pairsNeeded, from the scan, counted every pair).
+                if (entry < pairCapacity) {
+                    clusterListLight[entry] = lightIndex;
+                    clusterListSphere[entry] = lights[lightIndex].positionRadius;
+                }
+                ++entry;
+            }
+        }
+    }
+}

@@ -1,0 +1,142 @@
+// The light lists of tiled and clustered built from bit masks (render/culling/ClusterLists.h:
+// frames of at most kMaskedListLights lights) against the same lists built by the pair sort
+// (MANYLIGHTS_MASKED_LIST_LIGHTS=0). Both paths must give the same lists in the same order, so
+// the images must be the same bytes, with no tolerance: the lighting adds the same lights in
+// the same order. The light counts cover each shape of the masks: fewer than 32 words a cluster,
+// exactly 32 (the most without a summary), 33 (a summary of two words) and a few thousand. The
+// lights drift, and each renderer draws several times in turn: a bit left in a mask by one frame
+// would put a light into the next frame's lists where it no longer reaches.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "GlContextTest.h"
+#include "render/Renderer.h"
+#include "render/culling/ClusterLists.h"
+#include "scene/LightSets.h"
+#include "scene/SceneLoader.h"
+
+namespace manylights {
+namespace {
+
+class MaskedListsTest : public GlContextTest {};
+
+// A yard of 24 m with a few blocks, under `count` drifting point lights: 3 whose ranges (30 to
+// 40 m) reach the whole view (the global list's), and the others, of `shortestRange` to 6 m of range
+// (narrow and wide ones), from 0.1 to 2 m above the ground within `spread` m of its centre.
+// Gathered within half a metre, with ranges of 4 m and more, 7,000 of them make lists longer
+// than a part (kClusterListPart), which later passes light.
+std::string yardScene(int count, double spread, double shortestRange)
+{
+    const auto lightSet = [](int lights, int seed, double halfWidth, double minRange, double maxRange) {
+        return nlohmann::json{{"count", lights},
+                              {"seed", seed},
+                              {"type", "point"},
+                              {"min", {-halfWidth, 0.1, -halfWidth}},
+                              {"max", {halfWidth, 2, halfWidth}},
+                              {"range", {minRange, maxRange}},
+                              {"intensity", {0.02, 0.1}},
+                              {"animation", {{"drift", {{"amplitude", {1.5, 0.2, 1.5}}}}}}};
+    };
+    nlohmann::json scene = {
+        {"camera", {{"eye", {0, 14, 14}}, {"look_at", {0, 0, -1}}, {"fov_y", 50}, {"near", 0.5}, {"far", 80}}},
+        {"ambient", {0.02, 0.02, 0.02}},
+        {"light_sets", {lightSet(3, 5, 12, 30, 40), lightSet(count - 3, 7, spread, shortestRange, 6)}},
+        {"materials", {{"m", {{"diffuse", {0.7, 0.7, 0.7}}, {"specular", {0.3, 0.3, 0.3}}, {"shininess", 16}}}}},
+        {"objects", nlohmann::json::array()}};
+    scene["objects"].push_back({{"mesh", {{"primitive", "plane"}, {"size", {24, 24}}}}, {"material", "m"}});
+    for (int i = 0; i < 5; ++i)
+        scene["objects"].push_back({{"mesh", {{"primitive", "box"}, {"size", {2, 1 + i, 2}}}},
+                                    {"material", "m"},
+                                    {"transform", {{"translate", {-8 + 4 * i, 0.5 * (1 + i), -3 + (i % 2) * 5}}}}});
+    return scene.dump();
+}
+
+// MANYLIGHTS_MASKED_LIST_LIGHTS set to `value` (or unset) while a renderer's techniques are
+// made: their lists read it then.
+class MaskedListLightsSetting {
+public:
+    explicit MaskedListLightsSetting(const std::optional<std::string>& value)
+    {
+        if (value)
+            ::setenv(kName, value->c_str(), 1);
+        else
+            ::unsetenv(kName);
+    }
+    ~MaskedListLightsSetting() { ::unsetenv(kName); }
+    MaskedListLightsSetting(const MaskedListLightsSetting&) = delete;
+    MaskedListLightsSetting& operator=(const MaskedListLightsSetting&) = delete;
+
+private:
+    static constexpr const char* kName = "MANYLIGHTS_MASKED_LIST_LIGHTS";
+};
+
+std::map<std::string, double> countersOf(Technique& technique)
+{
+    std::map<std::string, double> counters;
+    for (const TechniqueCounter& counter : technique.counters())
+        counters[counter.name] = counter.value;
+    return counters;
+}
+
+TEST_F(MaskedListsTest, MasksGiveTheSortsListsFrameAfterFrame)
+{
+    const RendererDesc desc{.width = 320, .height = 180};
+    bool sawGlobalLights = false;
+    bool sawLongLists = false;
+    struct Case {
+        int lights;
+        double spread;
+        double minRange;
+    };
+    for (const Case& yard : {Case{40, 12, 0.5}, {1024, 12, 0.5}, {1056, 12, 0.5}, {3000, 12, 0.5}, {7000, 0.5, 4}}) {
+        const int count = yard.lights;
+        ASSERT_LE(count, static_cast<int>(kMaskedListLights));
+        const Scene scene = parseScene(yardScene(count, yard.spread, yard.minRange), "<masked lists>", ".");
+        const std::vector<Light> lights = expandLights(scene);
+        const std::vector<std::string> techniques = {"clustered", "tiled"};
+        // The techniques (and their lists) are made when first asked for.
+        const auto makeRenderer = [&](std::optional<Renderer>& renderer, const std::optional<std::string>& setting) {
+            const MaskedListLightsSetting scoped(setting);
+            renderer.emplace(scene, lights, desc);
+            for (const std::string& technique : techniques)
+                renderer->technique(technique);
+        };
+        std::optional<Renderer> masked;
+        std::optional<Renderer> sorted;
+        makeRenderer(masked, std::nullopt);
+        makeRenderer(sorted, "0");
+        for (const std::string& technique : techniques) {
+            for (const double t : {0.0, 1.3, 0.4}) {
+                const std::string where =
+                    technique + ", " + std::to_string(count) + " lights, t = " + std::to_string(t);
+                masked->setTime(t);
+                sorted->setTime(t);
+                masked->renderFrame(technique, ViewMode::Final);
+                sorted->renderFrame(technique, ViewMode::Final);
+                std::map<std::string, double> fromMasks = countersOf(masked->technique(technique));
+                std::map<std::string, double> fromSort = countersOf(sorted->technique(technique));
+                ASSERT_EQ(fromMasks["cluster_lists_from_masks"], 1.0) << where;
+                ASSERT_EQ(fromSort["cluster_lists_from_masks"], 0.0) << where;
+                EXPECT_GT(fromMasks["cluster_pairs"], 0.0) << where;
+                for (const char* name : {"cluster_pairs", "longest_cluster_list", "global_lights"})
+                    EXPECT_EQ(fromMasks[name], fromSort[name]) << where << ": " << name;
+                sawGlobalLights = sawGlobalLights || fromMasks["global_lights"] > 0.0;
+                sawLongLists = sawLongLists || fromMasks["longest_cluster_list"] > kClusterListPart;
+                const Image fromMaskedLists = masked->readColour();
+                const Image fromSortedLists = sorted->readColour();
+                EXPECT_EQ(fromMaskedLists.rgb, fromSortedLists.rgb) << where;
+            }
+        }
+    }
+    EXPECT_TRUE(sawGlobalLights) << "the scenes should have a global list";
+    EXPECT_TRUE(sawLongLists) << "the scenes should have lists longer than a part";
+}
+
+}  // namespace
+}  // namespace manylights
