@@ -9,8 +9,9 @@
 // barriers: llvmpipe runs barriers by switching between the workgroup's invocations, which
 // cost more than the walk. The first walk keeps each pixel's view-space position for the
 // second (reading the G-buffer again cost 4 ms of 21 at 1280x720).
-// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels and two of the slices:
-// 2 · (256 + 17) + 2 · 32 at most.
+// Loop iterations: two walks of CLUSTER_TILE_SIZE² pixels, the second with CLUSTER_SLICES per
+// pixel (unless the compiler unrolls them), and two of the slices: 2 · (256 + 17) + 256 · 32 +
+// 2 · 32 at most.
 #include "lib/bindings.glsl"
 #include "lib/frame.glsl"
 #include "lib/light_batch.glsl"
@@ -83,6 +84,10 @@ void main()
                 uint above = uint(clamp(floor(coordinate + 0.01), 0.0, float(CLUSTER_SLICES - 1)));
                 occupied |= (1u << below) | (1u << above);
 #ifdef CLUSTER_SURFACE_BOUNDS
+                // Every slice's box, each kept or grown by a select, rather than the two
+                // boxes indexed by the slices: an index that differs from lane to lane makes
+                // llvmpipe reach the arrays lane by lane, where the loop, unrolled, keeps them
+                // in registers (courtyard, 1280x720: the pass 14.3-14.5 -> 12.7-13.1 ms).
                 for (int k = 0; k < CLUSTER_SLICES; ++k) {
                     bool inSlice = uint(k) == below || uint(k) == above;
                     lo[k] = inSlice ? min(lo[k], surface.xyz) : lo[k];
