@@ -46,6 +46,9 @@ static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopI
 static_assert(2 * kClusterListPart + 2 * (kClusterListPart / 32) + kGlobalLightCapacity + 16 * (kMaxShadowLights + 1) +
                   1024 <=
               kMaxLoopIterations);
+// cluster_mask_lists.comp's walk of a cluster that every light of a masked frame reaches: the
+// summary's words, the mask's words and two lights an iteration.
+static_assert(kMaskedListLights / 1024 + kMaskedListLights / 32 + kMaskedListLights / 2 <= kMaxLoopIterations);
 // The smallest storage planned: a few small frames fit it without a rebuild.
 constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // The first frame's plan, before any frame has said what it needs: 16 pairs per cell (the

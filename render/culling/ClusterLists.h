@@ -88,11 +88,13 @@ inline constexpr double kGlobalLightGridFraction = 0.5;
 gl::Defines clusterListDefines(gl::Defines defines, bool texels = false, bool globalList = false);
 
 // The most lights whose lists are built from bit masks (above) rather than sorted, where the
-// masks of every cluster take at most kMaskedListBudgetBytes (a frame of 8,192 lights at
-// 1280x720 in clustered's grid: 29.5 MB). MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists
-// are made, sets another number for measuring (scripts/measure-masked-lists.sh) and testing:
-// 0 sorts every frame's pairs.
-inline constexpr std::uint32_t kMaskedListLights = 8192;
+// masks of every cluster take at most kMaskedListBudgetBytes (a frame of 16,384 lights at
+// 1280x720 in clustered's grid: 60.8 MB; at 1920x1080 from 8,192 lights on, clustered sorts).
+// On the courtyard at 1280x720 the masks' lists cost 12 against 20 ms at 1,024 lights, 19
+// against 24 at 16,384, and tiled's 20 against 23-24 at 32,768 (docs/techniques.md).
+// MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists are made, sets another number for
+// measuring (scripts/measure-masked-lists.sh) and testing: 0 sorts every frame's pairs.
+inline constexpr std::uint32_t kMaskedListLights = 16384;
 inline constexpr std::size_t kMaskedListBudgetBytes = std::size_t{64} << 20;
 
 // The shape of the clustered technique's grid (docs/techniques.md has the measurements).
