@@ -38,7 +38,7 @@ import csv, sys
 for row in csv.DictReader(open(sys.argv[1])):
     passes = {p.split(":")[0]: float(p.split(":")[1]) for p in row["passes"].split(";")}
     print(f"{sys.argv[2]}: {row['technique']:<9} {int(row['lights']):>9,} lights: frame {float(row['frame_ms_median']):6.1f} ms;"
-          + "".join(f" {name} {passes[name]:.0f}" for name in ("cluster pairs", "pair sort", "lighting") if name in passes))
+          + "".join(f" {name} {passes[name]:.0f}" for name in ("cluster pairs", "pair sort", "mask lists", "lighting") if name in passes))
 PY
     done
   done
