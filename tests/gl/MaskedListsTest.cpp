@@ -3,7 +3,7 @@
 // (MANYLIGHTS_MASKED_LIST_LIGHTS=0). Both paths must give the same lists in the same order, so
 // the images must be the same bytes, with no tolerance: the lighting adds the same lights in
 // the same order. The light counts cover each shape of the masks: fewer than 32 words a cluster,
-// exactly 32 (the most without a summary), 33 (a summary of two words), 3,000 and 9,000. The
+// exactly 32 (the most without a summary), 33 (a summary of two words), 3,000 and 4,500. The
 // lights drift, and each renderer draws several times in turn: a bit left in a mask by one frame
 // would put a light into the next frame's lists where it no longer reaches.
 #include <gtest/gtest.h>
@@ -27,11 +27,12 @@ namespace {
 class MaskedListsTest : public GlContextTest {};
 
 // A yard of 24 m with a few blocks, under `count` drifting point lights: 3 whose ranges (30 to
-// 40 m) reach the whole view (the global list's), and the others, of `shortestRange` to 6 m of range
-// (narrow and wide ones), from 0.1 to 2 m above the ground within `spread` m of its centre.
-// Gathered within half a metre, with ranges of 4 m and more, 9,000 of them make lists longer
+// 40 m) reach the whole view (the global list's), and the others, of `shortestRange` to
+// `longestRange` m of range (narrow and wide ones), from 0.1 to 2 m above the ground within
+// `spread` m of its centre. Gathered within half a metre, with ranges of 3 to 3.5 m (each
+// reaches the ground's centre, none covers half the view), 4,500 of them make lists longer
 // than a part (kClusterListPart), which later passes light.
-std::string yardScene(int count, double spread, double shortestRange)
+std::string yardScene(int count, double spread, double shortestRange, double longestRange)
 {
     const auto lightSet = [](int lights, int seed, double halfWidth, double minRange, double maxRange) {
         return nlohmann::json{{"count", lights},
@@ -46,7 +47,7 @@ std::string yardScene(int count, double spread, double shortestRange)
     nlohmann::json scene = {
         {"camera", {{"eye", {0, 14, 14}}, {"look_at", {0, 0, -1}}, {"fov_y", 50}, {"near", 0.5}, {"far", 80}}},
         {"ambient", {0.02, 0.02, 0.02}},
-        {"light_sets", {lightSet(3, 5, 12, 30, 40), lightSet(count - 3, 7, spread, shortestRange, 6)}},
+        {"light_sets", {lightSet(3, 5, 12, 30, 40), lightSet(count - 3, 7, spread, shortestRange, longestRange)}},
         {"materials", {{"m", {{"diffuse", {0.7, 0.7, 0.7}}, {"specular", {0.3, 0.3, 0.3}}, {"shininess", 16}}}}},
         {"objects", nlohmann::json::array()}};
     scene["objects"].push_back({{"mesh", {{"primitive", "plane"}, {"size", {24, 24}}}}, {"material", "m"}});
@@ -92,12 +93,15 @@ TEST_F(MaskedListsTest, MasksGiveTheSortsListsFrameAfterFrame)
     struct Case {
         int lights;
         double spread;
-        double minRange;
+        double shortestRange;
+        double longestRange;
     };
-    for (const Case& yard : {Case{40, 12, 0.5}, {1024, 12, 0.5}, {1056, 12, 0.5}, {3000, 12, 0.5}, {9000, 0.5, 4}}) {
+    for (const Case& yard :
+         {Case{40, 12, 0.5, 6}, {1024, 12, 0.5, 6}, {1056, 12, 0.5, 6}, {3000, 12, 0.5, 6}, {4500, 0.5, 3, 3.5}}) {
         const int count = yard.lights;
         ASSERT_LE(count, static_cast<int>(kMaskedListLights));
-        const Scene scene = parseScene(yardScene(count, yard.spread, yard.minRange), "<masked lists>", ".");
+        const Scene scene =
+            parseScene(yardScene(count, yard.spread, yard.shortestRange, yard.longestRange), "<masked lists>", ".");
         const std::vector<Light> lights = expandLights(scene);
         const std::vector<std::string> techniques = {"clustered", "tiled"};
         // The techniques (and their lists) are made when first asked for.
