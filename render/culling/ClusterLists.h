@@ -2,7 +2,7 @@
 // ClusterGrid, the lights that may reach it, built on the GPU every frame in one sequence
 // whatever the light count, and read by one lighting pass (shaders/lib/cluster_lists.glsl).
 //
-// The sequence (passes named "cluster pairs", "cluster lists" and "pair sort"):
+// The sequence (passes named "cluster pairs", "cluster lists" and "pair sort" or "mask lists"):
 // 1. cluster_pairs.comp counts each light's (cluster, light) pairs: an invocation per light of
 //    at most 64 tiles (ClusterLists.cpp), a workgroup per wider light and band of tile rows, the
 //    culling tests of lib/cluster_culling.glsl; it lists the wide lights and the narrow lights
@@ -24,8 +24,9 @@
 // step 5 cluster_mask_lists.comp walks each cluster's mask in bit order into its list: the
 // same lists, in the same order, as the sort makes. The sort costs what the pairs are (the
 // courtyard has 200,000 to 230,000 at 1280x720 from 1,024 to 16,384 lights: 10 ms on
-// llvmpipe, four digits of 15-bit keys); the masks cost a bit per light per cluster, which at
-// 1,024 lights is 32 words a cluster (docs/techniques.md has the measurements).
+// llvmpipe, four digits of 15-bit keys), the masks a bit per light per cluster, which at
+// 1,024 lights is 32 words a cluster and at 16,384 lights 512 (docs/techniques.md has the
+// measurements).
 //
 // Sorted pairs rather than bit masks over light batches (the grid's other user, the
 // transparency pass, keeps masks): a mask costs a bit per light for every cluster, so a frame
