@@ -17,14 +17,8 @@ Surface gbufferSurface(ivec2 pixel)
     Surface s;
     vec4 emissive = texelFetch(gEmissive, pixel, 0);
     // The model from the emissive alpha (lib/gbuffer_packing.glsl packModelOcclusion), unless the
-    // program is built for one model only (lib/lighting.glsl isMetallicRoughness).
-#if defined(NO_METALLIC_ROUGHNESS)
-    s.metallicRoughness = false;
-#elif defined(NO_BLINN_PHONG)
-    s.metallicRoughness = true;
-#else
-    s.metallicRoughness = emissive.a < 0.0;
-#endif
+    // program is built for one model only (lib/lighting.glsl BY_MODEL).
+    s.metallicRoughness = BY_MODEL(emissive.a < 0.0, true, false);
     s.occlusion = s.metallicRoughness ? -1.0 - emissive.a : 1.0;
     s.metallic = 0.0;
 #ifdef GBUFFER_COMPACT

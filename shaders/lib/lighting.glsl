@@ -49,19 +49,17 @@ Surface withTermSwitches(Surface s)
     return s;
 }
 
-// Whether the surface is shaded by the metallic-roughness model. A program built with
-// NO_METALLIC_ROUGHNESS or NO_BLINN_PHONG (render/programs/LightingPrograms.h: the scene draws one
-// model only) evaluates one model and selects nothing: llvmpipe pays both sides of a select.
-bool isMetallicRoughness(Surface s)
-{
+// BY_MODEL(metallicRoughness, a, b): a where the surface is shaded by the metallic-roughness
+// model, b where by Blinn-Phong. A program built with NO_METALLIC_ROUGHNESS or NO_BLINN_PHONG
+// (render/programs/LightingPrograms.h: the scene draws one model only) takes that model's
+// expression alone and selects nothing: llvmpipe pays both sides of a select.
 #if defined(NO_METALLIC_ROUGHNESS)
-    return false;
+#define BY_MODEL(metallicRoughness, a, b) (b)
 #elif defined(NO_BLINN_PHONG)
-    return true;
+#define BY_MODEL(metallicRoughness, a, b) (a)
 #else
-    return s.metallicRoughness;
+#define BY_MODEL(metallicRoughness, a, b) ((metallicRoughness) ? (a) : (b))
 #endif
-}
 
 // brdf(L) = kd · max(N·L, 0) + ks · max(N·H, 0)^s · [N·L > 0]
 // Written without branches: llvmpipe runs 8 or 16 pixels in lock step and would execute a
@@ -105,13 +103,7 @@ vec3 metallicRoughnessBrdf(Surface s, vec3 L, vec3 V)
 // brdf(L) · (N·L) of the surface's model.
 vec3 surfaceBrdf(Surface s, vec3 L, vec3 V)
 {
-#if defined(NO_METALLIC_ROUGHNESS)
-    return blinnPhong(s, L, V);
-#elif defined(NO_BLINN_PHONG)
-    return metallicRoughnessBrdf(s, L, V);
-#else
-    return s.metallicRoughness ? metallicRoughnessBrdf(s, L, V) : blinnPhong(s, L, V);
-#endif
+    return BY_MODEL(s.metallicRoughness, metallicRoughnessBrdf(s, L, V), blinnPhong(s, L, V));
 }
 
 // What the metallic-roughness surface reflects of a uniform environment of radiance 1: all of
@@ -130,13 +122,7 @@ vec3 metallicRoughnessAmbient(Surface s, vec3 V)
 // What the surface reflects of the ambient term: kd for Blinn-Phong.
 vec3 ambientReflectance(Surface s, vec3 V)
 {
-#if defined(NO_METALLIC_ROUGHNESS)
-    return s.diffuse;
-#elif defined(NO_BLINN_PHONG)
-    return metallicRoughnessAmbient(s, V);
-#else
-    return s.metallicRoughness ? metallicRoughnessAmbient(s, V) : s.diffuse;
-#endif
+    return BY_MODEL(s.metallicRoughness, metallicRoughnessAmbient(s, V), s.diffuse);
 }
 
 // The light-independent terms: ke + ambient ⊙ kd · ao (kd: ambientReflectance()) + the directional light times its
