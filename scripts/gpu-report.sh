@@ -2,7 +2,8 @@
 # The first measurements on a hardware GPU (issue 30), as one markdown report naming the
 # device and the driver: `make test` on it, the light sweep at 1920x1080 (1,024 to 1,048,576
 # lights, every technique within a time budget), the courtyard table of docs/performance.md
-# (1280x720) and the LearnOpenGL comparison (../shared/peer/learnopengl-8.1/compare.sh).
+# (1280x720), the light lists from bit masks against sorted ones, and the LearnOpenGL
+# comparison (../shared/peer/learnopengl-8.1/compare.sh).
 #
 # Usage: scripts/gpu-report.sh [--anyway] [--device N] [--out DIR]
 #   --anyway    run on a software rasteriser too (llvmpipe); without it the script says that
@@ -14,7 +15,8 @@
 #   SWEEP_LIGHTS=1024,4096,16384,65536,262144,1048576  SWEEP_SIZE=1920x1080
 #   COURTYARD_LIGHTS=256,1024,4096,16384,65536  COURTYARD_SIZE=1280x720
 #   FRAMES=5  BUDGET_MS=1000 (a technique's larger light counts are skipped once its median
-#   frame passes this)  LEARNOPENGL_LIGHTS="32 128 512"  TESTS=1  LEARNOPENGL=1 (0 skips a part)
+#   frame passes this)  LEARNOPENGL_LIGHTS="32 128 512"  TESTS=1  MASKED_LISTS=1  LEARNOPENGL=1
+#   (0 skips a part)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -93,6 +95,21 @@ section "Courtyard table (docs/performance.md) at $courtyard_size"
 "$ml" bench bench/courtyard.json --lights "$courtyard_lights" --size "$courtyard_size" --frames "$frames" \
   --budget-ms "$budget" --csv "$out/courtyard.csv" "${device[@]}" > "$out/courtyard.txt"
 fenced "$out/courtyard.txt"
+
+if [ "${MASKED_LISTS:-1}" = 1 ]; then
+  # The limit kMaskedListLights was chosen on llvmpipe (docs/techniques.md: the lists from bit
+  # masks); on a GPU the masks' atomics against the sort are still to be measured.
+  section "Light lists from bit masks against sorted pairs at $courtyard_size"
+  echo "\`tiled\` and \`clustered\` at 1,024, 4,096 and 16,384 lights with their lists from bit masks" \
+       "(the default), then sorted (MANYLIGHTS_MASKED_LIST_LIGHTS=0); \`--classic\`." >> "$report"
+  for limit in default 0; do
+    if [ "$limit" = default ]; then env=(); else env=(MANYLIGHTS_MASKED_LIST_LIGHTS=0); fi
+    env "${env[@]}" "$ml" bench bench/courtyard.json --techniques clustered,tiled --lights 1024,4096,16384 \
+      --size "$courtyard_size" --frames "$frames" --classic "${device[@]}" > "$out/lists-$limit.txt"
+    echo "Lists: $([ "$limit" = default ] && echo 'from bit masks' || echo 'sorted')" >> "$report"
+    fenced "$out/lists-$limit.txt"
+  done
+fi
 
 if [ "${LEARNOPENGL:-1}" = 1 ]; then
   section "Against LearnOpenGL 8.1 (compare.sh, 800x600)"
