@@ -21,14 +21,10 @@ void addLightToTile(ViewLight light, uint tile, uint word, uint wordBit)
 {
     uint slices = lightSlicesOfTile(light, tile);
     uint words = lightBatchMaskWords();
-    uint summaryWords = lightBatchSummaryWords();
     while (slices != 0u) {
         uint k = uint(findLSB(slices));
         slices &= slices - 1u;
-        uint cluster = tile * uint(CLUSTER_SLICES) + k;
-        // The first bit set in a word marks the word in the summary.
-        if (atomicOr(clusterLightMasks[cluster * words + word], wordBit) == 0u)
-            atomicOr(clusterMaskSummaries[cluster * summaryWords + word / 32u], 1u << (word % 32u));
+        setClusterMaskBit(tile * uint(CLUSTER_SLICES) + k, words, word, wordBit, true);
     }
 }
 

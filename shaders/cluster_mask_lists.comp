@@ -64,8 +64,8 @@ void main()
         return;
     uint entry = clusterListFirst[cluster];
     uint end = entry + clusterListCount[cluster];
-    bool summarised = maskWords > 32u;
-    uint summaryWords = (maskWords + 31u) / 32u;
+    bool summarised = listMaskSummarised(maskWords);
+    uint summaryWords = clusterMaskSummaryWords(maskWords);
     for (uint s = 0u; s < summaryWords && entry < end; ++s) {
         uint marked = ~0u;
         if (summarised) {

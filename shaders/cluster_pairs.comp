@@ -104,16 +104,11 @@ layout(location = CLUSTER_MASK_WORDS_LOCATION) uniform uint maskWords;
 // Sets the light's bit in the masks of the clusters `slices` (bit k: slice k) of `tile`.
 void setTileBits(uint slices, uint tile, uint lightIndex)
 {
-    uint word = lightIndex / 32u;
-    uint bit = 1u << (lightIndex % 32u);
-    uint summaryWords = (maskWords + 31u) / 32u;
+    bool summarised = listMaskSummarised(maskWords);
     while (slices != 0u) {
         uint cluster = tile * uint(CLUSTER_SLICES) + uint(findLSB(slices));
         slices &= slices - 1u;
-        // The first bit set in a word marks the word in the summary, where the masks have one
-        // (more than 32 words: cluster_mask_lists.comp says why).
-        if (atomicOr(clusterLightMasks[cluster * maskWords + word], bit) == 0u && maskWords > 32u)
-            atomicOr(clusterMaskSummaries[cluster * summaryWords + word / 32u], 1u << (word % 32u));
+        setClusterMaskBit(cluster, maskWords, lightIndex / 32u, 1u << (lightIndex % 32u), summarised);
         atomicAdd(clusterPairCount[cluster], 1u);
     }
 }

@@ -29,11 +29,36 @@ layout(std430, binding = CLUSTER_BOUNDS_BUFFER_BINDING) buffer ClusterBounds {
 };
 #endif
 layout(std430, binding = CLUSTER_LIGHT_MASKS_BUFFER_BINDING) buffer ClusterLightMasks {
-    uint clusterLightMasks[];  // cluster c, word w: [c * lightBatchMaskWords() + w]
+    // cluster c, word w of its mask of W words: [c * W + w]; W is lightBatchMaskWords() for the
+    // transparency grid, a word per 32 lights of the frame for the light lists
+    uint clusterLightMasks[];
 };
 layout(std430, binding = CLUSTER_MASK_SUMMARIES_BUFFER_BINDING) buffer ClusterMaskSummaries {
-    uint clusterMaskSummaries[];  // cluster c: [c * lightBatchSummaryWords() + w / 32], bit w % 32
+    uint clusterMaskSummaries[];  // cluster c: [c * clusterMaskSummaryWords(W) + w / 32], bit w % 32
 };
+
+// The summary words of a cluster mask of `words` words: a bit per mask word.
+uint clusterMaskSummaryWords(uint words)
+{
+    return (words + 31u) / 32u;
+}
+
+// Sets bit `bit` of word `word` of cluster `cluster`'s mask of `words` words. With
+// `summarised`, the first bit set in a word marks the word in the cluster's summary (the
+// transparency grid's masks always have one; the light lists' from 33 words:
+// cluster_mask_lists.comp says why).
+void setClusterMaskBit(uint cluster, uint words, uint word, uint bit, bool summarised)
+{
+    if (atomicOr(clusterLightMasks[cluster * words + word], bit) == 0u && summarised)
+        atomicOr(clusterMaskSummaries[cluster * clusterMaskSummaryWords(words) + word / 32u], 1u << (word % 32u));
+}
+
+// Whether the light lists' masks of `words` words a cluster have summaries
+// (cluster_pairs.comp, cluster_mask_lists.comp).
+bool listMaskSummarised(uint words)
+{
+    return words > 32u;
+}
 
 uvec2 clusterTileGrid()
 {
