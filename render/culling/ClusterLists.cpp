@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
-#include <limits>
 #include <string>
 
 #include "core/Error.h"
@@ -114,6 +113,9 @@ Pass listPass(std::string_view name)
 
 std::size_t bytesOf(std::uint32_t uints) { return std::size_t{uints} * sizeof(std::uint32_t); }
 
+// A cluster mask's summary words (lib/clusters.glsl clusterMaskSummaryWords).
+std::uint32_t summaryWordsOf(std::uint32_t maskWords) { return (maskWords + 31) / 32; }
+
 // The share of the grid a global light covers: kGlobalLightGridFraction, or for measuring
 // others (scripts/measure-global-fraction.sh) MANYLIGHTS_GLOBAL_LIGHT_FRACTION, a number > 0
 // (above 1 no light but an unbounded one is global).
@@ -133,7 +135,8 @@ double globalLightGridFraction()
 }
 
 // kMaskedListLights, or for measuring and testing MANYLIGHTS_MASKED_LIST_LIGHTS, a whole number
-// (0: every frame sorts its pairs).
+// up to kMaskedListLights (0: every frame sorts its pairs): more would take
+// cluster_mask_lists.comp's walk past the loop bound.
 std::uint32_t maskedListLights()
 {
     const char* text = std::getenv("MANYLIGHTS_MASKED_LIST_LIGHTS");
@@ -141,9 +144,9 @@ std::uint32_t maskedListLights()
         return kMaskedListLights;
     char* end = nullptr;
     const unsigned long value = std::strtoul(text, &end, 10);
-    if (end == text || *end != '\0' || text[0] == '-' || value > std::numeric_limits<std::uint32_t>::max())
-        throw Error(std::string("MANYLIGHTS_MASKED_LIST_LIGHTS: expected a whole number of lights, got '") + text +
-                    "'");
+    if (end == text || *end != '\0' || text[0] == '-' || value > kMaskedListLights)
+        throw Error("MANYLIGHTS_MASKED_LIST_LIGHTS: expected a whole number of lights up to " +
+                    std::to_string(kMaskedListLights) + ", got '" + text + "'");
     return static_cast<std::uint32_t>(value);
 }
 
@@ -243,8 +246,7 @@ std::uint32_t ClusterLists::maskWordsFor(std::uint32_t lightCount, std::uint32_t
     if (lightCount == 0 || lightCount > maskedListLights_)
         return 0;
     const std::uint32_t words = (lightCount + 31) / 32;
-    const std::size_t bytes = std::size_t{clusterCount} * (words + (words + 31) / 32) * sizeof(std::uint32_t);
-    return bytes <= kMaskedListBudgetBytes ? words : 0;
+    return std::size_t{clusterCount} * bytesOf(words + summaryWordsOf(words)) <= kMaskedListBudgetBytes ? words : 0;
 }
 
 void ClusterLists::ensureMasks(std::uint32_t clusterCount, std::uint32_t words)
@@ -255,8 +257,8 @@ void ClusterLists::ensureMasks(std::uint32_t clusterCount, std::uint32_t words)
         maskSummaries_ = gl::Buffer();
         return;
     }
-    const std::size_t maskBytes = std::size_t{clusterCount} * words * sizeof(std::uint32_t);
-    const std::size_t summaryBytes = std::size_t{clusterCount} * ((words + 31) / 32) * sizeof(std::uint32_t);
+    const std::size_t maskBytes = std::size_t{clusterCount} * bytesOf(words);
+    const std::size_t summaryBytes = std::size_t{clusterCount} * bytesOf(summaryWordsOf(words));
     // Zero when made; cluster_mask_lists.comp leaves them zero after every frame, whatever
     // layout (words a cluster) the next frame has.
     if (!masks_ || masks_.size() < maskBytes) {
@@ -365,8 +367,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         Status reset;
         reset.wideLightGroups[1] = bands;
         statusBuffer_.update(0, sizeof(Status), &reset);
-        lightPairOffsets_.clearToZero(bytesOf(std::max(lightCount, 1u)));
-        lightPairCursors_.clearToZero(bytesOf(std::max(lightCount, 1u)));
+        if (!masked_) {  // the lights' slots: a masked frame's pairs have none
+            lightPairOffsets_.clearToZero(bytesOf(std::max(lightCount, 1u)));
+            lightPairCursors_.clearToZero(bytesOf(std::max(lightCount, 1u)));
+        }
         clusterCounts_.clearToZero(bytesOf(clusters));
         ensureMasks(clusters, maskWords);
     });

@@ -93,8 +93,10 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels = false, bool gl
 // 1280x720 in clustered's grid: 60.8 MB; at 1920x1080 from 8,192 lights on, clustered sorts).
 // On the courtyard at 1280x720 the masks' lists cost 12 against 20 ms at 1,024 lights, 19
 // against 24 at 16,384, and tiled's 20 against 23-24 at 32,768 (docs/techniques.md).
-// MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists are made, sets another number for
-// measuring (scripts/measure-masked-lists.sh) and testing: 0 sorts every frame's pairs.
+// MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists are made, sets a lower number for
+// measuring (scripts/measure-masked-lists.sh) and testing: 0 sorts every frame's pairs. Not a
+// higher one: the masks' walk of a cluster every light reaches stays within the loop bound up
+// to kMaskedListLights (ClusterLists.cpp checks).
 inline constexpr std::uint32_t kMaskedListLights = 16384;
 inline constexpr std::size_t kMaskedListBudgetBytes = std::size_t{64} << 20;
 
@@ -139,8 +141,6 @@ public:
     // List entries the lighting walked (all pixels, all parts, the global list's too), when
     // counting work.
     std::uint32_t listVisits() const { return status_.listVisits; }
-    // Whether the frame built last made its lists from bit masks (kMaskedListLights).
-    bool masked() const { return masked_; }
     // The lights of the last frame's global list (0 where it had none or the candidates were too many).
     std::uint32_t globalLights() const { return globalLightsOfFrame_; }
     // The GPU memory of the lists and their culling structures.
