@@ -85,6 +85,40 @@ std::map<std::string, double> countersOf(Technique& technique)
     return counters;
 }
 
+const std::vector<std::string> kTechniques = {"clustered", "tiled"};
+
+// A renderer of `desc` for the scene, with MANYLIGHTS_MASKED_LIST_LIGHTS set to `setting` (or
+// unset) while its techniques, and their lists, are made (they are made when first asked for).
+void makeRenderer(std::optional<Renderer>& renderer, const Scene& scene, const std::vector<Light>& lights,
+                  const RendererDesc& desc, const std::optional<std::string>& setting)
+{
+    const MaskedListLightsSetting scoped(setting);
+    renderer.emplace(scene, lights, desc);
+    for (const std::string& technique : kTechniques)
+        renderer->technique(technique);
+}
+
+// Renders a frame of `technique` at time t with each renderer, checks that `masked` made its
+// lists from masks exactly where `expectMasks` says (and `sorted` never), and that both have
+// the same pairs, longest list, global lights and image bytes. Returns `masked`'s counters.
+std::map<std::string, double> expectSameFrame(Renderer& masked, Renderer& sorted, const std::string& technique,
+                                              double t, bool expectMasks, const std::string& where)
+{
+    masked.setTime(t);
+    sorted.setTime(t);
+    masked.renderFrame(technique, ViewMode::Final);
+    sorted.renderFrame(technique, ViewMode::Final);
+    std::map<std::string, double> fromMasks = countersOf(masked.technique(technique));
+    std::map<std::string, double> fromSort = countersOf(sorted.technique(technique));
+    EXPECT_EQ(fromMasks["cluster_lists_from_masks"], expectMasks ? 1.0 : 0.0) << where;
+    EXPECT_EQ(fromSort["cluster_lists_from_masks"], 0.0) << where;
+    EXPECT_GT(fromMasks["cluster_pairs"], 0.0) << where;
+    for (const char* name : {"cluster_pairs", "longest_cluster_list", "global_lights"})
+        EXPECT_EQ(fromMasks[name], fromSort[name]) << where << ": " << name;
+    EXPECT_EQ(masked.readColour().rgb, sorted.readColour().rgb) << where;
+    return fromMasks;
+}
+
 TEST_F(MaskedListsTest, MasksGiveTheSortsListsFrameAfterFrame)
 {
     const RendererDesc desc{.width = 320, .height = 180};
@@ -98,48 +132,47 @@ TEST_F(MaskedListsTest, MasksGiveTheSortsListsFrameAfterFrame)
     };
     for (const Case& yard :
          {Case{40, 12, 0.5, 6}, {1024, 12, 0.5, 6}, {1056, 12, 0.5, 6}, {3000, 12, 0.5, 6}, {4500, 0.5, 3, 3.5}}) {
-        const int count = yard.lights;
-        ASSERT_LE(count, static_cast<int>(kMaskedListLights));
-        const Scene scene =
-            parseScene(yardScene(count, yard.spread, yard.shortestRange, yard.longestRange), "<masked lists>", ".");
+        ASSERT_LE(yard.lights, static_cast<int>(kMaskedListLights));
+        const Scene scene = parseScene(yardScene(yard.lights, yard.spread, yard.shortestRange, yard.longestRange),
+                                       "<masked lists>", ".");
         const std::vector<Light> lights = expandLights(scene);
-        const std::vector<std::string> techniques = {"clustered", "tiled"};
-        // The techniques (and their lists) are made when first asked for.
-        const auto makeRenderer = [&](std::optional<Renderer>& renderer, const std::optional<std::string>& setting) {
-            const MaskedListLightsSetting scoped(setting);
-            renderer.emplace(scene, lights, desc);
-            for (const std::string& technique : techniques)
-                renderer->technique(technique);
-        };
         std::optional<Renderer> masked;
         std::optional<Renderer> sorted;
-        makeRenderer(masked, std::nullopt);
-        makeRenderer(sorted, "0");
-        for (const std::string& technique : techniques) {
+        makeRenderer(masked, scene, lights, desc, std::nullopt);
+        makeRenderer(sorted, scene, lights, desc, "0");
+        for (const std::string& technique : kTechniques) {
             for (const double t : {0.0, 1.3, 0.4}) {
-                const std::string where =
-                    technique + ", " + std::to_string(count) + " lights, t = " + std::to_string(t);
-                masked->setTime(t);
-                sorted->setTime(t);
-                masked->renderFrame(technique, ViewMode::Final);
-                sorted->renderFrame(technique, ViewMode::Final);
-                std::map<std::string, double> fromMasks = countersOf(masked->technique(technique));
-                std::map<std::string, double> fromSort = countersOf(sorted->technique(technique));
-                ASSERT_EQ(fromMasks["cluster_lists_from_masks"], 1.0) << where;
-                ASSERT_EQ(fromSort["cluster_lists_from_masks"], 0.0) << where;
-                EXPECT_GT(fromMasks["cluster_pairs"], 0.0) << where;
-                for (const char* name : {"cluster_pairs", "longest_cluster_list", "global_lights"})
-                    EXPECT_EQ(fromMasks[name], fromSort[name]) << where << ": " << name;
-                sawGlobalLights = sawGlobalLights || fromMasks["global_lights"] > 0.0;
-                sawLongLists = sawLongLists || fromMasks["longest_cluster_list"] > kClusterListPart;
-                const Image fromMaskedLists = masked->readColour();
-                const Image fromSortedLists = sorted->readColour();
-                EXPECT_EQ(fromMaskedLists.rgb, fromSortedLists.rgb) << where;
+                const std::map<std::string, double> fromMasks = expectSameFrame(
+                    *masked, *sorted, technique, t, true,
+                    technique + ", " + std::to_string(yard.lights) + " lights, t = " + std::to_string(t));
+                sawGlobalLights = sawGlobalLights || fromMasks.at("global_lights") > 0.0;
+                sawLongLists = sawLongLists || fromMasks.at("longest_cluster_list") > kClusterListPart;
             }
         }
     }
     EXPECT_TRUE(sawGlobalLights) << "the scenes should have a global list";
     EXPECT_TRUE(sawLongLists) << "the scenes should have lists longer than a part";
+}
+
+// At 1920x1080 the masks' budget (kMaskedListBudgetBytes, 64 MiB) decides: at 8,192 lights
+// clustered's masks would take 65,280 cells x (256 + 8) words = 68.9 MB, so it sorts, while
+// tiled's 32,400 cells take 34.2 MB and stay masked; at 4,096 lights clustered's take 34.5 MB.
+// Either way the image is the sorted lists' to the byte. The lights are small (0.2 to 0.6 m),
+// so that the lighting of the full-size frames stays cheap.
+TEST_F(MaskedListsTest, TheMemoryBudgetDecidesAtNineteenTwentyByTenEighty)
+{
+    const RendererDesc desc{.width = 1920, .height = 1080};
+    for (const int count : {4096, 8192}) {
+        const Scene scene = parseScene(yardScene(count, 12, 0.2, 0.6), "<masked lists>", ".");
+        const std::vector<Light> lights = expandLights(scene);
+        std::optional<Renderer> masked;
+        std::optional<Renderer> sorted;
+        makeRenderer(masked, scene, lights, desc, std::nullopt);
+        makeRenderer(sorted, scene, lights, desc, "0");
+        for (const std::string& technique : kTechniques)
+            expectSameFrame(*masked, *sorted, technique, 0.7, technique == "tiled" || count == 4096,
+                            technique + ", " + std::to_string(count) + " lights, 1920x1080");
+    }
 }
 
 }  // namespace
