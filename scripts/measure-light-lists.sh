@@ -12,7 +12,8 @@
 #        with this build's (e.g. git worktree add /tmp/before 029410a && make -C /tmp/before build)
 #   OLD=... OLD_ONLY=1 OLD_LIGHTS=1024,16384,1048576 scripts/measure-light-lists.sh
 #        that comparison alone (ROUNDS= rounds, default 2, the builds' order swapped every other
-#        round; each line the frame and its pairs, sort and lighting passes, ms)
+#        round; each line the frame and its clusters, pairs, sort or mask lists and lighting
+#        passes, ms)
 #   LIGHTS=1024,16384 SIZE=640x360 FRAMES=1 scripts/measure-light-lists.sh   a quicker look
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,7 +39,7 @@ import csv, sys
 for row in csv.DictReader(open(sys.argv[1])):
     passes = {p.split(":")[0]: float(p.split(":")[1]) for p in row["passes"].split(";")}
     print(f"{sys.argv[2]}: {row['technique']:<9} {int(row['lights']):>9,} lights: frame {float(row['frame_ms_median']):6.1f} ms;"
-          + "".join(f" {name} {passes[name]:.0f}" for name in ("cluster pairs", "pair sort", "mask lists", "lighting") if name in passes))
+          + "".join(f" {name} {passes[name]:.0f}" for name in ("clusters", "cluster pairs", "pair sort", "mask lists", "lighting") if name in passes))
 PY
     done
   done

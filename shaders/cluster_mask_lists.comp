@@ -8,8 +8,8 @@
 //
 // A mask of more than 32 words has a summary, a bit per word that holds a light, and the walk
 // takes only those words; a mask of up to 32 words (1,024 lights) has none, and the walk reads
-// its words in turn (the summary's atomics in the pair passes cost more than it saved: courtyard,
-// 1,024 lights, 1280x720). Either walk stops at the cluster's last light, which its count says.
+// its words in turn (the summary's atomics in the pair passes cost more than it saved:
+// docs/techniques.md). Either walk stops at the cluster's last light, which its count says.
 //
 // It clears what it read, each word that held a light and each summary word, so that the
 // masks are all zero for the next frame without a clear of the whole buffer (60.8 MB at 16,384

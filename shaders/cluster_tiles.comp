@@ -87,7 +87,8 @@ void main()
                 // Every slice's box, each kept or grown by a select, rather than the two
                 // boxes indexed by the slices: an index that differs from lane to lane makes
                 // llvmpipe reach the arrays lane by lane, where the loop, unrolled, keeps them
-                // in registers (courtyard, 1280x720: the pass 14.3-14.5 -> 12.7-13.1 ms).
+                // in registers (courtyard, 1280x720: clustered's pass 15-16 -> 13 ms,
+                // docs/techniques.md).
                 for (int k = 0; k < CLUSTER_SLICES; ++k) {
                     bool inSlice = uint(k) == below || uint(k) == above;
                     lo[k] = inSlice ? min(lo[k], surface.xyz) : lo[k];
