@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -41,6 +42,20 @@ public:
     // Makes this the buffer glDispatchComputeIndirect reads its workgroup counts from.
     void bindAsDispatchIndirect() const { glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, id()); }
     std::size_t size() const { return size_; }
+    // Maps the whole buffer for reading, persistently and coherently (it must have been made
+    // with GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT), and returns where its
+    // bytes are: what the GPU wrote there is visible once a fence after the writes has signalled
+    // (gl::Fence), with no read call that could wait for the GPU.
+    const void* mapForReading();
+    // Buffer::read calls so far, in this process: the synchronous read-backs, each of which may
+    // wait for the GPU to drain. Tests count them.
+    static std::uint64_t synchronousReads();
+
+    // Test hook: the next Buffer made fails as though the driver had answered its storage
+    // request with GL_OUT_OF_MEMORY, whatever its size. The tests of the out-of-memory path
+    // use it on every driver: a 64-bit GPU driver may hand out a terabyte of virtual storage
+    // that a request for "more than the machine has" cannot count on being refused.
+    static void failNextStorageForTesting();
 
 private:
     std::size_t size_ = 0;

@@ -60,8 +60,10 @@ void throwIfOutOfMemory(const std::string& what)
         outOfMemory = true;
     }
     if (outOfMemory)
-        throw Error("out of memory allocating " + what);
+        throwOutOfMemory(what);
 }
+
+void throwOutOfMemory(const std::string& what) { throw Error("out of memory allocating " + what); }
 
 DebugGroup::DebugGroup(std::string_view name)
 {

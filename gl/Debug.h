@@ -22,6 +22,8 @@ void checkNoError(const char* where);
 // allocating WHAT" if the driver reported GL_OUT_OF_MEMORY, which a user meets by asking for
 // an image too large for the machine; aborts on any other GL error, as checkNoError does.
 void throwIfOutOfMemory(const std::string& what);
+// The error throwIfOutOfMemory throws: "out of memory allocating WHAT".
+[[noreturn]] void throwOutOfMemory(const std::string& what);
 
 // Brackets a pass in debuggers and profilers (glPushDebugGroup / glPopDebugGroup).
 class DebugGroup {

@@ -39,6 +39,13 @@ std::uint64_t Query::result() const
     return value;
 }
 
+bool Query::available() const
+{
+    GLuint available = GL_FALSE;
+    glGetQueryObjectuiv(id(), GL_QUERY_RESULT_AVAILABLE, &available);
+    return available == GL_TRUE;
+}
+
 bool hasPipelineStatistics()
 {
     return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");

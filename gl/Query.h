@@ -27,6 +27,8 @@ public:
     void stamp() const { glQueryCounter(id(), GL_TIMESTAMP); }
     // Waits for the GPU and returns the result.
     std::uint64_t result() const;
+    // Whether the result is there to read without waiting (GL_QUERY_RESULT_AVAILABLE).
+    bool available() const;
 
 private:
     GLenum target_ = 0;

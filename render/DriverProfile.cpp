@@ -32,7 +32,8 @@ DriverChoices driverChoices(DriverProfile profile)
     return {.profile = DriverProfile::Gpu,
             .multipliedSpecularPowers = false,
             .lightTexelsBeforeWindows = false,
-            .autoAnisotropy = kHardwareAnisotropy};
+            .autoAnisotropy = kHardwareAnisotropy,
+            .finishAroundPasses = false};
 }
 
 }  // namespace manylights

@@ -31,6 +31,11 @@ struct DriverChoices {
     // The anisotropy --anisotropy auto gives (TextureCache): 1 where every tap costs CPU time,
     // kHardwareAnisotropy where the texture units filter nearly for free.
     int autoAnisotropy = 1;
+    // How frames are timed (render/frame/PassProfiler.h): a glFinish around every pass, whose
+    // wall clock is exact on a software rasteriser (its timer queries miss its threads' work),
+    // or, on a GPU, timer queries and frames issued back to back, as an application issues
+    // them (a glFinish would drain the GPU between passes).
+    bool finishAroundPasses = true;
 };
 
 // The choices of `profile`; Auto takes the GPU's unless the current context's GL_RENDERER

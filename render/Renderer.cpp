@@ -62,6 +62,8 @@ void Renderer::apply(const RendererDesc& requested)
         gpuScene_.setLightingTerms(desc.lightingTerms);
     if (first || desc.lightTexels != old.lightTexels)
         gpuScene_.setLightTexels(desc.lightTexels);
+    profiler_.setTiming(
+        desc.passTiming.value_or(gpuScene_.driverChoices().finishAroundPasses ? PassTiming::Wall : PassTiming::Gpu));
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);
@@ -102,20 +104,58 @@ Technique& Renderer::technique(std::string_view name)
 
 FrameSample Renderer::renderFrame(Technique& technique, ViewMode view)
 {
+    // The frames queued before are finished first; their samples stay for finishedFrames.
+    while (finishOldestFrame(true)) {
+    }
     // A technique whose storage, planned from the frame before, was too small for this one has
     // planned anew, and the frame is rendered again (render/culling/ClusterLists.h). Twice at most: a
     // frame whose lists overflowed their storage may have hidden how long the longest is.
     constexpr int kAttempts = 3;
     for (int attempt = 1;; ++attempt) {
-        FrameSample sample = renderFrameOnce(technique, view);
-        if (technique.frameFitted())
-            return sample;
+        issueFrame(technique, view);
+        finishOldestFrame(true);
+        const FinishedFrame frame = std::move(finished_.back());
+        finished_.pop_back();
+        if (desc_.countWork)
+            countWork();
+        if (frame.fitted)
+            return frame.sample;
         if (attempt == kAttempts)
             throw Error("the " + std::string(technique.name()) + " technique's storage cannot hold this frame's work");
     }
 }
 
-FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
+void Renderer::queueFrame(Technique& technique, ViewMode view)
+{
+    ML_ASSERT(!desc_.countWork);
+    while (inFlight_.size() >= kFramesInFlight)
+        finishOldestFrame(true);
+    issueFrame(technique, view);
+}
+
+bool Renderer::finishOldestFrame(bool wait)
+{
+    if (inFlight_.empty())
+        return false;
+    std::optional<FrameSample> sample = profiler_.takeOldestFrame(wait);
+    if (!sample)
+        return false;
+    Technique* technique = inFlight_.front();
+    inFlight_.pop_front();
+    // The GPU has run the frame (its last timestamp is there), so the status it copied is too.
+    const bool fitted = technique ? technique->oldestFrameFitted() : true;
+    finished_.push_back({std::move(*sample), fitted});
+    return true;
+}
+
+std::vector<Renderer::FinishedFrame> Renderer::finishedFrames(bool wait)
+{
+    while (finishOldestFrame(wait)) {
+    }
+    return std::exchange(finished_, {});
+}
+
+void Renderer::issueFrame(Technique& technique, ViewMode view)
 {
     ML_ASSERT(desc_.countWork || view != ViewMode::LightCount);
     // The technique's shaders read this renderer's G-buffer and, when counting, write the
@@ -159,10 +199,11 @@ FrameSample Renderer::renderFrameOnce(Technique& technique, ViewMode view)
     if (displayPassRan_)
         displayPass_.run(passes, *desc_.display, desc_.supersample);
     passes.finish();
-    FrameSample sample = profiler_.endFrame();
-    if (desc_.countWork)
-        countWork();
-    return sample;
+    const bool ranTechnique = !isGBufferView(view);
+    if (ranTechnique)
+        technique.frameIssued();
+    profiler_.endFrameQueued();
+    inFlight_.push_back(ranTechnique ? &technique : nullptr);
 }
 
 TransparencyPass& Renderer::transparencyPassFor(const TechniqueOptions& options)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -72,6 +73,10 @@ struct RendererDesc {
     // --driver-profile: whose choices the renderer makes (render/DriverProfile.h). Read when the
     // Renderer is made; apply() keeps it.
     DriverProfile driverProfile = DriverProfile::Auto;
+    // --pass-timing: how frames and their passes are timed (render/frame/PassProfiler.h); unset,
+    // the driver profile's choice: Wall on a software rasteriser, Gpu on a GPU
+    // (DriverChoices::finishAroundPasses).
+    std::optional<PassTiming> passTiming{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).
@@ -107,12 +112,34 @@ public:
 
     // One frame: views Final, LightCount and Volumes run the technique (LightCount needs
     // counting on); the G-buffer views run the geometry pass and show that quantity (the
-    // same for every technique). Waits for the GPU.
+    // same for every technique). Waits for the GPU, and renders the frame again where the
+    // technique's storage could not hold it (render/culling/ClusterLists.h).
     FrameSample renderFrame(Technique& technique, ViewMode view);
     FrameSample renderFrame(std::string_view techniqueName, ViewMode view)
     {
         return renderFrame(technique(techniqueName), view);
     }
+
+    // Frames issued and not finished that queueFrame allows: as many as a double-buffered
+    // swap chain, the GPU running one frame while the CPU issues the next.
+    static constexpr std::size_t kFramesInFlight = 2;
+    // One frame issued as an application's loop issues it: nothing waits for the GPU (under
+    // PassTiming::Gpu and Frame), but for the oldest frame when kFramesInFlight are unfinished.
+    // Its sample comes out of finishedFrames(). Not while counting work, whose counts are read
+    // back at once.
+    void queueFrame(Technique& technique, ViewMode view);
+    struct FinishedFrame {
+        FrameSample sample;
+        // false: the technique's storage, planned from a frame before, could not hold this
+        // frame's work, so its image lacks some light; the technique has planned anew (counted
+        // as cluster_rebuilds), and frames issued from then on fit.
+        bool fitted = true;
+    };
+    // The queued frames the GPU has finished, oldest first; with `wait`, every queued frame.
+    std::vector<FinishedFrame> finishedFrames(bool wait);
+    std::size_t framesInFlight() const { return inFlight_.size(); }
+    // How the frames are timed (desc().passTiming or the driver profile's choice).
+    PassTiming passTiming() const { return profiler_.timing(); }
     const WorkCounts& lastWorkCounts() const { return workCounts_; }
 
     // The last frame's colour as linear floats, rows top to bottom; for the LightCount view,
@@ -147,8 +174,11 @@ public:
     int height() const { return targets_->height; }
 
 private:
-    // renderFrame without the redo of a frame the technique's storage did not fit.
-    FrameSample renderFrameOnce(Technique& technique, ViewMode view);
+    // Issues one frame's commands (the profiler's frame ended, its sample to come).
+    void issueFrame(Technique& technique, ViewMode view);
+    // Moves the oldest frame in flight to finished_ once the GPU has run it (with `wait`, after
+    // waiting for it); false where none is in flight or, without `wait`, it is not done.
+    bool finishOldestFrame(bool wait);
     // What the settings ask of the techniques' shaders.
     TechniqueOptions techniqueOptions() const;
     // The targets for desc_'s size and layout, and what was made for the old layout dropped.
@@ -186,6 +216,10 @@ private:
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // the volumes view
     gl::Program overlayProgram_;
 
+    // The frames issued and not yet finished, oldest first: the technique each ran, whose
+    // storage check it is (null for the G-buffer views, which run none).
+    std::deque<Technique*> inFlight_;
+    std::vector<FinishedFrame> finished_;  // finished, not yet taken by finishedFrames
     WorkCounts workCounts_;
     ViewMode lastView_ = ViewMode::Final;
     bool displayed_ = false;       // the last frame has a displayed picture

@@ -24,8 +24,8 @@ void main()
     // The base colour from c_diff + F0 − 0.04 · (1 − metallic) (lib/lighting.glsl Surface).
     vec3 baseColour = s.diffuse + s.specular - vec3(0.04 * (1.0 - s.metallic));
     outSurface = s.metallicRoughness
-                     ? packMetallicRoughnessSurface(viewDepth(s.position), s.normal, baseColour, s.metallic, s.roughness)
-                     : packSurface(viewDepth(s.position), s.normal, s.diffuse, s.specular, s.shininess);
+                     ? packMetallicRoughnessSurface(meshViewDepth(), s.normal, baseColour, s.metallic, s.roughness)
+                     : packSurface(meshViewDepth(), s.normal, s.diffuse, s.specular, s.shininess);
 #else
     // The seed layout keeps c_diff and F0 as floats, and roughness in the shininess's place.
     outPositionShininess = vec4(s.position, s.metallicRoughness ? s.roughness : s.shininess);

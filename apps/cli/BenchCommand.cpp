@@ -35,8 +35,27 @@ struct BenchResult {
     ImageSize size;
     int frames = 0;
     FrameSummary measured;           // the measured frames
+    int warmupFrames = 0;            // rendered before them
     std::optional<WorkCounts> work;  // with --count-work
 };
+
+// --warmup auto: the warm-up ends once kSettledFrames frames in a row (the first frame, which
+// compiles and allocates, never among them) lie within kSettledSpread of each other, or after
+// kWarmupTimeBox and at least two frames, or after kMaxWarmupFrames.
+constexpr int kSettledFrames = 3;
+constexpr double kSettledSpread = 1.10;  // the slowest of them at most 10% over the fastest
+constexpr std::chrono::milliseconds kWarmupTimeBox{1000};
+constexpr int kMaxWarmupFrames = 100;
+
+bool settled(const std::vector<FrameSample>& frames)
+{
+    if (frames.size() < 1 + kSettledFrames)
+        return false;
+    const auto last = frames.end() - kSettledFrames;
+    const auto [fastest, slowest] = std::minmax_element(
+        last, frames.end(), [](const FrameSample& a, const FrameSample& b) { return a.wallMs < b.wallMs; });
+    return slowest->wallMs <= kSettledSpread * fastest->wallMs;
+}
 
 // Rejects a list that names an entry twice: the sweep would measure it twice and the plot
 // would draw a line back on itself, so a repeat is almost surely a typo.
@@ -73,28 +92,59 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .shadowLights = options.shadowLights,
                       .anisotropy = options.anisotropy,
                       .display = chooseDisplay(scene, options.display),
-                      .driverProfile = options.driver.profile};
+                      .driverProfile = options.driver.profile,
+                      .passTiming = options.driver.passTiming};
     Renderer renderer(scene, lights, desc);
     Technique& technique = renderer.technique(techniqueName);
+    // Under PassTiming::Wall each frame is rendered and waited for; otherwise frames are issued
+    // back to back, as an application issues them, and their samples arrive a frame or two
+    // later. Either way `finished` holds the samples of the frames kept, in the order issued:
+    // a frame whose lists overflowed their storage (ClusterLists) is dropped, and another is
+    // issued in its place (the technique counts it in cluster_rebuilds).
+    const bool backToBack = renderer.passTiming() != PassTiming::Wall;
+    std::vector<FrameSample> finished;
     int frameNumber = 0;
     const auto renderNextFrame = [&] {
         ++frameNumber;
-        if (!options.fps)
-            return renderer.renderFrame(technique, ViewMode::Final);
-        // The frame's wall time from glFinish to glFinish, plus the posing before it: what a
-        // recording or the viewer pays per frame of an animation.
         const auto start = std::chrono::steady_clock::now();
-        renderer.setTime(frameNumber / *options.fps);
+        if (options.fps)
+            renderer.setTime(frameNumber / *options.fps);
         const std::chrono::duration<double, std::milli> posing = std::chrono::steady_clock::now() - start;
-        FrameSample sample = renderer.renderFrame(technique, ViewMode::Final);
-        sample.wallMs += posing.count();
-        return sample;
+        if (!backToBack) {
+            // The frame's wall time from glFinish to glFinish, plus the posing before it: what a
+            // recording or the viewer pays per frame of an animation. (Back to back, the period
+            // from frame to frame includes the posing already.)
+            FrameSample sample = renderer.renderFrame(technique, ViewMode::Final);
+            sample.wallMs += posing.count();
+            finished.push_back(std::move(sample));
+            return;
+        }
+        renderer.queueFrame(technique, ViewMode::Final);
+        for (Renderer::FinishedFrame& frame : renderer.finishedFrames(false))
+            if (frame.fitted)
+                finished.push_back(std::move(frame.sample));
     };
-    for (int i = 0; i < options.warmup; ++i)
+    std::size_t warmup = 0;
+    if (options.warmup) {
+        warmup = static_cast<std::size_t>(*options.warmup);
+        while (finished.size() < warmup)
+            renderNextFrame();
+    } else {
+        const auto start = std::chrono::steady_clock::now();
+        while (true) {
+            renderNextFrame();
+            if (settled(finished) || frameNumber >= kMaxWarmupFrames ||
+                (finished.size() >= 2 && std::chrono::steady_clock::now() - start >= kWarmupTimeBox))
+                break;
+        }
+        warmup = finished.size();
+    }
+    while (finished.size() < warmup + static_cast<std::size_t>(options.frames))
         renderNextFrame();
-    std::vector<FrameSample> frames;
-    for (int i = 0; i < options.frames; ++i)
-        frames.push_back(renderNextFrame());
+    // The frames still in flight finish; the window is the frames after the warm-up.
+    renderer.finishedFrames(true);
+    const std::vector<FrameSample> frames(finished.begin() + static_cast<std::ptrdiff_t>(warmup),
+                                          finished.begin() + static_cast<std::ptrdiff_t>(warmup) + options.frames);
 
     BenchResult result;
     result.technique = techniqueName;
@@ -102,6 +152,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     result.size = size;
     result.frames = options.frames;
     result.measured = summarizeFrames(frames);
+    result.warmupFrames = static_cast<int>(warmup);
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
@@ -116,7 +167,14 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
 // "[3/12] deferred 4096 lights 1280x720": the sweep's case number before its label.
 std::string caseLabel(std::size_t index, std::size_t total, const std::string& label)
 {
-    return "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + label;
+    // Appended piece by piece: GCC 12's -Wrestrict misreads the chain of + inlined here.
+    std::string text = "[";
+    text += std::to_string(index);
+    text += '/';
+    text += std::to_string(total);
+    text += "] ";
+    text += label;
+    return text;
 }
 
 std::string formatMs(double ms)
@@ -145,19 +203,26 @@ std::string optionalCount(const std::optional<std::uint64_t>& count)
     return count ? std::to_string(*count) : std::string();
 }
 
+std::string optionalMs(const std::optional<double>& ms) { return ms ? formatMs(*ms) : std::string(); }
+
 // docs/cli.md documents every column. Without the header line for the shards after the first.
 std::string csvText(const std::vector<BenchResult>& results, bool header)
 {
     std::string text =
         !header ? ""
                 : "technique,lights,width,height,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_gpu_ms_median,"
-                  "fragment_invocations,passes,light_evaluations,in_range_pairs,transparent_light_evaluations\n";
+                  "fragment_invocations,passes,light_evaluations,in_range_pairs,transparent_light_evaluations,"
+                  "pass_timing,warmup_frames,frame_ms_p95,frame_gpu_ms_p95,pass_gpu_ms\n";
     for (const BenchResult& r : results) {
         std::string passes;
+        std::string passGpuMs;
         for (const PassSummary& pass : r.measured.passes) {
             if (!passes.empty())
                 passes += ';';
-            passes += pass.name + ':' + formatMs(pass.wallMs) + ':' + optionalCount(pass.fragmentInvocations);
+            passes += pass.name + ':' + optionalMs(pass.wallMs) + ':' + optionalCount(pass.fragmentInvocations);
+            if (!passGpuMs.empty())
+                passGpuMs += ';';
+            passGpuMs += pass.name + ':' + optionalMs(pass.gpuMs);
         }
         const std::vector<std::string> fields = {
             r.technique,
@@ -174,6 +239,11 @@ std::string csvText(const std::vector<BenchResult>& results, bool header)
             r.work ? std::to_string(r.work->lightEvaluations) : "",
             r.work ? std::to_string(r.work->inRangePairs) : "",
             r.work ? std::to_string(r.work->transparentLightEvaluations) : "",
+            std::string(passTimingName(r.measured.timing)),
+            std::to_string(r.warmupFrames),
+            formatMs(r.measured.wallMs.p95),
+            formatMs(r.measured.gpuMs.p95),
+            passGpuMs,
         };
         for (std::size_t i = 0; i < fields.size(); ++i) {
             if (i)
@@ -211,21 +281,26 @@ std::string formatTable(const std::vector<std::vector<std::string>>& rows, const
 std::string tableText(const std::vector<BenchResult>& results, bool countWork)
 {
     std::vector<std::vector<std::string>> rows;
-    std::vector<bool> left = {true, false, false, false, false, false};
-    rows.push_back({"technique", "lights", "size", "median ms", "min ms", "max ms"});
+    std::vector<bool> left = {true, false, false, false, false, false, false, false};
+    rows.push_back({"technique", "lights", "size", "median ms", "p95 ms", "min ms", "max ms", "gpu median ms"});
     if (countWork) {
         rows.back().insert(rows.back().end(), {"light evals", "in range", "efficiency"});
         left.insert(left.end(), {false, false, false});
     }
-    rows.back().push_back("passes (median wall ms)");
+    // The pass times of the clock the frames were timed with (the first result's: one sweep,
+    // one timing).
+    const bool wallPasses = results.empty() || results.front().measured.timing == PassTiming::Wall;
+    rows.back().push_back(wallPasses ? "passes (median wall ms)" : "passes (median gpu ms)");
     left.push_back(true);
     for (const BenchResult& r : results) {
         std::vector<std::string> row = {r.technique,
                                         std::to_string(r.lights),
                                         formatSize(r.size),
                                         formatMs(r.measured.wallMs.median),
+                                        formatMs(r.measured.wallMs.p95),
                                         formatMs(r.measured.wallMs.min),
-                                        formatMs(r.measured.wallMs.max)};
+                                        formatMs(r.measured.wallMs.max),
+                                        formatMs(r.measured.gpuMs.median)};
         if (countWork) {
             row.push_back(std::to_string(r.work->lightEvaluations));
             row.push_back(std::to_string(r.work->inRangePairs));
@@ -239,14 +314,42 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
         }
         std::string passes;
         for (const PassSummary& pass : r.measured.passes) {
+            const std::optional<double> ms = wallPasses ? pass.wallMs : pass.gpuMs;
             char entry[96];
-            std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(), pass.wallMs);
+            if (ms)
+                std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(), *ms);
+            else
+                std::snprintf(entry, sizeof entry, "%s%s -", passes.empty() ? "" : ", ", pass.name.c_str());
             passes += entry;
         }
         row.push_back(passes);
         rows.push_back(std::move(row));
     }
     return formatTable(rows, left);
+}
+
+// What the table's columns measure, by how the frames were timed (docs/cli.md, `bench`).
+std::string clocksText(PassTiming timing, const std::string& warmup, int frames)
+{
+    char counts[64];
+    std::snprintf(counts, sizeof counts, ", then %d timed frame%s. ", frames, frames == 1 ? "" : "s");
+    std::string text = warmup;
+    text += counts;
+    switch (timing) {
+    case PassTiming::Wall:
+        text += "Pass timing wall: each frame and pass waited for (glFinish before and after); median/p95/min/max ms "
+                "on the CPU clock, gpu median ms between GL_TIMESTAMP queries, passes on the CPU clock.";
+        break;
+    case PassTiming::Gpu:
+        text += "Pass timing gpu: frames issued back to back (at most 2 in flight), nothing waited for; "
+                "median/p95/min/max ms the CPU's period from frame to frame, gpu median ms between GL_TIMESTAMP "
+                "queries, passes GL_TIME_ELAPSED.";
+        break;
+    case PassTiming::Frame:
+        text += "Pass timing frame: as gpu, without the per-pass queries (the profiler's own cost left out).";
+        break;
+    }
+    return text + "\n";
 }
 
 std::string plotText(const std::vector<BenchResult>& results, const BenchOptions& options,
@@ -334,9 +437,16 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     bench->add_option("--frames", options.frames, "Frames timed per combination")
         ->check(CLI::Range(1, kMaxFrames))
         ->capture_default_str();
-    bench->add_option("--warmup", options.warmup, "Frames rendered before timing (not counted)")
-        ->check(CLI::Range(0, kMaxFrames))
-        ->capture_default_str();
+    bench
+        ->add_option_function<std::string>(
+            "--warmup",
+            [&options](const std::string& text) {
+                options.warmup = text == "auto" ? std::nullopt : std::optional(std::stoi(text));
+            },
+            "Frames rendered before timing (not counted), or auto: until the frame time settles (3 frames within "
+            "10%, at most 1 s)")
+        ->check(CLI::IsMember({"auto"}) | CLI::Range(0, kMaxFrames))
+        ->default_str("auto");
     bench
         ->add_option("--fps", options.fps,
                      "Animate: frame k at scene time k/F, its posing timed with it (default: all at time 0)")
@@ -429,9 +539,13 @@ void runBench(const BenchOptions& options)
     }
 
     const std::string_view profile = driverProfileName(driverChoices(options.driver.profile).profile);
-    std::printf("%s on %s, driver profile %.*s\n%d warm-up frame%s, then the median of %d frame%s (wall clock)\n\n%s",
-                scene.source.c_str(), context.description().c_str(), int(profile.size()), profile.data(),
-                options.warmup, options.warmup == 1 ? "" : "s", options.frames, options.frames == 1 ? "" : "s",
+    const PassTiming timing =
+        results.empty() ? options.driver.passTiming.value_or(PassTiming::Wall) : results.front().measured.timing;
+    char warmup[64] = "Warm-up until the frame time settled (auto)";
+    if (options.warmup)
+        std::snprintf(warmup, sizeof warmup, "%d warm-up frame%s", *options.warmup, *options.warmup == 1 ? "" : "s");
+    std::printf("%s on %s, driver profile %.*s\n%s\n%s", scene.source.c_str(), context.description().c_str(),
+                int(profile.size()), profile.data(), clocksText(timing, warmup, options.frames).c_str(),
                 tableText(results, options.countWork).c_str());
     std::fflush(stdout);
     // Both outputs or neither.

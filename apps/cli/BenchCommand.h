@@ -23,7 +23,10 @@ struct BenchOptions {
     std::vector<int> lightCounts;         // empty: the scene's own lights
     std::vector<ImageSize> sizes{kDefaultImageSize};
     int frames = 5;
-    int warmup = 1;
+    // --warmup N: frames rendered before timing. None (--warmup auto, the default): until
+    // the frame time settles (measure(): kSettledFrames in a row within kSettledSpread of each
+    // other), within kWarmupTimeBox and kMaxWarmupFrames.
+    std::optional<int> warmup;
     // --fps F: frame k of a combination (warm-up frames first, k from 1) is rendered at scene
     // time k / F, so that what the scene animates moves every frame, and its time counts the
     // posing (Renderer::setTime) as well as the frame. None: every frame at time 0.

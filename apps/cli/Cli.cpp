@@ -88,8 +88,9 @@ int runCli(int argc, const char* const* argv)
 
     BenchOptions bench;
     CLI::App* benchCommand = addBenchCommand(app, bench);
-    CLI::App* devicesCommand =
-        app.add_subcommand("devices", "List the EGL devices: index (for --device), vendor, renderer, software or not");
+    CLI::App* devicesCommand = app.add_subcommand(
+        "devices",
+        "List the EGL devices: index (for --device), vendor, renderer, software or not, UUID (for --device too)");
 
     if (const std::optional<int> status = parseCommandLine(app, argc, argv))
         return *status;

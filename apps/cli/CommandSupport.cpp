@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 #include <regex>
 
 #include <CLI/CLI.hpp>
@@ -130,8 +129,27 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
             "Make the choices of a software rasteriser or of a GPU driver (auto: by the driver in use)")
         ->check(CLI::IsMember({"auto", "software", "gpu"}))
         ->default_str("auto");
-    command.add_option("--device", options.device, "Render on EGL device N (manylights devices lists them)")
-        ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+    command
+        .add_option_function<std::string>(
+            "--device",
+            [&options](const std::string& text) {
+                DeviceSelector selector;
+                parseDeviceSelector(text, selector);  // the check has accepted it
+                options.device = selector;
+            },
+            "Render on EGL device N, or on the device with this UUID (manylights devices lists both)")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                DeviceSelector selector;
+                return parseDeviceSelector(text, selector);
+            },
+            "N|UUID"));
+    command
+        .add_option_function<std::string>(
+            "--pass-timing", [&options](const std::string& name) { options.passTiming = *parsePassTiming(name); },
+            "How frames are timed: wall (a glFinish around every pass), gpu (timer queries, frames back to back), "
+            "frame (gpu without the per-pass queries); default: wall on a software rasteriser, gpu on a GPU")
+        ->check(CLI::IsMember({"wall", "gpu", "frame"}));
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
@@ -140,6 +158,7 @@ FrameSummary summarizeFrames(const std::vector<FrameSample>& frames)
 {
     ML_ASSERT(!frames.empty());
     FrameSummary summary;
+    summary.timing = frames.back().timing;
     std::vector<double> wallMs;
     std::vector<double> gpuMs;
     for (const FrameSample& frame : frames) {
@@ -148,16 +167,18 @@ FrameSummary summarizeFrames(const std::vector<FrameSample>& frames)
     }
     summary.wallMs = summarize(wallMs);
     summary.gpuMs = summarize(gpuMs);
+    // The median of a pass's times over the frames that have them.
+    const auto passMedian = [&](std::size_t p, std::optional<double> PassSample::*time) -> std::optional<double> {
+        std::vector<double> times;
+        for (const FrameSample& frame : frames)
+            if (p < frame.passes.size() && frame.passes[p].*time)
+                times.push_back(*(frame.passes[p].*time));
+        return times.empty() ? std::nullopt : std::optional(summarize(times).median);
+    };
     for (std::size_t p = 0; p < frames.back().passes.size(); ++p) {
-        std::vector<double> passWallMs;
-        std::vector<double> passGpuMs;
-        for (const FrameSample& frame : frames) {
-            passWallMs.push_back(frame.passes[p].wallMs);
-            passGpuMs.push_back(frame.passes[p].gpuMs);
-        }
         const PassSample& last = frames.back().passes[p];
-        summary.passes.push_back(
-            {last.name, summarize(passWallMs).median, summarize(passGpuMs).median, last.fragmentInvocations});
+        summary.passes.push_back({last.name, passMedian(p, &PassSample::wallMs), passMedian(p, &PassSample::gpuMs),
+                                  last.fragmentInvocations});
     }
     return summary;
 }
@@ -168,7 +189,9 @@ Statistics summarize(std::vector<double> values)
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {median, values.front(), values.back()};
+    // Nearest rank: the ceil(0.95 n)-th smallest.
+    const std::size_t rank = (95 * n + 99) / 100;
+    return {median, values[rank - 1], values.front(), values.back()};
 }
 
 CLI::Validator numberIn(double min, double max)

@@ -17,6 +17,7 @@
 
 #include "core/Error.h"
 
+#include "platform/EglChoice.h"
 #include "render/DriverProfile.h"
 #include "render/Renderer.h"            // kDefaultImageWidth, kDefaultImageHeight
 #include "render/effects/ShadowMaps.h"  // kMaxShadowLights
@@ -110,16 +111,21 @@ std::string formatSize(const ImageSize& size);
 void addAnisotropyOption(CLI::App& command, int& level);
 
 // --driver-profile and --device of render, bench and view (docs/cli.md): whose choices the
-// renderer makes (render/DriverProfile.h) and which EGL device it runs on (`manylights devices`).
+// renderer makes (render/DriverProfile.h) and which EGL device it runs on (`manylights devices`),
+// by index or UUID (platform/EglChoice.h: parseDeviceSelector).
 struct DriverOptions {
     DriverProfile profile = DriverProfile::Auto;
-    std::optional<int> device{};  // none: the first device that makes a context, hardware first
+    std::optional<DeviceSelector> device{};  // none: the first device that makes a context, hardware first
+    // --pass-timing wall|gpu|frame (render/frame/PassProfiler.h); none: the profile's choice.
+    std::optional<PassTiming> passTiming{};
 };
 void addDriverOptions(CLI::App& command, DriverOptions& options);
 
-// Median (the mean of the middle two for an even count), min and max; `values` not empty.
+// Median (the mean of the middle two for an even count), 95th percentile (nearest rank: the
+// smallest value that at least 95% of them do not exceed), min and max; `values` not empty.
 struct Statistics {
     double median = 0.0;
+    double p95 = 0.0;
     double min = 0.0;
     double max = 0.0;
 };
@@ -130,13 +136,14 @@ Statistics summarize(std::vector<double> values);
 // the same passes in the same order) the medians and the last frame's fragment invocations.
 struct PassSummary {
     std::string name;
-    double wallMs = 0.0;  // medians over the frames
-    double gpuMs = 0.0;
+    std::optional<double> wallMs;  // medians over the frames, where the frames' timing has them
+    std::optional<double> gpuMs;
     std::optional<std::uint64_t> fragmentInvocations;
 };
 struct FrameSummary {
-    Statistics wallMs;  // wall clock (render/frame/PassProfiler.h says why it is the one to compare)
-    Statistics gpuMs;
+    PassTiming timing = PassTiming::Wall;  // how the frames were timed
+    Statistics wallMs;                     // wall clock (FrameSample::wallMs says which interval)
+    Statistics gpuMs;                      // between the frame's GL_TIMESTAMP queries
     std::vector<PassSummary> passes;
 };
 FrameSummary summarizeFrames(const std::vector<FrameSample>& frames);

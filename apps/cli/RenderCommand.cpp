@@ -27,6 +27,22 @@ namespace {
 // shader compilation and first-use allocations in the driver.
 constexpr int kWarmupFrames = 1;
 
+// Which clock each time of --stats reads, and over what (docs/cli.md): the answer depends on
+// how the frames were timed (render/frame/PassProfiler.h).
+nlohmann::json timesJson(PassTiming timing)
+{
+    nlohmann::json times;
+    times["frame_ms"] = timing == PassTiming::Wall
+                            ? "CPU clock, from a glFinish before the frame to one after it"
+                            : "CPU clock, from the frame's start until the CPU saw the GPU finish it";
+    times["frame_gpu_ms"] = "GPU clock, between GL_TIMESTAMP queries at the frame's start and end";
+    times["gpu_ms"] = timing == PassTiming::Frame ? "none: --pass-timing frame makes no per-pass queries"
+                                                  : "GPU clock, GL_TIME_ELAPSED around the pass";
+    times["wall_ms"] = timing == PassTiming::Wall ? "CPU clock, from a glFinish before the pass to one after it"
+                                                  : "none: only --pass-timing wall waits for each pass";
+    return times;
+}
+
 nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
                               const std::vector<FrameSample>& frames, const std::string& device, float anisotropy,
                               const DriverChoices& driver, const Technique& technique, const WorkCounts* work)
@@ -47,21 +63,23 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["warmup_frames"] = kWarmupFrames;
     stats["warnings"] = scene.warnings.size();
     const auto summaryJson = [](const Statistics& statistics) {
-        return nlohmann::json{{"median", statistics.median}, {"min", statistics.min}, {"max", statistics.max}};
+        return nlohmann::json{
+            {"median", statistics.median}, {"p95", statistics.p95}, {"min", statistics.min}, {"max", statistics.max}};
+    };
+    const auto optionalJson = [](const auto& value) {
+        return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
     };
     const FrameSummary summary = summarizeFrames(frames);
-    // frame_ms is the wall clock between glFinish calls: exact on llvmpipe, whose timer
-    // queries miss its tile threads' work (render/frame/PassProfiler.h). frame_gpu_ms is the
-    // timer-query view of the same frames.
+    stats["pass_timing"] = std::string(passTimingName(summary.timing));
+    stats["times"] = timesJson(summary.timing);
     stats["frame_ms"] = summaryJson(summary.wallMs);
     stats["frame_gpu_ms"] = summaryJson(summary.gpuMs);
     nlohmann::json passes = nlohmann::json::array();
     for (const PassSummary& pass : summary.passes)
         passes.push_back({{"name", pass.name},
-                          {"gpu_ms", pass.gpuMs},
-                          {"wall_ms", pass.wallMs},
-                          {"fragment_invocations", pass.fragmentInvocations ? nlohmann::json(*pass.fragmentInvocations)
-                                                                            : nlohmann::json(nullptr)}});
+                          {"gpu_ms", optionalJson(pass.gpuMs)},
+                          {"wall_ms", optionalJson(pass.wallMs)},
+                          {"fragment_invocations", optionalJson(pass.fragmentInvocations)}});
     stats["passes"] = passes;
     for (const TechniqueCounter& counter : technique.counters())
         stats[counter.name] = counter.value;
@@ -207,7 +225,8 @@ void runRender(const RenderOptions& options)
                        .anisotropy = options.anisotropy,
                        .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
                        .supersample = options.supersample,
-                       .driverProfile = options.driver.profile});
+                       .driverProfile = options.driver.profile,
+                       .passTiming = options.driver.passTiming});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
 

@@ -25,6 +25,7 @@
 #include "core/Error.h"
 #include "gl/ShaderSource.h"
 #include "gl/VertexArray.h"
+#include "platform/EglChoice.h"
 #include "platform/HeadlessContext.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
@@ -368,14 +369,13 @@ void Viewer::run()
 
 namespace {
 
-// --device N in the viewer: the EGL device's renderer, asked before the window exists (listing
-// makes and ends a context on every device). Throws manylights::Error for an index that has no
-// device.
-std::string requestedDeviceRenderer(int index)
+// --device N|UUID in the viewer: the EGL device's renderer, asked before the window exists
+// (listing makes and ends a context on every device). Throws manylights::Error for an index or
+// a UUID that no device has.
+std::string requestedDeviceRenderer(const DeviceSelector& selector)
 {
     const std::vector<EglDeviceInfo> devices = listDevices();
-    checkDeviceIndex(index, devices.size());
-    return devices[static_cast<std::size_t>(index)].renderer;
+    return devices[selectListedDevice(selector, devices)].renderer;
 }
 
 }  // namespace
@@ -385,7 +385,7 @@ void runView(const ViewOptions& options)
     const std::string deviceRenderer = options.driver.device ? requestedDeviceRenderer(*options.driver.device) : "";
     Viewer viewer(options);
     if (options.driver.device && viewer.contextDescription().rfind(deviceRenderer, 0) != 0)
-        throw Error("--device " + std::to_string(*options.driver.device) + " is " + deviceRenderer +
+        throw Error("--device " + formatDeviceSelector(*options.driver.device) + " is " + deviceRenderer +
                     ", but the window's context is " + viewer.contextDescription() +
                     " (the display server chooses the window's GPU)");
     viewer.run();

@@ -122,9 +122,9 @@ void Viewer::drawPanel()
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(pass.name.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", pass.gpuMs);
+            pass.gpuMs ? ImGui::Text("%.3f", *pass.gpuMs) : ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", pass.wallMs);
+            pass.wallMs ? ImGui::Text("%.3f", *pass.wallMs) : ImGui::TextUnformatted("-");
         }
         ImGui::EndTable();
     }

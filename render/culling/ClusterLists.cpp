@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "core/Error.h"
@@ -508,20 +509,54 @@ void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid
                    });
 }
 
-bool ClusterLists::fitted()
+void ClusterLists::frameIssued()
 {
     if (!built_)
-        return true;
+        return;
     built_ = false;
-    statusBuffer_.read(0, sizeof(Status), &status_);
+    StatusCopy copy;
+    if (!spareStatus_.empty()) {
+        copy = std::move(spareStatus_.back());
+        spareStatus_.pop_back();
+    } else {
+        copy.buffer = gl::Buffer("cluster list status copy", sizeof(Status), nullptr,
+                                 GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
+        copy.mapped = copy.buffer.mapForReading();
+    }
+    // The lighting's atomics (listVisits) and the build's are shader writes: a copy reads them
+    // after this barrier.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    statusBuffer_.copyTo(copy.buffer, sizeof(Status));
+    copy.fence = gl::Fence::afterIssuedCommands();
+    copy.capacity = capacity_;
+    copy.laterParts = laterParts_;
+    copy.globalList = globalListOfBuild_;
+    pendingStatus_.push_back(std::move(copy));
+}
+
+bool ClusterLists::oldestFrameFitted()
+{
+    if (pendingStatus_.empty())
+        return true;
+    StatusCopy& copy = pendingStatus_.front();
+    copy.fence.wait();
+    std::memcpy(&status_, copy.mapped, sizeof(Status));
+    const std::uint32_t builtCapacity = copy.capacity;
+    const std::uint32_t builtLaterParts = copy.laterParts;
+    const bool builtWithGlobalList = copy.globalList;
+    spareStatus_.push_back(std::move(copy));
+    pendingStatus_.pop_front();
+
     const std::uint32_t candidates = status_.globalLightCandidates;
     const bool listHeldThem = candidates <= kGlobalLightCapacity;
-    globalLightsOfFrame_ = globalListOfBuild_ && listHeldThem ? candidates : 0;
+    globalLightsOfFrame_ = builtWithGlobalList && listHeldThem ? candidates : 0;
     globalListPlanned_ = candidates > 0 && listHeldThem;
-    const bool pairsFit = status_.pairsNeeded <= capacity_;
+    // Against the plan the frame was built with: later frames may have been built with a
+    // larger one since.
+    const bool pairsFit = status_.pairsNeeded <= builtCapacity;
     const std::uint32_t partsNeeded =
         status_.longestList == 0 ? 0 : (status_.longestList - 1) / kClusterListPart;  // after the first
-    const bool partsFit = partsNeeded <= laterParts_;
+    const bool partsFit = partsNeeded <= builtLaterParts;
     laterParts_ = partsNeeded;
     plan(status_.pairsNeeded);
     if (pairsFit && partsFit)

@@ -42,18 +42,26 @@
 // get pairs as wide lights, in the same frame. All or none: the set of the first
 // kGlobalLightCapacity to arrive would change from run to run, and with it the image.
 //
-// Nothing is read back during the frame. The storage for pairs and the number of parts the
-// lighting walks are planned from the frame before (with headroom); the GPU counts what the
-// frame needs, and after the frame, which the renderer waits for anyway, fitted() says whether
-// the plan held. When it did not (the first frame, or a frame whose lights moved into more
-// clusters), the lists are resized and the renderer redoes the frame: counted as
-// cluster_rebuilds. No pair is ever dropped from an image that is kept.
+// Nothing is read back during the frame, and nothing waits for it. The storage for pairs and
+// the number of parts the lighting walks are planned from the last frame whose status has been
+// read (with headroom); the GPU counts what the frame needs into the status buffer, which
+// frameIssued() copies, after the frame's commands, into a small ring of buffers the CPU reads
+// through a persistent mapping behind a fence: a frame or two later where frames are issued
+// back to back (PassTiming::Gpu), at once where the renderer waits for the frame anyway.
+// oldestFrameFitted() then says whether the plan that frame was built with held. When it did
+// not (the first frame, or a frame whose lights moved into more clusters), the lists are
+// resized and the renderer redoes the frame (or, issuing frames back to back, drops it from its
+// samples and issues another): counted as cluster_rebuilds. No pair is ever dropped from an
+// image that is kept.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
+#include <vector>
 
 #include "gl/Buffer.h"
+#include "gl/Fence.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/culling/ClusterGrid.h"
@@ -130,10 +138,17 @@ public:
     // that have them, adding to the lit image. Passes named "lighting".
     void lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const;
 
-    // After the frame: whether this frame's lists held every pair and its parts covered the
-    // longest list. If not, plans the storage and parts the frame needs: the frame must be
-    // redone (and counts as a rebuild). Reads the frame's status (a few bytes).
-    bool fitted();
+    // After all of a frame's commands are issued: copies the status of the frame built last
+    // (if one was built since) for oldestFrameFitted, behind a fence.
+    void frameIssued();
+    // Of the oldest frame issued and not yet checked: whether its lists held every pair and its
+    // parts covered the longest list (true where no frame is pending). If not, plans the storage
+    // and parts the frame needs: the frame must be redone (and counts as a rebuild). Reads the
+    // frame's status through the mapping, waiting for its fence where the GPU has not passed
+    // it yet.
+    bool oldestFrameFitted();
+    // Frames issued whose status oldestFrameFitted has not read yet.
+    std::size_t framesPending() const { return pendingStatus_.size(); }
 
     std::uint64_t rebuilds() const { return rebuilds_; }
     std::uint32_t pairs() const { return status_.pairsNeeded; }
@@ -202,9 +217,9 @@ private:
     std::uint64_t rebuilds_ = 0;
     std::size_t lightMemoryBytes_ = 0;  // the scene's lights' (GpuScene::lightMemoryBytes), last frame
     Status status_;
-    bool built_ = false;             // a frame was built whose status fitted() has not read
+    bool built_ = false;             // a frame was built whose status frameIssued() has not copied
     bool globalListPlanned_ = true;  // for the next frame built (hasGlobalList)
-    bool globalListOfBuild_ = true;  // of the frame built last, whose status fitted() reads
+    bool globalListOfBuild_ = true;  // of the frame built last
     bool masked_ = false;            // the frame built last made its lists from masks
     std::uint32_t globalLightsOfFrame_ = 0;
 
@@ -226,6 +241,18 @@ private:
     gl::Buffer longListTiles_;
     gl::Buffer histogram_;
     gl::Buffer statusBuffer_;
+    // A frame's status, copied after its commands; read behind the fence (frameIssued).
+    struct StatusCopy {
+        gl::Buffer buffer;  // persistently mapped
+        const void* mapped = nullptr;
+        gl::Fence fence;
+        // The plan the frame was built with: what its needs are checked against.
+        std::uint32_t capacity = 0;
+        std::uint32_t laterParts = 0;
+        bool globalList = false;
+    };
+    std::deque<StatusCopy> pendingStatus_;  // oldest first
+    std::vector<StatusCopy> spareStatus_;   // read, for reuse
     // Each cluster's bit mask over the frame's lights and its summary (a bit per mask word
     // holding a light), where the frame is masked. All zero between frames:
     // cluster_mask_lists.comp clears what it reads.

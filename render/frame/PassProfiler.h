@@ -4,12 +4,15 @@
 // pass, GL_TIMESTAMP per frame) are what a GPU profiler shows, but llvmpipe records them when
 // it bins commands, not when its threads rasterise the tiles, so it under-reports passes with
 // many draws by up to 10x. The wall clock between glFinish calls is exact on llvmpipe (the
-// GPU is the CPU) and on a GPU adds only the submission latency. frame_ms uses the wall
-// clock; the timer queries are reported beside it.
+// GPU is the CPU), but on a GPU each glFinish drains the GPU, so a frame timed that way is a
+// frame no application runs. PassTiming says which a frame gets; the driver profile picks
+// (DriverChoices::passTiming) and --pass-timing overrides (docs/performance.md, "Timing on a
+// GPU").
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,16 +23,37 @@
 
 namespace manylights {
 
+enum class PassTiming {
+    // A glFinish before and after every pass: each pass's wall-clock time is its own, and
+    // frames run one at a time. What a software rasteriser needs.
+    Wall,
+    // Timer queries around every pass and no glFinish anywhere: frames are issued back to back
+    // and each pass's GPU time is read once the GPU has run it, a frame or more later.
+    Gpu,
+    // Gpu without the per-pass queries: only the frame's two timestamps. The frame as it runs
+    // without the profiler, to see what the per-pass queries cost.
+    Frame,
+};
+std::string_view passTimingName(PassTiming timing);  // "wall", "gpu" or "frame"
+std::optional<PassTiming> parsePassTiming(std::string_view name);
+
 struct PassSample {
     std::string name;
-    double gpuMs = 0.0;                                // GL_TIME_ELAPSED
-    double wallMs = 0.0;                               // wall clock from glFinish to glFinish
-    std::optional<std::uint64_t> fragmentInvocations;  // absent where the driver cannot count
+    std::optional<double> gpuMs;                       // GL_TIME_ELAPSED; absent under PassTiming::Frame
+    std::optional<double> wallMs;                      // glFinish to glFinish; under PassTiming::Wall only
+    std::optional<std::uint64_t> fragmentInvocations;  // absent where the driver cannot count, or under Frame
 };
 
 struct FrameSample {
-    double gpuMs = 0.0;   // between GL_TIMESTAMPs at the frame's start and end
-    double wallMs = 0.0;  // wall clock from glFinish to glFinish
+    double gpuMs = 0.0;  // between GL_TIMESTAMPs at the frame's start and end
+    // The frame's time on the CPU clock. Under PassTiming::Wall, from glFinish to glFinish.
+    // Otherwise, for a frame issued right after the one before (back to back): from the end of
+    // that frame's issue to the end of this one's, the period an application's loop sees,
+    // which with a bounded number of frames in flight is the GPU's frame time when the GPU is
+    // the bottleneck; for a frame issued after the GPU was drained, from its start until the
+    // CPU saw the GPU finish it.
+    double wallMs = 0.0;
+    PassTiming timing = PassTiming::Wall;
     std::vector<PassSample> passes;
 };
 
@@ -50,15 +74,28 @@ public:
         std::chrono::steady_clock::time_point start_;
     };
 
-    PassProfiler();
+    explicit PassProfiler(PassTiming timing = PassTiming::Wall);
+
+    PassTiming timing() const { return timing_; }
+    // From the next frame on.
+    void setTiming(PassTiming timing);
 
     void beginFrame();
-    // Waits for the frame's queries and returns its sample.
+    // Ends the frame's queries without waiting for them: its sample comes out of
+    // takeOldestFrame.
+    void endFrameQueued();
+    // Ends the frame and waits for its sample; no earlier frame may be pending.
     FrameSample endFrame();
+    // The sample of the oldest frame ended and not yet taken: with `wait`, once the GPU has run
+    // it; without, only if it already has. nullopt when none is pending (or, without `wait`,
+    // none is done).
+    std::optional<FrameSample> takeOldestFrame(bool wait);
+    std::size_t framesPending() const { return pending_.size(); }
+
     [[nodiscard]] Scope pass(std::string_view name) { return Scope(*this, name); }
-    // The scopes opened since beginFrame, each with a glFinish at either end (endFrame sums
-    // the scopes of one name into one PassSample).
-    std::size_t scopesThisFrame() const { return passesThisFrame_; }
+    // The scopes opened since beginFrame (endFrame sums the scopes of one name into one
+    // PassSample).
+    std::size_t scopesThisFrame() const { return current_.passCount; }
 
 private:
     struct PassQueries {
@@ -67,15 +104,28 @@ private:
         gl::Query invocations;
         double wallMs = 0.0;
     };
+    // One frame's queries, reused once its sample is taken.
+    struct FrameQueries {
+        PassTiming timing = PassTiming::Wall;
+        gl::Query start;
+        gl::Query end;
+        std::vector<PassQueries> passes;
+        std::size_t passCount = 0;
+        std::chrono::steady_clock::time_point wallStart;
+        std::optional<double> wallMs;  // known at its end under Wall, or when issued back to back
+    };
     PassQueries& nextPass(std::string_view name);
+    FrameQueries freshFrame();
+    FrameSample sampleOf(const FrameQueries& frame) const;
 
+    PassTiming timing_;
     bool countInvocations_;
     bool inPass_ = false;  // GL allows one active time query: passes do not nest
-    gl::Query frameStart_;
-    gl::Query frameEnd_;
-    std::vector<PassQueries> passes_;  // reused from frame to frame
-    std::size_t passesThisFrame_ = 0;
-    std::chrono::steady_clock::time_point frameStartTime_;
+    FrameQueries current_;
+    std::deque<FrameQueries> pending_;  // ended, oldest first
+    std::vector<FrameQueries> spare_;   // taken, for reuse
+    // When the last frame's issue ended, while no wait has drained the frames since.
+    std::optional<std::chrono::steady_clock::time_point> lastIssueEnd_;
 };
 
 }  // namespace manylights

@@ -23,7 +23,8 @@ public:
     explicit ClusteredTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "clustered"; }
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
-    bool frameFitted() override { return lists_.fitted(); }
+    void frameIssued() override { lists_.frameIssued(); }
+    bool oldestFrameFitted() override { return lists_.oldestFrameFitted(); }
 
     // clusters (the grid's size), cluster_pairs and longest_cluster_list (of the last frame),
     // cluster_rebuilds (frames redone so far) and gpu_memory_bytes (lists and grid).

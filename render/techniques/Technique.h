@@ -59,11 +59,15 @@ public:
     // Renders the frame into targets.lit (already cleared to the background colour) and
     // leaves the scene's depth in targets.depthStencil.
     virtual void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) = 0;
-    // After a frame the renderer has waited for: false when the storage the technique planned
-    // for it (from the frame before) could not hold the frame's work, in which case the
-    // technique has planned for it and the renderer renders the frame again
-    // (render/culling/ClusterLists.h).
-    virtual bool frameFitted() { return true; }
+    // After all of a frame's commands are issued (the technique's and the passes after it): a
+    // technique whose storage is planned ahead keeps what it must check of the frame once the
+    // GPU has run it (render/culling/ClusterLists.h).
+    virtual void frameIssued() {}
+    // Of the oldest frame issued and not yet checked, waiting for the GPU to finish it where it
+    // has not: false when the storage the technique planned for it (from a frame before) could
+    // not hold the frame's work, in which case the technique has planned for it and the
+    // renderer renders the frame again.
+    virtual bool oldestFrameFitted() { return true; }
 
 private:
     TechniqueOptions options_;

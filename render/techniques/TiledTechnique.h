@@ -25,7 +25,8 @@ public:
     explicit TiledTechnique(const TechniqueOptions& options);
     std::string_view name() const override { return "tiled"; }
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
-    bool frameFitted() override { return lists_.fitted(); }
+    void frameIssued() override { lists_.frameIssued(); }
+    bool oldestFrameFitted() override { return lists_.oldestFrameFitted(); }
     // Those of render/culling/ClusterLists.h, clusters being the tiles.
     std::vector<TechniqueCounter> counters() const override { return lists_.counters(grid_); }
 

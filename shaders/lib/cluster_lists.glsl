@@ -6,10 +6,10 @@
 // tiles only (list_lighting.comp).
 //
 // Each listed light gets a finer test per pixel before it is shaded: whether the pixel's
-// surface lies in the light's sphere, the same test as lib/lighting.glsl's lightReach (so it
-// only skips pairs whose A · S is zero). A cluster is a tile of pixels by a depth slice; a
-// light far smaller than that (the courtyard at a million lights: ranges of 0.1 to 0.2 m, a
-// few pixels) reaches few of its pixels. The lists carry each light's sphere beside its index
+// surface lies in the light's sphere, the same test as lib/lighting.glsl's lightReach, with its
+// lightDistance (so it only skips pairs whose A · S is zero). A cluster is a tile of pixels by
+// a depth slice; a light far smaller than that (the courtyard at a million lights: ranges of
+// 0.1 to 0.2 m, a few pixels) reaches few of its pixels. The lists carry each light's sphere beside its index
 // (pair_sort.comp gathers them), so the test costs one fetch, in list order, and a length;
 // the light's index and the rest of it are fetched only for the lights that pass. Only those
 // are counted as evaluated (--count-work); the entries walked are counted too, as
@@ -132,7 +132,7 @@ vec3 shadeGlobalLights(Surface s, vec3 V, inout uint evaluated)
 #endif
     for (uint i = 0u; i < count; ++i) {
         vec4 positionRadius = globalLightSphere(i);
-        if (length(positionRadius.xyz - s.position) < positionRadius.w) {
+        if (lightDistance(positionRadius.xyz, s.position) < positionRadius.w) {
             color += shadeLocalLight(globalLight(i), globalLightRecord(i, positionRadius), s, V);
             ++evaluated;
         }
@@ -171,7 +171,7 @@ vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint
         uint chunkEnd = min(end, chunk + REACH_CHUNK);
         for (uint i = chunk; i < chunkEnd; ++i) {
             vec4 positionRadius = clusterListSphere(first + i);
-            if (length(positionRadius.xyz - s.position) < positionRadius.w)
+            if (lightDistance(positionRadius.xyz, s.position) < positionRadius.w)
                 reached |= 1u << (i - chunk);
         }
         evaluated += uint(bitCount(reached));

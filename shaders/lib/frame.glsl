@@ -17,10 +17,15 @@ layout(std140, binding = FRAME_BLOCK_BINDING) uniform Frame {
     vec4 terms;                 // 1 or 0: ambient, diffuse, specular terms on (the viewer's toggles)
 } frame;
 
-// Distance from the eye along the view axis (the depth the techniques cull with).
+// Distance from the eye along the view axis (the depth the techniques cull with). precise,
+// and the dot product written out: every program that computes it (the forward, G-buffer and
+// transparency passes) rounds it alike, so the depth the compact G-buffer stores is the one the
+// forward pass shades at (positionOnPixelRay).
 float viewDepth(vec3 worldPosition)
 {
-    return dot(worldPosition - frame.eye.xyz, frame.viewAxis.xyz);
+    precise vec3 offset = worldPosition - frame.eye.xyz;
+    precise float depth = offset.x * frame.viewAxis.x + offset.y * frame.viewAxis.y + offset.z * frame.viewAxis.z;
+    return depth;
 }
 
 // The frame's values that shaders read for every pixel: the eye, the scale of the pixel's
@@ -75,3 +80,23 @@ void passFrameValues()
     frameValuesOutput = frameValuesFromBlock();
 }
 #endif
+
+// The point at view depth `depth` on the ray through the centre of `pixel`: the point every
+// technique shades at a pixel (docs/lighting.md, "The shaded point"). The mesh passes take the
+// depth they interpolate, the deferred passes the depth the G-buffer holds, and both build the
+// point with this one function. Not the interpolated world position: a rasteriser may snap
+// the vertices to its sub-pixel grid (GL's SUBPIXEL_BITS) before it interpolates, so that the
+// interpolated point lies up to a fraction of a pixel beside the pixel's ray, by an amount that
+// differs from driver to driver; a light whose cut-off sphere passed there then reached a
+// pixel in forward's image and missed it in the compact G-buffer's (an NVIDIA H100, issue 40).
+// precise: no program contracts these multiply-adds in its own way.
+vec3 positionOnPixelRay(ivec2 pixel, float depth)
+{
+    FrameValues values = frameValues();
+    precise vec2 ndc = (vec2(pixel) + 0.5) * values.pixelRayScale.xy * 2.0 - 1.0;
+    // The direction through the pixel's centre whose component along the view axis is 1.
+    precise vec3 viewSpace = vec3(ndc * values.pixelRayScale.zw, -1.0);
+    precise vec3 ray = values.inverseViewRotation * viewSpace;
+    precise vec3 position = values.eye + ray * depth;
+    return position;
+}

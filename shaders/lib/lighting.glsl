@@ -139,6 +139,20 @@ vec3 shadeGlobal(Surface s, vec3 V)
     return color;
 }
 
+// The distance d from `position` to a light at `centre`: the one computation behind every
+// test of whether a light reaches a surface, lightReach's and the light lists' walks'
+// (lib/cluster_lists.glsl), so that the pairs a technique evaluates and the pairs counted in
+// range (shaders/in_range.comp) are the same on every driver. precise, and the sum of
+// squares written out: otherwise each program may contract its multiply-adds its own way,
+// and a pair at the edge of the sphere was in range for one program and not the other (one
+// pair in 1.46 million on an NVIDIA H100, issue 40).
+float lightDistance(vec3 centre, vec3 position)
+{
+    precise vec3 v = centre - position;
+    precise float squared = v.x * v.x + v.y * v.y + v.z * v.z;
+    return sqrt(squared);
+}
+
 // The unit direction L towards a point or spot light from `position` (xyz), and A(d) · S
 // (w). w is zero where the light does not reach; the culling of every technique may only
 // skip pairs for which it is zero.
@@ -151,7 +165,7 @@ vec3 shadeGlobal(Surface s, vec3 V)
 vec4 lightReach(GpuLight light, vec3 position)
 {
     vec3 toLight = light.positionRadius.xyz - position;
-    float d = length(toLight);
+    float d = lightDistance(light.positionRadius.xyz, position);
     // At d = 0 the direction to the light is undefined; the point gets nothing from it.
     bool reaches = d < light.positionRadius.w && d != 0.0;
     vec3 L = toLight / d;

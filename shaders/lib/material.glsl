@@ -112,10 +112,17 @@ vec3 normalMapped(vec3 N)
 // material is drawn with (shaders/transparent.frag); 1 for other variants.
 float meshCoverage = 1.0;
 
+// The fragment's view depth, interpolated: what the compact G-buffer stores.
+float meshViewDepth()
+{
+    return viewDepth(worldPosition);
+}
+
 Surface meshSurface()
 {
     Surface s;
-    s.position = worldPosition;
+    // On the pixel's ray at the interpolated depth, as every deferred pass rebuilds it.
+    s.position = positionOnPixelRay(ivec2(gl_FragCoord.xy), meshViewDepth());
     // What multiplies the base colour (diffuse and specular tint) and the coverage.
     vec3 base = vec3(1.0);
     float coverage = 1.0;

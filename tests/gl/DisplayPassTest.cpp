@@ -17,6 +17,7 @@
 #include "render/scene/GpuScene.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -184,7 +185,8 @@ TEST_F(DisplayPassTest, SupersamplingIsTheBoxFilterInLinearLight)
         const Image expected = boxDownsample(input, factor);
         ASSERT_EQ(out.size(), expected.rgb.size());
         for (std::size_t i = 0; i < out.size(); ++i)
-            EXPECT_NEAR(out[i], 255.0 * expected.rgb[i], 0.5 + 1e-3) << "value " << i << ", factor " << factor;
+            EXPECT_NEAR(out[i], 255.0 * expected.rgb[i], test::kEightBitConversionTolerance)
+                << "value " << i << ", factor " << factor;
     }
 }
 

@@ -3,6 +3,7 @@
 // them under both profiles: docs/testing.md). And the EGL devices `manylights devices` lists.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include <epoxy/gl.h>
@@ -10,6 +11,8 @@
 #include "GlContextTest.h"
 #include "core/Error.h"
 #include "gl/Driver.h"
+#include "platform/EglChoice.h"
+#include "platform/HeadlessContext.h"
 #include "render/DriverProfile.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
@@ -73,18 +76,46 @@ TEST_F(DriverProfileTest, RendererMakesTheProfilesChoices)
 
 TEST(EglDevices, ListedWithTheirRendererAndIndex)
 {
+    const EglPlatformChoice choice = eglPlatformChoice();
+    if (!choice.canEnumerateDevices)
+        GTEST_SKIP() << "EGL cannot enumerate devices here: " << choice.reason;
     const std::vector<EglDeviceInfo> devices = listDevices();
-    if (devices.empty())
-        GTEST_SKIP() << "EGL cannot enumerate devices here";
+    ASSERT_FALSE(devices.empty()) << "EGL enumerates devices but lists none";
     for (std::size_t i = 0; i < devices.size(); ++i) {
         EXPECT_EQ(devices[i].index, static_cast<int>(i));
         if (devices[i].problem.empty()) {
             EXPECT_FALSE(devices[i].renderer.empty()) << i;
         }
     }
-    EXPECT_THROW(HeadlessContext({.device = static_cast<int>(devices.size())}), Error);
-    const HeadlessContext first({.device = 0});
+    EXPECT_THROW(HeadlessContext({.device = DeviceSelector{.index = static_cast<int>(devices.size())}}), Error);
+    const HeadlessContext first({.device = DeviceSelector{.index = 0}});
     EXPECT_NE(first.description().find("via EGL device 0"), std::string::npos) << first.description();
+}
+
+// A device with EGL_EXT_device_persistent_id is found by its UUID (issue 40: EGL's order need
+// not be nvidia-smi's), and a UUID that no device has is an error naming it.
+TEST(EglDevices, ChosenByTheirUuid)
+{
+    if (!eglPlatformChoice().canEnumerateDevices)
+        GTEST_SKIP() << "EGL cannot enumerate devices here: " << eglPlatformChoice().reason;
+    const std::vector<EglDeviceInfo> devices = listDevices();
+    // Every byte 0xee: not a UUID any driver hands out (RFC 4122's variant bits are 10xx).
+    DeviceUuid absent{};
+    absent.fill(0xee);
+    try {
+        const HeadlessContext none({.device = DeviceSelector{.uuid = absent}});
+        ADD_FAILURE() << "a context on " << none.description();
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find(formatUuid(absent)), std::string::npos) << error.what();
+    }
+    const auto withUuid = std::find_if(devices.begin(), devices.end(), [](const EglDeviceInfo& device) {
+        return device.uuid && device.problem.empty();
+    });
+    if (withUuid == devices.end())
+        GTEST_SKIP() << "no EGL device here makes a context and has EGL_EXT_device_persistent_id";
+    const HeadlessContext chosen({.device = DeviceSelector{.uuid = withUuid->uuid}});
+    EXPECT_NE(chosen.description().find("via EGL device " + std::to_string(withUuid->index)), std::string::npos)
+        << chosen.description();
 }
 
 }  // namespace

@@ -94,7 +94,12 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
                                                      "passes",
                                                      "light_evaluations",
                                                      "in_range_pairs",
-                                                     "transparent_light_evaluations"};
+                                                     "transparent_light_evaluations",
+                                                     "pass_timing",
+                                                     "warmup_frames",
+                                                     "frame_ms_p95",
+                                                     "frame_gpu_ms_p95",
+                                                     "pass_gpu_ms"};
     ASSERT_EQ(header, expectedHeader);
     const auto column = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
@@ -117,7 +122,13 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
         // With one frame the median is that frame, and so are min and max.
         EXPECT_EQ(row[column("frame_ms_min")], row[column("frame_ms_median")]);
         EXPECT_EQ(row[column("frame_ms_max")], row[column("frame_ms_median")]);
+        EXPECT_EQ(row[column("frame_ms_p95")], row[column("frame_ms_median")]);
         EXPECT_FALSE(row[column("passes")].empty());
+        // The software profile waits for every pass, the GPU's issues frames back to back
+        // (image.gpu.*); --warmup 0 renders none before.
+        EXPECT_EQ(row[column("pass_timing")], test::testDriverProfile() == "gpu" ? "gpu" : "wall");
+        EXPECT_EQ(row[column("warmup_frames")], "0");
+        EXPECT_EQ(split(row[column("pass_gpu_ms")], ';').size(), split(row[column("passes")], ';').size());
         const std::uint64_t evaluations = std::stoull(row[column("light_evaluations")]);
         const std::uint64_t inRange = std::stoull(row[column("in_range_pairs")]);
         EXPECT_GT(inRange, 0u);
@@ -160,8 +171,46 @@ TEST(Bench, FpsPosesTheMovingLightsInEveryFrame)
         ASSERT_EQ(result.exitCode, 0) << result.stderrText;
         const std::vector<std::string> rows = lines(readText(csv));
         ASSERT_EQ(rows.size(), 2u);
-        EXPECT_EQ(occurrences(rows[1], "pose lights:"), animate ? 1u : 0u) << rows[1];
+        const std::vector<std::string> header = split(rows[0], ',');
+        const std::vector<std::string> row = split(rows[1], ',');
+        ASSERT_EQ(row.size(), header.size()) << rows[1];
+        const auto passes =
+            static_cast<std::size_t>(std::find(header.begin(), header.end(), "passes") - header.begin());
+        EXPECT_EQ(occurrences(row[passes], "pose lights:"), animate ? 1u : 0u) << rows[1];
     }
+}
+
+// --pass-timing gpu: the frames are issued back to back and timed by the GL's timer queries
+// (docs/performance.md, "Timing on a GPU"), which the table and the CSV say; the passes have
+// GPU times and no wall times. --warmup auto (the default) renders frames until their time
+// settles: at least two here, the first of which compiles the programs.
+TEST(Bench, GpuPassTimingIssuesFramesBackToBackAndSaysSo)
+{
+    const auto dir = scratchDirectory();
+    const auto csv = dir / "gpu.csv";
+    const test::ProcessResult result = runExecutable({"bench", "--techniques", "clustered", "--size", "64x36",
+                                                      "--frames", "3", "--pass-timing", "gpu", "--csv", csv.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    EXPECT_NE(result.stdoutText.find("Pass timing gpu: frames issued back to back"), std::string::npos)
+        << result.stdoutText;
+    EXPECT_NE(result.stdoutText.find("passes (median gpu ms)"), std::string::npos) << result.stdoutText;
+    const std::vector<std::string> rows = lines(readText(csv));
+    ASSERT_EQ(rows.size(), 2u);
+    const std::vector<std::string> header = split(rows[0], ',');
+    const std::vector<std::string> row = split(rows[1], ',');
+    ASSERT_EQ(row.size(), header.size()) << rows[1];
+    const auto column = [&](const std::string& name) {
+        return row[static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin())];
+    };
+    EXPECT_EQ(column("pass_timing"), "gpu");
+    EXPECT_GE(std::stoi(column("warmup_frames")), 2);
+    EXPECT_GT(std::stod(column("frame_ms_median")), 0.0);
+    EXPECT_GE(std::stod(column("frame_ms_p95")), std::stod(column("frame_ms_median")));
+    // name::invocations (no wall time) per pass, and name:gpu_ms beside it.
+    for (const std::string& pass : split(column("passes"), ';'))
+        EXPECT_NE(pass.find("::"), std::string::npos) << pass;
+    for (const std::string& pass : split(column("pass_gpu_ms"), ';'))
+        EXPECT_GE(std::stod(pass.substr(pass.rfind(':') + 1)), 0.0) << pass;
 }
 
 // A job array's tasks (docs/cli.md, "On a cluster"): three shards of a four-case sweep, each

@@ -24,6 +24,7 @@
 #include "render/output/ExrFile.h"
 #include "render/output/HeatMapLegend.h"
 #include "render/output/Image.h"
+#include "tests/support/ImageComparison.h"
 
 namespace manylights {
 namespace {
@@ -226,7 +227,8 @@ TEST(DisplayOutput, SupersampledPfmIsTheBoxFilteredLargerFrame)
     const std::vector<unsigned char> png = readPng(dir / "supersampled.png");
     ASSERT_EQ(png.size(), expected.rgb.size());
     for (std::size_t i = 0; i < png.size(); ++i)
-        ASSERT_NEAR(png[i], 255.0 * std::clamp(expected.rgb[i], 0.0f, 1.0f), 0.5 + 1e-3) << "value " << i;
+        ASSERT_NEAR(png[i], 255.0 * std::clamp(expected.rgb[i], 0.0f, 1.0f), test::kEightBitConversionTolerance)
+            << "value " << i;
 }
 
 TEST(DisplayOutput, ExrFloatHoldsThePfmAndEveryAovEqualsItsView)

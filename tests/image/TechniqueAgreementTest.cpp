@@ -22,10 +22,17 @@
 // 8 bits changes it by ≤ q = 0.5/255, so kd·D changes by ≤ q·D ≤ (q / kd)·colour; the same for
 // ks. ke is stored as a half float (≤ 2^-10 relative, llvmpipe truncates). The octahedral normal
 // (RG16, ≤ 5e-5 measured) moves N·L by as much and the specular lobe by up to √s·e^-½ times that
-// (≈ 5 for s = 64): 3e-4 relative. The view depth is a 32-bit float and the reconstructed
-// position is within 5e-5 of a unit of forward's (measured on the default scene at 15 units),
-// far below what the kd term allows. The shininess code (16 bits) moves (N·H)^s by ≤ 3.1e-5 of
-// ks·I. So, with kd and ks of the pixel taken from the seed layout's --view diffuse/specular:
+// (≈ 5 for s = 64): 3e-4 relative. The view depth is stored as its 32-bit float's bits, and
+// forward and the deferred passes build the shaded point from that depth with one precise
+// function (docs/lighting.md, "The shaded point"): the same point, bit for bit. (It was the
+// interpolated position in forward, which an NVIDIA H100's sub-pixel snapping moved off the
+// pixel's ray; where a light's cut-off sphere passed between the two points, 5 values of the
+// default scene differed by a whole light's contribution at its cut, 3.7 times this bound.)
+// The shininess code (16 bits) moves (N·H)^s by ≤ 3.1e-5 of ks·I. Every 8-bit and 16-bit
+// code is made by GLSL's packUnorm functions, round(clamp(c, 0, 1) · (2^b − 1)) (GLSL 4.50
+// §8.4): within half a step, unlike a fixed-function conversion to a unorm target, which may
+// give either neighbour (GL 4.6 §2.3.5.2). So, with kd and ks of the pixel taken from the seed layout's --view
+// diffuse/specular:
 //   |Δ| ≤ |forward| · (q/kd + q/ks + 2^-10 + 3e-4) + 1e-5 · |forward| + 1e-6.
 // Forward's image is the seed layout's to 1e-5 (the seed cases), so this also bounds the
 // compact layout against the seed layout.

@@ -73,20 +73,24 @@ Image renderPfm(const std::string& scene, const std::filesystem::path& output,
 
 ProcessResult runExecutable(const std::vector<std::string>& args, const std::string& environment)
 {
-    const std::filesystem::path errors =
-        std::filesystem::temp_directory_path() / ("manylights-stderr-" + std::to_string(::getpid()) + ".txt");
+    const std::string pid = std::to_string(::getpid());
+    const std::filesystem::path errors = std::filesystem::temp_directory_path() / ("manylights-stderr-" + pid + ".txt");
+    const std::filesystem::path output = std::filesystem::temp_directory_path() / ("manylights-stdout-" + pid + ".txt");
     std::string command = environment + " '" MANYLIGHTS_EXE "'";
     for (const std::string& arg : withTestDriverProfile(args))
         command += " '" + arg + "'";
-    command += " >/dev/null 2>'" + errors.string() + "' </dev/null";
+    command += " >'" + output.string() + "' 2>'" + errors.string() + "' </dev/null";
     const int status = std::system(command.c_str());
     ProcessResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::ifstream in(errors);
-    std::stringstream text;
-    text << in.rdbuf();
-    result.stderrText = text.str();
-    std::filesystem::remove(errors);
+    const auto take = [](const std::filesystem::path& path) {
+        std::stringstream text;
+        text << std::ifstream(path).rdbuf();
+        std::filesystem::remove(path);
+        return text.str();
+    };
+    result.stderrText = take(errors);
+    result.stdoutText = take(output);
     return result;
 }
 

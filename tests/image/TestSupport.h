@@ -57,6 +57,7 @@ Image renderPfm(const std::string& scene, const std::filesystem::path& output,
 struct ProcessResult {
     int exitCode = -1;
     std::string stderrText;
+    std::string stdoutText;
 };
 
 // Runs the real executable as a child process (so a crash is seen as a crash), with

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +41,6 @@ TEST(WorkCounts, DeferredShadesEachPixelOnceAfterTheSameGeometryAsForward)
         GTEST_SKIP() << "the driver cannot count fragment-shader invocations";
     const auto lighting = deferred["passes"][1]["fragment_invocations"].get<std::uint64_t>();
     const auto geometry = deferred["passes"][0]["fragment_invocations"].get<std::uint64_t>();
-    const auto forwardRasterised = forward["passes"][0]["fragment_invocations"].get<std::uint64_t>();
     // The full-screen lighting pass shades every covered pixel at least once. Whether the
     // depth test (GL_GREATER against the G-buffer) keeps the background from being counted
     // is the driver's business: a GPU rejects it before shading, llvmpipe counts whole
@@ -48,11 +48,20 @@ TEST(WorkCounts, DeferredShadesEachPixelOnceAfterTheSameGeometryAsForward)
     // per pixel plus the helper quads along its edges, well under 10% more.
     EXPECT_GE(lighting, covered);
     EXPECT_LE(lighting, 320u * 180u * 11u / 10u);
-    // Forward's depth pre-pass rasterises the same geometry as the G-buffer pass, so the same
-    // count, and more than the lighting pass.
-    EXPECT_EQ(forward["passes"][0]["name"], "depth");
-    EXPECT_EQ(forwardRasterised, geometry);
-    EXPECT_GT(forwardRasterised, lighting);
+    // Forward shades after its depth pre-pass: every covered pixel's colour comes out of its
+    // fragment shader, so at least one invocation each.
+    ASSERT_EQ(forward["passes"][0]["name"], "depth");
+    ASSERT_EQ(forward["passes"][1]["name"], "forward");
+    EXPECT_GE(forward["passes"][1]["fragment_invocations"].get<std::uint64_t>(), covered);
+    EXPECT_GE(geometry, covered);
+    // The pre-pass rasterises the G-buffer pass's geometry, but its fragment shader
+    // (forward.frag's DEPTH_PREPASS) writes nothing, and a driver may skip running such a
+    // shader: an NVIDIA H100 counted 0 invocations, and any count is legal. llvmpipe runs
+    // it, for the same fragments as the G-buffer pass: that equality is llvmpipe's behaviour,
+    // checked only there.
+    if (forward["device"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(forward["passes"][0]["fragment_invocations"].get<std::uint64_t>(), geometry);
+    }
 }
 
 }  // namespace

@@ -30,6 +30,13 @@ inline constexpr Tolerance kAgreementTolerance{1e-5, 1e-6};
 // carrying ~1e-6 absolute error, a few ulps from pow() and normalize(); a wrong term is off by
 // orders of magnitude more.
 inline constexpr Tolerance kAnalyticTolerance{1e-4, 2e-5};
+// An 8-bit normalized value written by the GL against 255 times the exact value. The GL 4.6
+// core specification (§2.3.5.2, conversion from floating-point to normalized fixed-point)
+// lets convert_float_uint return either of the two integers closest to the scaled value,
+// preferring but not requiring the nearer: so the bound is under 1 level, not half a level
+// (llvmpipe rounds to nearest; an NVIDIA H100 gave 134 for 134.51). The 1e-3 is the float
+// arithmetic before the conversion: a few ulps of values up to 255.
+inline constexpr double kEightBitConversionTolerance = 1.0 + 1e-3;
 
 // Whether every channel of `image` is within the allowed difference of `reference`'s;
 // allowedAt(value index, reference value) gives it per value (a tolerance that depends on the
