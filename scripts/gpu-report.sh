@@ -35,7 +35,11 @@
 #   passes this: on an H100 forward takes 2.9 s a frame at 16,384 lights at 1080p)
 #   TEST_SHARDS=$(nproc) (processes for the tests, all suites together)
 #   LEARNOPENGL_LIGHTS="32 128 512"  LEARNOPENGL_REPS=2
-#   TESTS=1 SWEEP=1 COURTYARD=1 MASKED_LISTS=1 LEARNOPENGL=1 (0 skips a section)
+#   COST_LIGHTS=16384,1048576  COST_FRAMES=20 (the per-pass queries' cost: --pass-timing gpu
+#   against frame, at SWEEP_SIZE; PROFILER_COST_S=30)
+#   REFERENCE_DIR=DIR  forward against llvmpipe's forward: the PFMs scripts/make-llvmpipe-
+#   references.sh made on llvmpipe (REFERENCE_S=40); without it the section is left out
+#   TESTS=1 SWEEP=1 COURTYARD=1 MASKED_LISTS=1 PROFILER_COST=1 LEARNOPENGL=1 (0 skips a section)
 # On a lent GPU machine: ../shared/gpu/README.md (make-kit.sh, then ML=build/manylights through
 # .gpu-kit/on-device.sh).
 set -euo pipefail
@@ -59,6 +63,8 @@ courtyard_lights=${COURTYARD_LIGHTS:-256,1024,4096,16384,65536}
 courtyard_size=${COURTYARD_SIZE:-1280x720}
 lists_lights=${LISTS_LIGHTS:-1024,4096,16384}
 frames=${FRAMES:-5}
+cost_lights=${COST_LIGHTS:-16384,1048576}
+cost_frames=${COST_FRAMES:-20}
 budget=${BUDGET_MS:-250}
 learnopengl_lights=${LEARNOPENGL_LIGHTS:-32 128 512}
 learnopengl_reps=${LEARNOPENGL_REPS:-2}
@@ -459,6 +465,56 @@ if [ "${MASKED_LISTS:-1}" = 1 ]; then
       run_bench "lists-$limit" $((box / 2)) "${pre[@]}" -- bench/courtyard.json --techniques clustered,tiled \
         --lights "$lists_lights" --size "$courtyard_size" --frames "$frames" --classic
     done
+    end
+  fi
+fi
+
+if [ "${PROFILER_COST:-1}" = 1 ]; then
+  # The per-pass timer queries' own cost (docs/performance.md, "Timing on a GPU"): the same
+  # frames with them (--pass-timing gpu) and with only the frame's two timestamps (frame).
+  begin "What the per-pass queries cost: --pass-timing gpu against frame at $sweep_size"
+  box=$(box_for PROFILER_COST_S 30)
+  if [ "$box" = 0 ]; then no_time PROFILER_COST_S; else
+    say "\`tiled\` and \`clustered\` at ${cost_lights//,/, } lights, $cost_frames frames issued back to back," \
+        "with the per-pass queries, then without. Time box $box s (PROFILER_COST_S), half for each."
+    for timing in gpu frame; do
+      say; say "--pass-timing $timing"; say
+      run_bench "cost-$timing" $((box / 2)) -- bench/courtyard.json --techniques tiled,clustered \
+        --lights "$cost_lights" --size "$sweep_size" --frames "$cost_frames" --pass-timing "$timing"
+    done
+    end
+  fi
+fi
+
+if [ -n "${REFERENCE_DIR:-}" ]; then
+  # forward here against forward on llvmpipe (scripts/make-llvmpipe-references.sh made the
+  # references, with --anisotropy 1 and the software profile): docs/testing.md says what may
+  # differ, and this is how much does.
+  begin "forward against llvmpipe's forward (--anisotropy 1)"
+  box=$(box_for REFERENCE_S 40)
+  if [ "$box" = 0 ]; then no_time REFERENCE_S
+  elif [ ! -f "$REFERENCE_DIR/scenes.txt" ]; then
+    say "Skipped: $REFERENCE_DIR has no scenes.txt (scripts/make-llvmpipe-references.sh makes it)."
+    end
+  else
+    say "References from $(cat "$REFERENCE_DIR/device.txt" 2> /dev/null || echo 'an unnamed device'); each scene at" \
+        "320x180, forward, --anisotropy 1, here with this device's profile. Time box $box s (REFERENCE_S)."
+    say
+    : > "$out/references.txt"
+    refs_deadline=$(($(date +%s) + box))
+    while read -r name scene; do
+      left=$((refs_deadline - $(date +%s)))
+      [ "$left" -lt 2 ] && { echo "$name: not compared, the time box ran out" >> "$out/references.txt"; continue; }
+      # shellcheck disable=SC2086 # the scene is one word or none
+      if boxed "$left" "$ml" render $scene -o "$out/forward-$name.pfm" --size 320x180 --technique forward \
+           --anisotropy 1 "${device[@]}" > "$out/forward-$name.log" 2>&1; then
+        python3 scripts/compare-pfm.py "$REFERENCE_DIR/$name.pfm" "$out/forward-$name.pfm" "$name" \
+          >> "$out/references.txt" 2>&1 || true
+      else
+        echo "$name: render failed ($out/forward-$name.log)" >> "$out/references.txt"
+      fi
+    done < "$REFERENCE_DIR/scenes.txt"
+    fence "$out/references.txt"
     end
   fi
 fi
