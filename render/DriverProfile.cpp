@@ -33,7 +33,9 @@ DriverChoices driverChoices(DriverProfile profile)
             .multipliedSpecularPowers = false,
             .lightTexelsBeforeWindows = false,
             .autoAnisotropy = kHardwareAnisotropy,
-            .finishAroundPasses = false};
+            .finishAroundPasses = false,
+            .computeLighting = true,
+            .branchOnLightReach = true};
 }
 
 }  // namespace manylights

@@ -36,6 +36,17 @@ struct DriverChoices {
     // or, on a GPU, timer queries and frames issued back to back, as an application issues
     // them (a glFinish would drain the GPU between passes).
     bool finishAroundPasses = true;
+    // deferred's and clustered's lighting as a compute pass rather than a full-screen fragment
+    // pass (LightingStage): how current deferred renderers light on a GPU, and on the compute
+    // GPUs lent to this project (H100, H200) the only way the lighting gets the whole chip (2
+    // of an H100's 66 texture processing clusters run fragment shaders). On llvmpipe the
+    // fragment pass is the one measured (docs/techniques.md).
+    bool computeLighting = false;
+    // The light loops branch where a light does not reach the pixel (BRANCH_ON_REACH in the
+    // shaders): a GPU's warp whose lanes are all out of reach skips the shading. llvmpipe runs
+    // both sides of a branch under a mask, so there the loops test first and select
+    // (docs/performance.md).
+    bool branchOnLightReach = false;
 };
 
 // The choices of `profile`; Auto takes the GPU's unless the current context's GL_RENDERER

@@ -84,7 +84,12 @@ void Renderer::makeTargets()
 
 TechniqueOptions Renderer::techniqueOptions() const
 {
-    return {.countWork = desc_.countWork, .gbufferLayout = desc_.gbufferLayout, .localShadows = desc_.shadowLights > 0};
+    const LightingStage profileStage =
+        gpuScene_.driverChoices().computeLighting ? LightingStage::Compute : LightingStage::Fragment;
+    return {.countWork = desc_.countWork,
+            .gbufferLayout = desc_.gbufferLayout,
+            .localShadows = desc_.shadowLights > 0,
+            .lightingStage = desc_.lightingStage.value_or(profileStage)};
 }
 
 Technique& Renderer::technique(std::string_view name)

@@ -77,6 +77,9 @@ struct RendererDesc {
     // the driver profile's choice: Wall on a software rasteriser, Gpu on a GPU
     // (DriverChoices::finishAroundPasses).
     std::optional<PassTiming> passTiming{};
+    // --lighting-stage: deferred's and clustered's lighting as a fragment or a compute pass;
+    // unset, the driver profile's choice (DriverChoices::computeLighting).
+    std::optional<LightingStage> lightingStage{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).

@@ -26,7 +26,7 @@ for round in $(seq "$rounds"); do
     [ -n "$scene" ] && args+=("$scene")
     [ -n "$lights" ] && args+=(--lights "$lights")
     "$ML" "${args[@]}" --techniques "$techniques" --size "$size" --frames "$frames" \
-      --pass-timing "$timing" --csv "$out/$timing.csv" >/dev/null
+      --pass-timing "$timing" --csv "$out/$timing.csv" >/dev/null 2>&1
     python3 - "$out/$timing.csv" "round $round" <<'PY'
 import csv, sys
 for row in csv.DictReader(open(sys.argv[1])):

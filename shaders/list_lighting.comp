@@ -1,9 +1,9 @@
 #version 450 core
 // Lighting from the light lists of a cluster grid (lib/cluster_lists.glsl), in a compute pass:
 // an invocation per pixel, a workgroup per tile.
-// - EVERY_TILE: tiled's lighting (render/techniques/TiledTechnique.h). The workgroups cover the image;
-//   each covered pixel stores the global terms, the global lights and part 0 of its cluster's
-//   list.
+// - EVERY_TILE: tiled's lighting (render/techniques/TiledTechnique.h), and clustered's under
+//   --lighting-stage compute (ClusteredTechnique.h). The workgroups cover the image; each
+//   covered pixel stores the global terms, the global lights and part 0 of its cluster's list.
 // - otherwise: part `part` (1, 2, ...) of the lists longer than a part, for the clustered and
 //   tiled techniques. One workgroup per tile that cluster_long_lists.comp listed (an indirect
 //   dispatch: the CPU does not know how many; lib/listed_dispatch.glsl); pixels whose
@@ -55,16 +55,19 @@ void main()
 #endif
     vec3 V = viewVector(s.position);
     uint evaluated = 0u;
-#ifdef GLOBAL_LIGHT_LIST
-    vec3 color = shadeGlobalLights(s, V, evaluated);
+    // In clustered.frag's order (the global terms, the global lights, the cluster's list), so
+    // that clustered's two lighting stages give the same image, bit for bit.
+#ifdef EVERY_TILE
+    vec3 color = shadeGlobal(s, V);
 #else
     vec3 color = vec3(0.0);
 #endif
+#ifdef GLOBAL_LIGHT_LIST
+    color += shadeGlobalLights(s, V, evaluated);
+#endif
     color += shadeClusterListPart(cluster, part, s, V, evaluated);
     recordLightEvaluationsAt(pixel, evaluated);
-#ifdef EVERY_TILE
-    color += shadeGlobal(s, V);
-#else
+#ifndef EVERY_TILE
     color += imageLoad(litImage, pixel).rgb;
 #endif
     imageStore(litImage, pixel, vec4(color, 1.0));

@@ -93,7 +93,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .anisotropy = options.anisotropy,
                       .display = chooseDisplay(scene, options.display),
                       .driverProfile = options.driver.profile,
-                      .passTiming = options.driver.passTiming};
+                      .passTiming = options.driver.passTiming,
+                      .lightingStage = options.driver.lightingStage};
     Renderer renderer(scene, lights, desc);
     Technique& technique = renderer.technique(techniqueName);
     // Under PassTiming::Wall each frame is rendered and waited for; otherwise frames are issued

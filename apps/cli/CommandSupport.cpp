@@ -150,6 +150,13 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
             "How frames are timed: wall (a glFinish around every pass), gpu (timer queries, frames back to back), "
             "frame (gpu without the per-pass queries); default: wall on a software rasteriser, gpu on a GPU")
         ->check(CLI::IsMember({"wall", "gpu", "frame"}));
+    command
+        .add_option_function<std::string>(
+            "--lighting-stage",
+            [&options](const std::string& name) { options.lightingStage = *parseLightingStage(name); },
+            "deferred's and clustered's lighting as a full-screen fragment pass or a compute pass; default: "
+            "fragment on a software rasteriser, compute on a GPU")
+        ->check(CLI::IsMember({"fragment", "compute"}));
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }

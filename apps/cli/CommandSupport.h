@@ -118,6 +118,8 @@ struct DriverOptions {
     std::optional<DeviceSelector> device{};  // none: the first device that makes a context, hardware first
     // --pass-timing wall|gpu|frame (render/frame/PassProfiler.h); none: the profile's choice.
     std::optional<PassTiming> passTiming{};
+    // --lighting-stage fragment|compute (render/techniques/Technique.h); none: the profile's.
+    std::optional<LightingStage> lightingStage{};
 };
 void addDriverOptions(CLI::App& command, DriverOptions& options);
 

@@ -60,6 +60,7 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["shadow_lights"] = options.shadowLights;
     stats["anisotropy"] = anisotropy;
     stats["driver_profile"] = std::string(driverProfileName(driver.profile));
+    stats["lighting_stage"] = std::string(lightingStageName(technique.options().lightingStage));
     stats["warmup_frames"] = kWarmupFrames;
     stats["warnings"] = scene.warnings.size();
     const auto summaryJson = [](const Statistics& statistics) {
@@ -226,7 +227,8 @@ void runRender(const RenderOptions& options)
                        .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
                        .supersample = options.supersample,
                        .driverProfile = options.driver.profile,
-                       .passTiming = options.driver.passTiming});
+                       .passTiming = options.driver.passTiming,
+                       .lightingStage = options.driver.lightingStage});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
 

@@ -159,7 +159,9 @@ RendererDesc Viewer::rendererDesc() const
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
             .display = shown,
             .wireframe = wireframe_,
-            .driverProfile = options_.driver.profile};
+            .driverProfile = options_.driver.profile,
+            .passTiming = options_.driver.passTiming,
+            .lightingStage = options_.driver.lightingStage};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose

@@ -588,6 +588,45 @@ std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) co
             {"gpu_memory_bytes", static_cast<double>(lightMemoryBytes_ + memoryBytes() + grid.memoryBytes())}};
 }
 
+namespace {
+LightingProgram everyTileProgram(const std::string& label, const gl::Defines& techniqueDefines,
+                                 const ClusterGridShape& shape, bool listTexels, bool globalList)
+{
+    gl::Defines defines = clusterListDefines(clusterGridDefines(techniqueDefines, shape), listTexels, globalList);
+    defines.emplace_back("EVERY_TILE", "1");
+    return LightingProgram(label, {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, std::move(defines));
+}
+}  // namespace
+
+EveryTileLighting::EveryTileLighting(const std::string& label, const gl::Defines& techniqueDefines,
+                                     const ClusterGridShape& shape)
+    : programs_{{everyTileProgram(label, techniqueDefines, shape, false, false),
+                 everyTileProgram(label, techniqueDefines, shape, false, true)},
+                {everyTileProgram(label, techniqueDefines, shape, true, false),
+                 everyTileProgram(label, techniqueDefines, shape, true, true)}}
+{
+}
+
+void EveryTileLighting::run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists,
+                            FramePasses& passes) const
+{
+    const gl::Program& program = programs_[lists.readsTexels() ? 1 : 0][lists.hasGlobalList() ? 1 : 0].variant(
+        scene.lightingFeatures(), scene.indexedLightSource());
+    passes.run({.name = "lighting",
+                // The lists may be read as texels: fetches wait on the list passes' writes too.
+                .sampled = Resource::GBuffer | Resource::LightGrid,
+                .images = Resource::LitImage,
+                .storage = Resource::LightGrid,
+                .writes = Resource::LitImage},
+               [&] {
+                   grid.bind();
+                   lists.bind();
+                   program.set(kClusterListPartLocation, 0u);
+                   program.use();
+                   glDispatchCompute(static_cast<GLuint>(grid.gridWidth()), static_cast<GLuint>(grid.gridHeight()), 1);
+               });
+}
+
 void buildListsOverSurfaces(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, ClusterGrid& grid,
                             ClusterLists& lists)
 {

@@ -58,6 +58,7 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "gl/Buffer.h"
@@ -263,6 +264,22 @@ private:
     gl::Buffer globalLightRecords_;     // their GpuLight records, beside them
     gl::BufferTexture globalLightTexels_;
     gl::BufferTexture globalLightRecordTexels_;
+};
+
+// Part 0 of every list, lit in a compute pass over the whole image, a workgroup per tile
+// (list_lighting.comp's EVERY_TILE): tiled's lighting, and clustered's under
+// LightingStage::Compute. Each covered pixel stores the global terms, the global lights and
+// part 0 of its cluster's list; lightLongLists adds the later parts.
+class EveryTileLighting {
+public:
+    EveryTileLighting(const std::string& label, const gl::Defines& techniqueDefines, const ClusterGridShape& shape);
+    // After ClusterLists::build over `grid`: the pass named "lighting".
+    void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes) const;
+
+private:
+    // [texels][global list]: reading the lists from the storage buffer or from texels, walking
+    // the global list or not (ClusterLists::readsTexels, hasGlobalList).
+    LightingProgram programs_[2][2];
 };
 
 // What tiled and clustered do before their lighting: the G-buffer, the grid fitted to its

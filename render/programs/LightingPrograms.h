@@ -62,6 +62,9 @@ struct LightingFeatures {
     // one model pays nothing for the other's code (llvmpipe runs both sides of a select).
     bool blinnPhong = true;
     bool metallicRoughness = true;
+    // The light loops branch on a light's reach (BRANCH_ON_REACH) instead of testing first
+    // and selecting: the GPU profile's choice (DriverChoices::branchOnLightReach).
+    bool branchOnReach = false;
 
     auto operator<=>(const LightingFeatures&) const = default;
 };

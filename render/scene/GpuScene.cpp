@@ -15,6 +15,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const D
     // multiplications may well be slower: there it stays (no GPU was lent to measure it).
     if (driver_.multipliedSpecularPowers)
         features_.specularExponents = draws_.specularExponents();
+    features_.branchOnReach = driver_.branchOnLightReach;
     features_.blinnPhong = draws_.drawsModel(ShadingModel::BlinnPhong);
     features_.metallicRoughness = draws_.drawsModel(ShadingModel::MetallicRoughness);
     setTime(0.0);

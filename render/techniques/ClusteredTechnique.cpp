@@ -23,6 +23,8 @@ ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
       lighting_{{clusteredLighting(options, false, false), clusteredLighting(options, false, true)},
                 {clusteredLighting(options, true, false), clusteredLighting(options, true, true)}}
 {
+    if (options.lightingStage == LightingStage::Compute)
+        computeLighting_.emplace("clustered compute lighting", shaderDefines(options), kClusteredGridShape);
 }
 
 std::vector<TechniqueCounter> ClusteredTechnique::counters() const { return lists_.counters(grid_); }
@@ -30,6 +32,11 @@ std::vector<TechniqueCounter> ClusteredTechnique::counters() const { return list
 void ClusteredTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
     buildListsOverSurfaces(scene, targets, passes, grid_, lists_);
+    if (computeLighting_) {
+        computeLighting_->run(scene, grid_, lists_, passes);
+        lists_.lightLongLists(scene, grid_, passes);
+        return;
+    }
     const auto lightCount = static_cast<std::uint32_t>(scene.lightCount());
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();

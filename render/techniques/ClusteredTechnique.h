@@ -4,12 +4,15 @@
 // compaction to occupied clusters, and Harada's 2.5D culling, in one); then the light lists
 // of the occupied clusters are built on the GPU (render/culling/ClusterLists.h: pairs counted,
 // written and sorted by cluster), and one lighting pass shades each pixel with its cluster's
-// list, testing each light against the pixel's surface before shading it. Lists longer than
+// list, testing each light against the pixel's surface before shading it: a full-screen
+// fragment pass, or under --lighting-stage compute (the GPU profile's) a compute pass of a
+// workgroup per tile, the same image bit for bit (docs/techniques.md). Lists longer than
 // one invocation may walk are finished by passes over their tiles only. Nothing is read back
 // during the frame, and no light is dropped at any count (docs/techniques.md).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
@@ -33,10 +36,12 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    // Part 0 of every list, the one pass over the image: reading the lists from the storage
-    // buffer and from texels, walking the global list or not: [texels][global list]
-    // (ClusterLists::readsTexels, hasGlobalList).
+    // Part 0 of every list, the one pass over the image, under LightingStage::Fragment: reading
+    // the lists from the storage buffer and from texels, walking the global list or not:
+    // [texels][global list] (ClusterLists::readsTexels, hasGlobalList).
     LightingProgram lighting_[2][2];
+    // The same in a compute pass, under LightingStage::Compute (made only then).
+    std::optional<EveryTileLighting> computeLighting_;
 };
 
 }  // namespace manylights

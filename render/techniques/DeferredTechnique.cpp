@@ -5,10 +5,23 @@
 
 namespace manylights {
 
+namespace {
+LightingProgram deferredLighting(const TechniqueOptions& options)
+{
+    if (options.lightingStage == LightingStage::Compute)
+        return LightingProgram("deferred compute lighting", {{GL_COMPUTE_SHADER, "deferred.comp"}},
+                               shaderDefines(options));
+    return LightingProgram("deferred lighting",
+                           {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
+                           shaderDefines(options));
+}
+
+// deferred.comp's workgroup.
+constexpr int kComputeTile = 8;
+}  // namespace
+
 DeferredTechnique::DeferredTechnique(const TechniqueOptions& options)
-    : Technique(options),
-      lighting_("deferred lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
-                shaderDefines(options))
+    : Technique(options), lighting_(deferredLighting(options))
 {
 }
 
@@ -17,12 +30,32 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fra
     targets.gbuffer.fill(passes);
     const LightSource source = scene.walkedLightSource();
     const gl::Program& program = lighting_.variant(scene.lightingFeatures(), source);
-    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source)))
-        passes.run(lightBatchPass(batch), [&] {
+    const bool compute = options().lightingStage == LightingStage::Compute;
+    for (const LightBatch& batch :
+         lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source))) {
+        const auto bindBatch = [&] {
             scene.bindLightSource(source, batch);
             setLightBatch(program, batch);
-            drawCoveredPixels(program);
-        });
+        };
+        if (!compute) {
+            passes.run(lightBatchPass(batch), [&] {
+                bindBatch();
+                drawCoveredPixels(program);
+            });
+            continue;
+        }
+        // Each batch reads what the one before stored (deferred.comp).
+        passes.run({.name = "lighting",
+                    .sampled = Resource::GBuffer,
+                    .images = Resource::LitImage,
+                    .writes = Resource::LitImage},
+                   [&] {
+                       bindBatch();
+                       program.use();
+                       glDispatchCompute(static_cast<GLuint>((targets.width + kComputeTile - 1) / kComputeTile),
+                                         static_cast<GLuint>((targets.height + kComputeTile - 1) / kComputeTile), 1);
+                   });
+    }
 }
 
 }  // namespace manylights

@@ -4,6 +4,19 @@
 
 namespace manylights {
 
+std::string_view lightingStageName(LightingStage stage)
+{
+    return stage == LightingStage::Compute ? "compute" : "fragment";
+}
+
+std::optional<LightingStage> parseLightingStage(std::string_view name)
+{
+    for (LightingStage stage : {LightingStage::Fragment, LightingStage::Compute})
+        if (lightingStageName(stage) == name)
+            return stage;
+    return std::nullopt;
+}
+
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
     gl::Defines defines = gbufferDefines(options.gbufferLayout);

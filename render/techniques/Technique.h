@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,14 @@ namespace manylights {
 
 class GpuScene;
 class FramePasses;
+
+// Where deferred's and clustered's lighting runs (--lighting-stage): a full-screen fragment
+// pass, or a compute pass of an invocation per pixel that stores into the lit image. The
+// other techniques have one stage only (tiled computes; forward, the volumes and tiled-quads
+// rasterise) and ignore it. DriverChoices::computeLighting picks by default.
+enum class LightingStage { Fragment, Compute };
+std::string_view lightingStageName(LightingStage stage);  // "fragment" or "compute"
+std::optional<LightingStage> parseLightingStage(std::string_view name);
 
 // How a technique's shaders are built.
 struct TechniqueOptions {
@@ -30,6 +39,7 @@ struct TechniqueOptions {
     // light) pair even when no light has a map (it runs masked, not skipped): 5x the deferred
     // lighting pass.
     bool localShadows = false;
+    LightingStage lightingStage = LightingStage::Fragment;
 
     bool operator==(const TechniqueOptions&) const = default;
 };

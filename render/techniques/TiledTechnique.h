@@ -33,9 +33,7 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    // [texels][global list]: reading the lists from the storage buffer or from texels, walking
-    // the global list or not (ClusterLists::readsTexels, hasGlobalList).
-    LightingProgram lighting_[2][2];
+    EveryTileLighting lighting_;
 };
 
 }  // namespace manylights

@@ -166,6 +166,20 @@ vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint
     if (end > begin)
         atomicAdd(listVisits, end - begin);
 #endif
+#ifdef BRANCH_ON_REACH
+    // The GPU profile's walk: each entry tested and, where it reaches, shaded, in list order (the
+    // same sum as the chunked walk below). A GPU skips the shading where no lane of a warp is
+    // in reach and reads an entry every lane of the warp shares (one cluster) as a broadcast;
+    // the chunks exist for llvmpipe, whose if runs under a mask.
+    for (uint i = begin; i < end; ++i) {
+        vec4 positionRadius = clusterListSphere(first + i);
+        if (lightDistance(positionRadius.xyz, s.position) < positionRadius.w) {
+            ++evaluated;
+            uint lightIndex = clusterListLight(first + i);
+            color += shadeLocalLight(lightIndex, lightWithPositionRadius(lightIndex, positionRadius), s, V);
+        }
+    }
+#else
     for (uint chunk = begin; chunk < end; chunk += REACH_CHUNK) {
         uint reached = 0u;  // bit k: entry chunk + k reaches the surface
         uint chunkEnd = min(end, chunk + REACH_CHUNK);
@@ -182,5 +196,6 @@ vec3 shadeClusterListPart(uint cluster, uint part, Surface s, vec3 V, inout uint
             color += shadeLocalLight(lightIndex, lightWithPositionRadius(lightIndex, clusterListSphere(entry)), s, V);
         }
     }
+#endif
     return color;
 }

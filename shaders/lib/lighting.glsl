@@ -194,6 +194,12 @@ vec4 lightReach(GpuLight light, vec3 position)
 vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
 {
     vec4 reach = lightReach(light, s.position);
+#ifdef BRANCH_ON_REACH
+    // The GPU profile's choice: a warp whose lanes are all out of the light's reach skips the
+    // rest. The same value as the selects below give (zero), so the same image.
+    if (reach.w == 0.0)
+        return vec3(0.0);
+#endif
     // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
     // skips its texture taps for the pairs out of reach.
     float shadow = reach.w != 0.0 ? localShadow(lightIndex, light.positionRadius.xyz, s.position) : 0.0;

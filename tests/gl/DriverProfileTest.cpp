@@ -41,11 +41,17 @@ TEST_F(DriverProfileTest, AutoFollowsTheRendererAndTheOthersAreFixed)
     EXPECT_TRUE(software.multipliedSpecularPowers);
     EXPECT_TRUE(software.lightTexelsBeforeWindows);
     EXPECT_EQ(software.autoAnisotropy, 1);
+    EXPECT_TRUE(software.finishAroundPasses);
+    EXPECT_FALSE(software.computeLighting);
+    EXPECT_FALSE(software.branchOnLightReach);
     const DriverChoices gpu = driverChoices(DriverProfile::Gpu);
     EXPECT_EQ(gpu.profile, DriverProfile::Gpu);
     EXPECT_FALSE(gpu.multipliedSpecularPowers);
     EXPECT_FALSE(gpu.lightTexelsBeforeWindows);
     EXPECT_EQ(gpu.autoAnisotropy, kHardwareAnisotropy);
+    EXPECT_FALSE(gpu.finishAroundPasses);
+    EXPECT_TRUE(gpu.computeLighting);
+    EXPECT_TRUE(gpu.branchOnLightReach);
 }
 
 TEST_F(DriverProfileTest, RendererMakesTheProfilesChoices)

@@ -1,0 +1,93 @@
+// deferred's and clustered's two lighting stages (--lighting-stage fragment|compute,
+// render/techniques/Technique.h): the compute pass is the same lighting in the same order, so
+// the same image to the byte and the same light evaluations, under both driver profiles (the
+// GPU's choices, branching on a light's reach among them, and llvmpipe's). Both stages are
+// compared with forward by TechniqueAgreementTest, the compute one under the GPU profile
+// (image.gpu.*), whose default it is.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "TestSupport.h"
+
+namespace manylights {
+namespace {
+
+using test::renderPfm;
+using test::scratchDirectory;
+
+const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
+
+struct StageCase {
+    std::string name;
+    std::string scene;  // "" for the default scene
+    std::vector<std::string> args;
+    friend void PrintTo(const StageCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class LightingStages : public ::testing::TestWithParam<StageCase> {};
+
+TEST_P(LightingStages, ComputeGivesTheFragmentPassesImageToTheByte)
+{
+    const StageCase& c = GetParam();
+    const auto dir = scratchDirectory();
+    std::string scene = c.scene;
+    if (c.name == "long_lists_and_batches") {
+        // 10,000 lights on a few pixels: clustered's list of them is three parts long
+        // (kClusterListPart), and deferred walks them in ten light windows under the GPU
+        // profile (kLightsPerWindow) and two batches under the software one.
+        nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + "lights_on_one_spot.json"));
+        json["light_sets"][0]["count"] = 10000;
+        scene = (dir / "spot.json").string();
+        test::writeFile(scene, json.dump());
+    }
+    for (const std::string profile : {"software", "gpu"}) {
+        for (const std::string technique : {"deferred", "clustered"}) {
+            const auto render = [&](const std::string& stage) {
+                std::vector<std::string> args = c.args;
+                args.insert(args.end(), {"--technique", technique, "--driver-profile", profile, "--lighting-stage",
+                                         stage, "--count-work", "--stats", (dir / (stage + ".json")).string()});
+                return renderPfm(scene, dir / (stage + ".pfm"), args);
+            };
+            const std::string where = technique + " under the " + profile + " profile";
+            const Image fragment = render("fragment");
+            const Image compute = render("compute");
+            EXPECT_EQ(compute.rgb, fragment.rgb) << where;
+            const auto stats = [&](const std::string& stage) {
+                return nlohmann::json::parse(std::ifstream(dir / (stage + ".json")));
+            };
+            EXPECT_EQ(stats("compute")["lighting_stage"], "compute") << where;
+            EXPECT_EQ(stats("fragment")["lighting_stage"], "fragment") << where;
+            EXPECT_EQ(stats("compute")["light_evaluations"], stats("fragment")["light_evaluations"]) << where;
+            EXPECT_GT(stats("compute")["light_evaluations"].get<double>(), 0.0) << where;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, LightingStages,
+    ::testing::Values(StageCase{"default_scene", "", {"--size", "192x108"}},
+                      StageCase{"global_lights", kScenes + "every_light_everywhere.json", {"--size", "160x90"}},
+                      StageCase{"long_lists_and_batches", "", {"--size", "1280x720"}}),
+    [](const ::testing::TestParamInfo<StageCase>& param) { return param.param.name; });
+
+// Without --lighting-stage, the driver profile decides: the fragment pass on a software
+// rasteriser, the compute pass on a GPU (DriverChoices::computeLighting).
+TEST(LightingStages, TheProfileChoosesByDefault)
+{
+    const auto dir = scratchDirectory();
+    for (const std::string profile : {"software", "gpu"}) {
+        renderPfm("", dir / "out.pfm",
+                  {"--size", "64x36", "--technique", "clustered", "--driver-profile", profile, "--stats",
+                   (dir / "stats.json").string()});
+        const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
+        EXPECT_EQ(stats["lighting_stage"], profile == "gpu" ? "compute" : "fragment") << profile;
+    }
+}
+
+}  // namespace
+}  // namespace manylights
