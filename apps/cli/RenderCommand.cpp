@@ -211,9 +211,15 @@ void runRender(const RenderOptions& options)
     const Scene scene = loadSceneForCommand(options.scenePath, options.strict, options.camera);
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
+    const auto millisecondsSince = [](std::chrono::steady_clock::time_point start) {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    const auto lightsStart = std::chrono::steady_clock::now();
     const std::vector<Light> lights = lightsForCommand(scene, options.lights);
+    const double lightsMs = millisecondsSince(lightsStart);
 
     HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
+    const auto rendererStart = std::chrono::steady_clock::now();
     const DisplaySettings display = chooseDisplay(scene, options.display);
     const bool countWork = options.countWork || options.view == ViewMode::LightCount || options.aovs;
     Renderer renderer(scene, lights,
@@ -231,6 +237,8 @@ void runRender(const RenderOptions& options)
                        .lightingStage = options.driver.lightingStage});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
+    // The scene on the GPU (lights, meshes, textures, their upload) and the technique's programs.
+    const double rendererMs = millisecondsSince(rendererStart);
 
     if (options.timeRange) {
         recordFrames(renderer, technique, options, recorded);
@@ -273,6 +281,8 @@ void runRender(const RenderOptions& options)
                             {"supersample", options.supersample},
                             {"applied", options.output.eightBit()}};
         stats["load_ms"] = loadMs;
+        stats["lights_ms"] = lightsMs;
+        stats["renderer_ms"] = rendererMs;
         outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }
     outputs.commit();

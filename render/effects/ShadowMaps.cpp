@@ -202,12 +202,14 @@ void ShadowMaps::updateLocal(FramePasses& passes)
     // The posed lights are asked for only where some may cast shadows: a frame without shadow
     // lights does not pose a million moving lights on the CPU (render/scene/SceneLights.h).
     if (localBudget_ > 0) {
-        const std::vector<Light>& lights = scene.lights();
+        // As the shaders get them: posed, with the radius lightRadius gave them.
+        const std::vector<GpuLight>& lights = scene.packedLights();
         std::vector<ShadowCandidate> candidates;
         candidates.reserve(lights.size());
-        for (const Light& light : lights)
-            candidates.push_back({light.position, lightRadius(light, scene.scene().attenuationThreshold),
-                                  std::max({light.intensity.r, light.intensity.g, light.intensity.b})});
+        for (const GpuLight& light : lights)
+            candidates.push_back(
+                {glm::vec3(light.positionRadius), light.positionRadius.w,
+                 std::max({light.intensityExponent.r, light.intensityExponent.g, light.intensityExponent.b})});
         shadowedLights_ = selectShadowLights(candidates, scene.frameUniforms().viewProjection, localBudget_);
     }
 
@@ -215,7 +217,7 @@ void ShadowMaps::updateLocal(FramePasses& passes)
     std::vector<LocalSlot> kept;
     std::vector<std::size_t> fresh;
     for (std::size_t light : shadowedLights_) {
-        const bool cube = needsCube(scene.lights()[light]);
+        const bool cube = needsCube(scene.light(light));
         const auto old = std::find_if(slots_.begin(), slots_.end(),
                                       [&](const LocalSlot& s) { return s.light == light && s.cube == cube; });
         if (old != slots_.end())
@@ -226,7 +228,7 @@ void ShadowMaps::updateLocal(FramePasses& passes)
     for (std::size_t light : fresh) {
         LocalSlot slot;
         slot.light = light;
-        slot.cube = needsCube(scene.lights()[light]);
+        slot.cube = needsCube(scene.light(light));
         slot.layer = 0;
         while (std::any_of(kept.begin(), kept.end(),
                            [&](const LocalSlot& s) { return s.cube == slot.cube && s.layer == slot.layer; }))
@@ -259,7 +261,7 @@ void ShadowMaps::updateLocal(FramePasses& passes)
 void ShadowMaps::renderSpot(FramePasses& passes, LocalSlot& slot)
 {
     const GpuScene& scene = passes.scene();
-    const Light& light = scene.lights()[slot.light];
+    const Light light = scene.light(slot.light);
     const glm::vec3 position = light.position;
     const glm::vec3 axis = glm::normalize(light.direction);
     const float cutoff = light.cutoffDegrees;
@@ -277,7 +279,7 @@ void ShadowMaps::renderSpot(FramePasses& passes, LocalSlot& slot)
 void ShadowMaps::renderCube(FramePasses& passes, LocalSlot& slot)
 {
     const GpuScene& scene = passes.scene();
-    const Light& light = scene.lights()[slot.light];
+    const Light light = scene.light(slot.light);
     const glm::vec3 position = light.position;
     const float far = shadowFar(light, scene);
     const float near = kNearFraction * far;

@@ -272,12 +272,11 @@ void DrawList::order(const glm::vec3& eye, const glm::vec3& axis)
 
 void DrawList::pose(double t, const SceneLights& lights)
 {
-    const std::vector<Light>* posedLights = markerRadius_ ? &lights.posed() : nullptr;
     bool moved = false;
     const float markerRadius = markerRadius_.value_or(0.0f);
     for (DrawItem& draw : draws_) {
         if (draw.markedLight) {
-            draw.model = glm::translate(glm::mat4{1.0f}, (*posedLights)[*draw.markedLight].position);
+            draw.model = glm::translate(glm::mat4{1.0f}, lights.posedPosition(*draw.markedLight));
             draw.model = glm::scale(draw.model, glm::vec3{markerRadius});
         } else if (draw.object->animation) {
             const glm::mat4 model = animatedTransform(draw.object->transform, draw.object->animation, t);

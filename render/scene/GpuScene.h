@@ -112,9 +112,9 @@ public:
     {
         frame_.setShadowing(directionalShadow, ambientOcclusion);
     }
-    // The lights as posed at time() (their animations applied), and as the shaders get them:
-    // the first call after a setTime that moved lights poses them on the CPU.
-    const std::vector<Light>& lights() const { return lights_.posed(); }
+    // Light i as posed at time() (its animation applied), and the lights as the shaders get
+    // them: the first call after a setTime that moved lights poses them on the CPU.
+    Light light(std::size_t i) const { return lights_.posed(i); }
     const std::vector<GpuLight>& packedLights() const { return lights_.packed(); }
     const FrameUniforms& frameUniforms() const { return frame_.uniforms(); }
     const TextureCache& textures() const { return draws_.textures(); }

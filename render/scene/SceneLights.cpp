@@ -81,7 +81,6 @@ std::vector<Light> inSpatialOrder(const std::vector<Light>& lights)
 
 SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThreshold, const DriverChoices& driver)
     : rest_(inSpatialOrder(lights)),
-      posed_(rest_),
       attenuationThreshold_(attenuationThreshold),
       texelsBeforeWindows_(driver.lightTexelsBeforeWindows)
 {
@@ -90,12 +89,13 @@ SceneLights::SceneLights(const std::vector<Light>& lights, float attenuationThre
     std::vector<GpuLightMotion> motions;
     packed_.reserve(rest_.size());
     for (std::size_t i = 0; i < rest_.size(); ++i) {
+        packed_.push_back(packLight(rest_[i], attenuationThreshold_));
         if (rest_[i].animation) {
             animated_.push_back(i);
             motions.push_back(packMotion(rest_[i], static_cast<std::uint32_t>(i)));
-            posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, 0.0);
+            const glm::vec3 atZero = animatedPosition(rest_[i].position, rest_[i].animation, 0.0);
+            packed_[i].positionRadius = glm::vec4(atZero, packed_[i].positionRadius.w);
         }
-        packed_.push_back(packLight(posed_[i], attenuationThreshold_));
     }
     // Whole windows (bindWindow), so that every window bound is backed by the buffer. Written
     // once from here; pose_lights.comp writes the moving lights' positions.
@@ -144,10 +144,9 @@ void SceneLights::poseOnCpu() const
     if (cpuPosedAt_ == posedAt_)
         return;
     // A motion moves the light and nothing else: its radius and the rest stay as packed.
-    for (std::size_t i : animated_) {
-        posed_[i].position = animatedPosition(rest_[i].position, rest_[i].animation, posedAt_);
-        packed_[i].positionRadius = glm::vec4(posed_[i].position, packed_[i].positionRadius.w);
-    }
+    for (std::size_t i : animated_)
+        packed_[i].positionRadius =
+            glm::vec4(animatedPosition(rest_[i].position, rest_[i].animation, posedAt_), packed_[i].positionRadius.w);
     cpuPosedAt_ = posedAt_;
 }
 

@@ -169,8 +169,8 @@ TEST_F(InstancingTest, LightMarkersFollowTheirMovingLights)
         for (const GpuInstance& record : records)
             markerPositions.emplace_back(record.model[3]);
         std::vector<glm::vec3> lightPositions;
-        for (const Light& light : gpuScene.lights())
-            lightPositions.push_back(light.position);
+        for (const GpuLight& light : gpuScene.packedLights())
+            lightPositions.emplace_back(light.positionRadius);
         std::sort(markerPositions.begin(), markerPositions.end(), byCoordinates);
         std::sort(lightPositions.begin(), lightPositions.end(), byCoordinates);
         EXPECT_EQ(markerPositions, lightPositions) << "at t = " << t;

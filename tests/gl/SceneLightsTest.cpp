@@ -126,7 +126,7 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
         const Light& rest = lights.rest()[i];
         const glm::vec3 expected = animatedPosition(rest.position, rest.animation, 1.0);
         EXPECT_EQ(glm::vec3(lights.packed()[i].positionRadius), expected) << "light " << i;
-        EXPECT_EQ(lights.posed()[i].position, expected) << "light " << i;
+        EXPECT_EQ(lights.posedPosition(i), expected) << "light " << i;
         if (rest.animation) {
             ++moved;
             EXPECT_NE(lights.packed()[i].positionRadius, atZero[i].positionRadius);

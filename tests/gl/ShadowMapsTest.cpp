@@ -114,7 +114,7 @@ TEST_F(ShadowMapsTest, BudgetLimitsTheShadowedLights)
     renderer.apply(desc);
     renderer.renderFrame("forward", ViewMode::Final);
     ASSERT_EQ(renderer.shadowMaps().shadowedLights().size(), 1u);
-    const Light& chosen = renderer.gpuScene().lights()[renderer.shadowMaps().shadowedLights()[0]];
+    const Light chosen = renderer.gpuScene().light(renderer.shadowMaps().shadowedLights()[0]);
     EXPECT_EQ(chosen.position, lights[0].position);
     EXPECT_EQ(renderer.shadowMaps().passesRendered(), kDirectionalPasses + kSpotPasses);
 
