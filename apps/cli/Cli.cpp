@@ -10,6 +10,7 @@
 #include "apps/cli/BenchCommand.h"
 #include "apps/cli/CommandSupport.h"
 #include "apps/cli/DevicesCommand.h"
+#include "apps/cli/OutputOptions.h"
 #include "apps/cli/RenderCommand.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
@@ -135,12 +136,11 @@ int runCli(int argc, const char* const* argv)
     if (!format)
         return usageError("the output must end in .png, .pfm or .exr, got '" + render.output.path + "'");
     render.output.format = *format;
-    const DisplayOptions& display = render.display;
-    if (!render.output.eightBit() && (display.exposure || display.toneCurve || display.srgb || display.antialiasing))
-        return usageError("--exposure, --tonemap, --srgb, --no-srgb, --classic and --aa apply to .png outputs; .pfm "
-                          "and .exr stay linear");
-    if (render.output.format != ImageFormat::Exr && (render.exrFloat || render.aovs))
-        return usageError("--exr-float and --aovs apply to .exr outputs");
+    const std::string problem = outputOptionProblem(
+        [renderCommand](std::string_view option) { return renderCommand->count(std::string(option)) > 0; },
+        render.output.format);
+    if (!problem.empty())
+        return usageError(problem);
     if (!render.statsPath.empty() && sameFile(render.output.path, render.statsPath))
         return usageError("--stats and -o name the same file '" + render.output.path + "'");
     render.view = *parseViewMode(view);

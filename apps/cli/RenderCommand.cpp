@@ -127,12 +127,8 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
             return encodePng(renderer.readDisplayed());
         const Image raw = renderer.readColour();
         Image shown = displayableView(raw, view, renderer.readCoverage());
-        if (view == ViewMode::LightCount && options.legend) {
-            float maximum = 0.0f;
-            for (std::size_t i = 0; i < raw.rgb.size(); i += 3)
-                maximum = std::max(maximum, raw.rgb[i]);
-            drawHeatMapLegend(shown, maximum);
-        }
+        if (view == ViewMode::LightCount && options.legend)
+            drawLightCountLegend(shown, raw, options.technique);
         return encodePng(shown);
     }
     Image linear = boxDownsample(renderer.readColour(), options.supersample);

@@ -64,4 +64,31 @@ void lookCamera(Camera& camera, float yawDegrees, float pitchDegrees)
     camera.lookAt = camera.eye + turn(camera.lookAt - camera.eye, up, yawDegrees, pitchDegrees);
 }
 
+void applyHeldAction(Camera& camera, KeyAction action, double seconds)
+{
+    const auto dt = static_cast<float>(std::clamp(seconds, 0.0, kMaxHeldSecondsPerFrame));
+    const float turn = kOrbitDegreesPerSecond * dt;
+    const float fly = kFlyFractionPerSecond * dt * glm::distance(camera.eye, camera.lookAt);
+    switch (action) {
+    case KeyAction::OrbitLeft: orbitCamera(camera, -turn, 0.0f); break;
+    case KeyAction::OrbitRight: orbitCamera(camera, turn, 0.0f); break;
+    case KeyAction::OrbitUp: orbitCamera(camera, 0.0f, turn); break;
+    case KeyAction::OrbitDown: orbitCamera(camera, 0.0f, -turn); break;
+    case KeyAction::DollyIn: dollyCamera(camera, std::pow(1.0f / kDollyPerSecond, dt)); break;
+    case KeyAction::DollyOut: dollyCamera(camera, std::pow(kDollyPerSecond, dt)); break;
+    case KeyAction::FlyForward: flyCamera(camera, {0.0f, 0.0f, fly}); break;
+    case KeyAction::FlyBack: flyCamera(camera, {0.0f, 0.0f, -fly}); break;
+    case KeyAction::FlyLeft: flyCamera(camera, {-fly, 0.0f, 0.0f}); break;
+    case KeyAction::FlyRight: flyCamera(camera, {fly, 0.0f, 0.0f}); break;
+    case KeyAction::FlyUp: flyCamera(camera, {0.0f, fly, 0.0f}); break;
+    case KeyAction::FlyDown: flyCamera(camera, {0.0f, -fly, 0.0f}); break;
+    // A positive yaw turns the view to the left (the mouse's drag to the right turns it right).
+    case KeyAction::LookLeft: lookCamera(camera, turn, 0.0f); break;
+    case KeyAction::LookRight: lookCamera(camera, -turn, 0.0f); break;
+    case KeyAction::LookUp: lookCamera(camera, 0.0f, turn); break;
+    case KeyAction::LookDown: lookCamera(camera, 0.0f, -turn); break;
+    default: break;  // not a camera move
+    }
+}
+
 }  // namespace manylights

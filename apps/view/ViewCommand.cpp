@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/CommandSupport.h"
+#include "apps/view/Keymaps.h"
 #include "apps/view/Viewer.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
@@ -31,14 +32,19 @@ int runViewCommand(int argc, const char* const* argv)
     app.add_option("--time", options.time, "Animation start time in seconds")->check(numberIn(0.0, kMaxSceneSeconds));
     addLightCountOption(app, options.lights);
     app.add_option("--script", options.scriptPath, "Run the commands in this file (docs/viewer.md)");
+    // `--keymap list` prints every map's keys, from the tables the viewer reads, and opens no window.
+    bool listKeymaps = false;
+    std::vector<std::string> keymapChoices = keymapNames();
+    keymapChoices.push_back("list");
     app.add_option_function<std::string>(
            "--keymap",
-           [&options](const std::string& name) {
-               const auto& names = keymapNames();
-               options.keymap = static_cast<Keymap>(std::find(names.begin(), names.end(), name) - names.begin());
+           [&options, &listKeymaps](const std::string& name) {
+               listKeymaps = name == "list";
+               options.keymap = parseKeymap(name).value_or(Keymap::Default);
            },
-           "Which keys do what: default, deferred-course or stencil-volumes (docs/viewer.md)")
-        ->check(CLI::IsMember(keymapNames()));
+           "Which keys do what: default, deferred-course or stencil-volumes; 'list' prints each map's keys "
+           "(docs/viewer.md)")
+        ->check(CLI::IsMember(keymapChoices));
     app.add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(app, options.camera);
     addDisplayOptions(app, options.display);
@@ -48,6 +54,10 @@ int runViewCommand(int argc, const char* const* argv)
         ->capture_default_str();
     if (const std::optional<int> status = parseCommandLine(app, argc, argv))
         return *status;
+    if (listKeymaps) {
+        std::fputs(keymapListing().c_str(), stdout);
+        return 0;
+    }
     return reportingErrors([&] { runView(options); }, "in the viewer");
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "apps/view/Keymaps.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
 #include "render/Views.h"
@@ -27,14 +28,6 @@ std::string join(const std::vector<std::string>& names)
 }
 
 }  // namespace
-
-const std::vector<std::string>& scriptKeyNames()
-{
-    static const std::vector<std::string> names{"left", "right", "up", "down", "plus", "minus", "w",      "a",
-                                                "s",    "d",     "x",  "l",    "m",    "t",     "v",      "p",
-                                                "f12",  "c",     "r",  "u",    "o",    "i",     "escape", "q"};
-    return names;
-}
 
 std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::string& displayName)
 {
@@ -120,13 +113,16 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
             command.kind = ScriptCommand::Kind::Screenshot;
             if (args[0].size() < 5 || !args[0].ends_with(".png"))
                 fail("the screenshot must be a .png file, got '" + args[0] + "'");
+        } else if (name == "report-panel") {
+            expectArgs(1, "a file name");
+            command.kind = ScriptCommand::Kind::ReportPanel;
         } else if (name == "wait-for") {
             expectArgs(1, "a file name");
             command.kind = ScriptCommand::Kind::WaitFor;
         } else {
             fail("unknown command '" + name +
                  "' (expected one of: frames, resize, technique, view, time, pause, play, speed, toggle, key, "
-                 "screenshot, wait-for, quit)");
+                 "screenshot, report-panel, wait-for, quit)");
         }
         commands.push_back(std::move(command));
     }

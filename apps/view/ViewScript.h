@@ -15,19 +15,20 @@ inline constexpr double kMaxSpeed = 1000.0;
 
 struct ScriptCommand {
     enum class Kind {
-        Frames,      // frames N: draw N frames
-        Resize,      // resize W H: resize the window (and so every size-dependent resource)
-        Technique,   // technique NAME
-        View,        // view NAME
-        Time,        // time SECONDS: set the animation time (and pause it there)
-        Pause,       // pause
-        Play,        // play
-        Speed,       // speed FACTOR
-        Toggle,      // toggle ambient|diffuse|specular|axes|wireframe|shadows|ssao|panel
-        Key,         // key NAME: as if the key were pressed for one frame (docs/viewer.md)
-        Screenshot,  // screenshot FILE.png: the window's image of the next frame, panel hidden
-        WaitFor,     // wait-for FILE: keep drawing frames until FILE exists (to pace a test)
-        Quit,        // quit
+        Frames,       // frames N: draw N frames
+        Resize,       // resize W H: resize the window (and so every size-dependent resource)
+        Technique,    // technique NAME
+        View,         // view NAME
+        Time,         // time SECONDS: set the animation time (and pause it there)
+        Pause,        // pause
+        Play,         // play
+        Speed,        // speed FACTOR
+        Toggle,       // toggle ambient|diffuse|specular|axes|wireframe|shadows|ssao|panel
+        Key,          // key NAME: as if the key were pressed for one frame (docs/viewer.md)
+        Screenshot,   // screenshot FILE.png: the window's image of the next frame, panel hidden
+        ReportPanel,  // report-panel FILE: where the next frame draws the panel (docs/viewer.md)
+        WaitFor,      // wait-for FILE: keep drawing frames until FILE exists (to pace a test)
+        Quit,         // quit
     };
     Kind kind;
     std::vector<std::string> words;  // the arguments
@@ -42,9 +43,5 @@ struct ScriptCommand {
 // arguments, unknown technique or view, a number out of its range: frames up to
 // kMaxFrameCount, time up to kMaxSceneSeconds, sizes up to kMaxWindowDimension).
 std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::string& displayName);
-
-// The keys a script may press, by name (docs/viewer.md): left right up down plus minus w a s d
-// x l m t v p f12 c r u o i escape q.
-const std::vector<std::string>& scriptKeyNames();
 
 }  // namespace manylights

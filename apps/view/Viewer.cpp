@@ -29,6 +29,7 @@
 #include "platform/HeadlessContext.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
+#include "render/output/HeatMapLegend.h"
 #include "scene/LightSets.h"
 
 namespace manylights {
@@ -107,10 +108,16 @@ Viewer::Viewer(const ViewOptions& options)
 
     GLFWwindow* window = window_.window();
     glfwSetWindowUserPointer(window, this);
-    // Installed before ImGui's, which chains to them.
+    // Installed before ImGui's, which chains to them. The moments of presses and releases time
+    // the held keys' moves (HeldKeys.h).
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
-        if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard)
-            of(w).onKeyPressed(key);
+        Viewer& viewer = of(w);
+        if (action == GLFW_RELEASE)
+            viewer.heldKeys_.release(key, glfwGetTime());
+        if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard) {
+            viewer.heldKeys_.press(key, glfwGetTime());
+            viewer.onKeyPressed(key);
+        }
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
         Viewer& viewer = of(w);
@@ -264,7 +271,8 @@ void Viewer::renderScene()
 
 // The frame into the window: the displayed picture (the display pass's, or the lit image as
 // it is where the settings are the identity: the 8-bit window clamps it exactly as the PNG
-// writer does), or the view's displayable image as `render --view` writes it.
+// writer does), or the view's displayable image as `render --view` writes it to PNG (the
+// light-count view's with its legend).
 void Viewer::showImage()
 {
     const int width = renderer_->width();
@@ -277,7 +285,10 @@ void Viewer::showImage()
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
         return;
     }
-    const Image shown = displayableView(renderer_->readColour(), view_, renderer_->readCoverage());
+    const Image raw = renderer_->readColour();
+    Image shown = displayableView(raw, view_, renderer_->readCoverage());
+    if (view_ == ViewMode::LightCount)  // with the legend `render` draws into its PNG
+        drawLightCountLegend(shown, raw, effectiveTechnique());
     if (displayTexture_.width() != width || displayTexture_.height() != height) {
         displayTexture_ = gl::Texture2D("viewer display", GL_RGBA8, width, height);
         displayFramebuffer_ = gl::Framebuffer("viewer display", {&displayTexture_}, nullptr);
@@ -338,8 +349,10 @@ void Viewer::run()
         runScript();
         if (quit_)
             break;
-        applyHeldKeys(heldKeys(), elapsed);
-        applyHeldKeys(scriptKeys_, kScriptKeySeconds);
+        const std::vector<HeldKey> held = heldKeys_.endFrame(now);
+        if (!ImGui::GetIO().WantCaptureKeyboard)  // keys typed into the panel are the panel's
+            applyHeldKeys(held);
+        applyHeldKeys(scriptKeys_);
         if (rotating_)  // by the script's frame time under a script, so that tests are repeatable
             orbitCamera(camera_,
                         kOrbitDegreesPerSecond * static_cast<float>(script_.empty() ? elapsed : kScriptKeySeconds),
@@ -364,6 +377,10 @@ void Viewer::run()
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
+        if (!pendingPanelReport_.empty()) {
+            writePanelReport(pendingPanelReport_);
+            pendingPanelReport_.clear();
         }
         glfwSwapBuffers(window_.window());
     }

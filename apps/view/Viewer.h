@@ -5,17 +5,11 @@
 
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "apps/cli/CommandSupport.h"
+#include "apps/view/Keymaps.h"
 
 namespace manylights {
-
-// Which keys do what (docs/viewer.md has a table for each): the viewer's own, or those of
-// one of the seeds the viewer grew from (the deferred-rendering course project, the stencil
-// light-volume write-up), so that their users' hands need not relearn.
-enum class Keymap { Default, DeferredCourse, StencilVolumes };
-const std::vector<std::string>& keymapNames();  // "default", "deferred-course", "stencil-volumes"
 
 struct ViewOptions {
     std::string scenePath;               // empty: the built-in default scene
@@ -25,7 +19,7 @@ struct ViewOptions {
     std::optional<int> lights;
     double time = 0.0;                // the animation's start time
     std::string scriptPath;           // commands to run (apps/view/ViewScript.h); empty: interactive
-    Keymap keymap = Keymap::Default;  // --keymap
+    Keymap keymap = Keymap::Default;  // --keymap (apps/view/Keymaps.h)
     bool strict = false;              // --strict: model files' forgiven problems are errors
     CameraOptions camera;             // --camera, --eye, --look-at, --up, --fov-y: the starting view
     DisplayOptions display;           // --exposure, --tonemap, --srgb, --aa: the starting display settings

@@ -1,6 +1,6 @@
 // The viewer's state and its parts, shared by the files that implement them: Viewer.cpp (the
-// window, its frames and screenshots), ViewerKeys.cpp (keys, keymaps and scripts) and
-// ViewerPanel.cpp (the Dear ImGui panel).
+// window, its frames and screenshots), ViewerKeys.cpp (what keys and scripts do; the key maps'
+// tables are in Keymaps.h) and ViewerPanel.cpp (the Dear ImGui panel).
 #pragma once
 
 #include <cstddef>
@@ -8,12 +8,15 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>  // before GLFW's header, which would include the system's GL/gl.h
 #include <GLFW/glfw3.h>
 
+#include "apps/view/HeldKeys.h"
+#include "apps/view/Keymaps.h"
 #include "apps/view/ViewScript.h"
 #include "apps/view/Viewer.h"
 #include "gl/Framebuffer.h"
@@ -37,13 +40,10 @@ public:
     const std::string& contextDescription() const { return window_.description(); }
 
 private:
-    // Camera speeds, per second of wall time with a key held.
-    static constexpr float kOrbitDegreesPerSecond = 60.0f;
-    static constexpr float kDollyPerSecond = 1.5f;        // distance factor per second
-    static constexpr float kFlyFractionPerSecond = 0.4f;  // of the distance to the look-at point
+    // The held keys' speeds are in apps/view/CameraControls.h.
     static constexpr float kMouseDegreesPerPixel = 0.2f;
-    // A scripted `key` press acts as the key held for this long.
-    static constexpr double kScriptKeySeconds = 1.0 / 30.0;
+    // A scripted `key` press acts as the key held for this long: a tap's (HeldKeys.h).
+    static constexpr double kScriptKeySeconds = kTapSeconds;
     static constexpr std::size_t kFrameHistory = 240;
     static constexpr double kShaderCheckSeconds = 0.5;
 
@@ -52,15 +52,14 @@ private:
     Technique& technique();
     // The renderer's settings as the viewer's state has them (the one route they take).
     RendererDesc rendererDesc() const;
+    // A key pressed: its action in the key map (apps/view/Keymaps.h), if any.
     void onKeyPressed(int key);
-    // The seeds' keymaps (docs/viewer.md): true when `key` is one of theirs.
-    bool onDeferredCourseKey(int key);
-    bool onStencilVolumesKey(int key);
+    void perform(KeyAction action);
     // Prints the command-line options of the camera on screen (stdout), so that a view found
     // here can be rendered with `manylights render ... --eye ... --look-at ...`.
     void printCamera() const;
-    void applyHeldKeys(const std::vector<int>& keys, double seconds);
-    std::vector<int> heldKeys() const;
+    // Moves the camera for the keys held in this frame, each for the time it was held.
+    void applyHeldKeys(const std::vector<HeldKey>& keys);
     void runScript();
     void checkShaders();
     void reloadShaders();
@@ -70,6 +69,11 @@ private:
     void drawAxes();
     void writeScreenshot(const std::string& path);
     void drawPanel();
+    void drawPanelContents();
+    // A widget's label with the keys that do the same in the key map: "pause (Space)".
+    std::string keyedLabel(const char* label, KeyAction action) const;
+    // For the script's report-panel: the panel as this frame drew it (docs/viewer.md "Scripts").
+    void writePanelReport(const std::string& path) const;
     std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
 
     ViewOptions options_;
@@ -97,6 +101,17 @@ private:
     bool axes_ = false;
     bool wireframe_ = false;
     bool panel_ = true;
+    // The panel as last drawn, in window pixels (ImGui's), and whether the window was below
+    // the size at which it starts collapsed (ViewerPanel.cpp); unset before the first frame.
+    struct PanelRect {
+        float x = 0.0f;
+        float y = 0.0f;
+        float width = 0.0f;
+        float height = 0.0f;
+        bool collapsed = false;
+    };
+    std::optional<PanelRect> panelRect_;
+    std::optional<bool> smallWindow_;
     bool rotating_ = false;           // stencil-volumes 'r': the camera orbits the look-at point
     bool directionalShadows_ = true;  // where the scene's directional light asks for them
     int shadowLights_ = 0;            // local lights with shadow maps (--shadow-lights)
@@ -118,6 +133,7 @@ private:
     gl::Program axesProgram_;
     gl::VertexArray emptyVertexArray_{"axes (no attributes)"};
 
+    HeldKeys heldKeys_;  // the window's key presses and releases, by when they came
     bool dragging_ = false;
     double dragX_ = 0.0;
     double dragY_ = 0.0;
@@ -132,7 +148,8 @@ private:
     std::size_t scriptNext_ = 0;
     long scriptFramesLeft_ = 0;
     std::string pendingScreenshot_;
-    std::vector<int> scriptKeys_;  // keys a script holds for this frame
+    std::string pendingPanelReport_;
+    std::vector<HeldKey> scriptKeys_;  // keys a script holds for this frame
     std::string lastMessage_;
 };
 

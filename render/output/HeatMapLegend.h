@@ -1,12 +1,32 @@
 // The light-count view's legend (issue 33, docs/cli.md "Views"): a labelled colour bar drawn
 // into the 8-bit image after read-back, as engines' light-complexity views carry one, so that
-// a colour can be read as a count: the heat map's stops (0, 1, 4, ... 1024+) under the bar,
-// the frame's maximum marked on it and written beside it. `render --no-legend` leaves it out.
+// a colour can be read as a count: a title naming what is counted (issue 43: light evaluations
+// per pixel, and which lights the technique evaluates), the heat map's stops (0, 1, 4, ...
+// 1024+) under the bar, the frame's maximum marked on it and written beside it. `render
+// --no-legend` leaves it out; the viewer's light-count view shows it too.
 #pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
 
 #include "render/output/Image.h"
 
 namespace manylights {
+
+// The legend's font: 3 x 5 pixels a character, advancing 4.
+inline constexpr int kLegendGlyphWidth = 3;
+inline constexpr int kLegendGlyphHeight = 5;
+inline constexpr int kLegendGlyphAdvance = kLegendGlyphWidth + 1;
+// A character's rows, top first, 3 bits each with the high bit on the left; all zero for a
+// space or a character the font lacks.
+std::array<unsigned char, kLegendGlyphHeight> legendGlyph(char c);
+// The characters the font has, a space aside.
+std::string_view legendCharacters();
+
+// The title of the light-count legend for `technique`: "LIGHT EVALUATIONS PER PIXEL: " and the
+// lights it counts (countedLights, render/techniques/Technique.h), in capitals.
+std::string heatMapLegendTitle(std::string_view technique);
 
 // The rectangle the legend covers (pixels, rows top to bottom); empty when it does not fit.
 struct LegendArea {
@@ -19,11 +39,25 @@ struct LegendArea {
 
 // Where the legend goes in an image of `width` x `height`: the bottom-left corner, scaled by
 // one pixel per 360 rows (at least 1). Empty when the image is too small to hold it (at scale
-// 1: narrower than 238 pixels, or lower than 96, four times the legend's height).
+// 1: narrower than 238 pixels, or lower than 124, four times the legend's height).
 LegendArea heatMapLegendArea(int width, int height);
 
+// Where the title's first character starts (its top-left pixel), and the image pixels per
+// font pixel: for reading the title back.
+struct LegendTitlePlace {
+    int x = 0;
+    int y = 0;
+    int scale = 1;
+};
+LegendTitlePlace heatMapLegendTitlePlace(int width, int height);
+
 // Draws the legend into `shown` (the heat map, displayableView) for the frame whose counts
-// reached `maximum`. Only the pixels of heatMapLegendArea change.
-void drawHeatMapLegend(Image& shown, float maximum);
+// reached `maximum`, under `title` (56 characters at most). Only the pixels of
+// heatMapLegendArea change.
+void drawHeatMapLegend(Image& shown, float maximum, std::string_view title);
+
+// The legend of `technique`'s light-count frame whose counts (the view's raw image, a count
+// per pixel in red) are `counts`: what `render --view light-count` and the viewer draw.
+void drawLightCountLegend(Image& shown, const Image& counts, std::string_view technique);
 
 }  // namespace manylights

@@ -87,5 +87,8 @@ private:
 const std::vector<std::string>& techniqueNames();
 // nullptr when the name is unknown.
 std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options = {});
+// Which lights the technique's light-count view counts at a pixel, in a few words ("every
+// light", "cluster's lights in reach"); empty when the name is unknown.
+std::string_view countedLights(std::string_view technique);
 
 }  // namespace manylights

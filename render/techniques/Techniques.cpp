@@ -13,10 +13,13 @@ namespace manylights {
 namespace {
 
 // Every technique, in the order of the docs: the one list the names and the factory come from,
-// so a technique cannot be named without being made or made without being named.
+// so a technique cannot be named without being made or made without being named. With each, the
+// lights its light-count view counts at a pixel (its shaders' recordLightEvaluations), which the
+// view's legend names (render/output/HeatMapLegend.h); 26 characters at most, for the legend.
 struct TechniqueEntry {
     std::string_view name;
     std::unique_ptr<Technique> (*make)(const TechniqueOptions& options);
+    std::string_view countedLights;
 };
 
 template <typename T>
@@ -26,10 +29,16 @@ std::unique_ptr<Technique> make(const TechniqueOptions& options)
 }
 
 constexpr TechniqueEntry kTechniques[] = {
-    {"forward", make<ForwardTechnique>},        {"deferred", make<DeferredTechnique>},
-    {"volumes", make<VolumesTechnique>},        {"stencil", make<StencilTechnique>},
-    {"tiled-quads", make<TiledQuadsTechnique>}, {"tiled", make<TiledTechnique>},
-    {"clustered", make<ClusteredTechnique>},
+    {"forward", make<ForwardTechnique>, "every light"},
+    {"deferred", make<DeferredTechnique>, "every light"},
+    // Each volume whose back faces lie behind the pixel's surface (in reach of it or not).
+    {"volumes", make<VolumesTechnique>, "volumes behind its surface"},
+    // Each volume the stencil test finds around the pixel's surface.
+    {"stencil", make<StencilTechnique>, "volumes around its surface"},
+    {"tiled-quads", make<TiledQuadsTechnique>, "every light of its tile"},
+    // The list's lights that pass the reach test (the others are tested, not shaded).
+    {"tiled", make<TiledTechnique>, "tile's lights in reach"},
+    {"clustered", make<ClusteredTechnique>, "cluster's lights in reach"},
 };
 
 }  // namespace
@@ -51,6 +60,14 @@ std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueO
         if (entry.name == name)
             return entry.make(options);
     return nullptr;
+}
+
+std::string_view countedLights(std::string_view technique)
+{
+    for (const TechniqueEntry& entry : kTechniques)
+        if (entry.name == technique)
+            return entry.countedLights;
+    return {};
 }
 
 }  // namespace manylights

@@ -3,12 +3,17 @@
 // under the requested name when it fails. Run as a child process, so a crash shows as one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <map>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "apps/cli/OutputOptions.h"
 
 namespace manylights {
 namespace {
@@ -187,6 +192,50 @@ INSTANTIATE_TEST_SUITE_P(
                     1,
                     {"scene.json", "gamma"}}),
     [](const ::testing::TestParamInfo<FailureCase>& param) { return param.param.name; });
+
+// The one table of which option applies to which output (apps/cli/OutputOptions.h), gone
+// through whole: each option with each output format is either taken (exit 0, the image
+// written) or the usage error naming the option and the outputs it applies to (exit 2, no file).
+TEST(Cli, EveryOutputOptionIsTakenOnlyWithTheOutputsItAppliesTo)
+{
+    // What each option needs beside itself; a row added to the table without one here fails.
+    const std::map<std::string_view, std::vector<std::string>> arguments{
+        {"--exposure", {"--exposure", "1"}},
+        {"--tonemap", {"--tonemap", "aces"}},
+        {"--srgb", {"--srgb"}},
+        {"--no-srgb", {"--no-srgb"}},
+        {"--classic", {"--classic"}},
+        {"--aa", {"--aa", "fxaa"}},
+        {"--no-legend", {"--no-legend", "--view", "light-count"}},
+        {"--exr-float", {"--exr-float"}},
+        {"--aovs", {"--aovs"}},
+    };
+    const auto dir = scratchDirectory();
+    for (const OutputOption& option : outputOptions()) {
+        ASSERT_TRUE(arguments.count(option.name)) << option.name << " has no arguments in this test";
+        for (ImageFormat format : {ImageFormat::Png, ImageFormat::Pfm, ImageFormat::Exr}) {
+            const std::string what = std::string(option.name) + " with " + std::string(formatExtension(format));
+            const auto output = dir / ("out" + std::string(formatExtension(format)));
+            std::vector<std::string> args{"render", "-o", output.string(), "--size", "32x18"};
+            const std::vector<std::string>& extra = arguments.at(option.name);
+            args.insert(args.end(), extra.begin(), extra.end());
+            const test::ProcessResult result = runExecutable(args);
+            const bool applies =
+                std::find(option.formats.begin(), option.formats.end(), format) != option.formats.end();
+            if (applies) {
+                EXPECT_EQ(result.exitCode, 0) << what << ": " << result.stderrText;
+                EXPECT_TRUE(std::filesystem::exists(output)) << what;
+            } else {
+                EXPECT_EQ(result.exitCode, 2) << what;
+                EXPECT_EQ(lineCount(result.stderrText), 1) << what << ": " << result.stderrText;
+                EXPECT_EQ(result.stderrText.rfind("manylights: " + std::string(option.name) + " applies to ", 0), 0u)
+                    << what << ": " << result.stderrText;
+                EXPECT_FALSE(std::filesystem::exists(output)) << what;
+            }
+            std::filesystem::remove(output);
+        }
+    }
+}
 
 TEST(Cli, MissingSceneFileIsOneLineExitOne)
 {

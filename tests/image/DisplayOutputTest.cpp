@@ -24,6 +24,7 @@
 #include "render/output/ExrFile.h"
 #include "render/output/HeatMapLegend.h"
 #include "render/output/Image.h"
+#include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {
@@ -343,6 +344,74 @@ TEST(DisplayOutput, LightCountLegendChangesOnlyItsAreaAndNoLegendIsThePlainHeatM
     }
     // The panel, the bar and the labels cover most of the area.
     EXPECT_GT(changedInside, area.width * area.height / 2);
+}
+
+// The title as the legend's font drew it at `place` in an RGB image of `width` pixels a row:
+// each character cell read back as 3 x 5 on/off pixels (white is on) and matched against the
+// font; '?' for a cell that matches no character.
+std::string readLegendTitle(const std::vector<unsigned char>& rgb, int width, const LegendTitlePlace& place,
+                            int characters)
+{
+    std::string title;
+    for (int i = 0; i < characters; ++i) {
+        std::array<unsigned char, kLegendGlyphHeight> rows{};
+        for (int row = 0; row < kLegendGlyphHeight; ++row)
+            for (int column = 0; column < kLegendGlyphWidth; ++column) {
+                const int x = place.x + (i * kLegendGlyphAdvance + column) * place.scale;
+                const int y = place.y + row * place.scale;
+                const unsigned char* pixel = &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+                if (pixel[0] > 200 && pixel[1] > 200 && pixel[2] > 200)
+                    rows[static_cast<std::size_t>(row)] |=
+                        static_cast<unsigned char>(1 << (kLegendGlyphWidth - 1 - column));
+            }
+        char read = '?';
+        for (char c : std::string(legendCharacters()) + " ")
+            if (legendGlyph(c) == rows)
+                read = c;
+        title += read;
+    }
+    return title;
+}
+
+// The legend's title names what is counted (issue 43), read back from render's PNG pixel by
+// pixel: light evaluations per pixel, and which lights the technique evaluates there.
+TEST(DisplayOutput, LightCountLegendTitleNamesWhatIsCounted)
+{
+    // Every character the titles use has a glyph of its own, so that the reading is exact.
+    for (char a : legendCharacters()) {
+        EXPECT_NE(legendGlyph(a), legendGlyph(' ')) << a;
+        for (char b : legendCharacters()) {
+            if (a != b) {
+                EXPECT_NE(legendGlyph(a), legendGlyph(b)) << a << " and " << b;
+            }
+        }
+    }
+    const auto dir = scratchDirectory();
+    const int width = 320;
+    const int height = 180;
+    for (const std::string technique : {"deferred", "tiled", "clustered"}) {
+        const std::string title = heatMapLegendTitle(technique);
+        for (char c : title)
+            EXPECT_TRUE(c == ' ' || legendCharacters().find(c) != std::string_view::npos) << title;
+        const auto path = dir / (technique + ".png");
+        runCliOrFail(
+            {"render", "-o", path.string(), "--size", "320x180", "--view", "light-count", "--technique", technique});
+        const std::vector<unsigned char> png = readPng(path);
+        ASSERT_EQ(png.size(), std::size_t(width * height * 3));
+        EXPECT_EQ(readLegendTitle(png, width, heatMapLegendTitlePlace(width, height), static_cast<int>(title.size())),
+                  title);
+    }
+    EXPECT_EQ(heatMapLegendTitle("deferred"), "LIGHT EVALUATIONS PER PIXEL: EVERY LIGHT");
+    EXPECT_EQ(heatMapLegendTitle("tiled"), "LIGHT EVALUATIONS PER PIXEL: TILE'S LIGHTS IN REACH");
+    EXPECT_EQ(heatMapLegendTitle("clustered"), "LIGHT EVALUATIONS PER PIXEL: CLUSTER'S LIGHTS IN REACH");
+    // Every technique's title fits the legend (drawHeatMapLegend asserts it).
+    for (const std::string& technique : techniqueNames()) {
+        Image image;
+        image.width = width;
+        image.height = height;
+        image.rgb.assign(static_cast<std::size_t>(width) * height * 3, 0.0f);
+        drawHeatMapLegend(image, 1.0f, heatMapLegendTitle(technique));
+    }
 }
 
 // Too small an image keeps the plain heat map: the legend would hide most of it.

@@ -83,9 +83,9 @@ TEST(ViewScript, ParsesEveryCommand)
 {
     const auto commands =
         parseViewScript("# a comment\nframes 3\n\nresize 320 200\ntechnique tiled\nview normal\ntime 1.5\npause\nplay\n"
-                        "speed 2\ntoggle specular\nkey left\nscreenshot out.png\nquit\n",
+                        "speed 2\ntoggle specular\nkey left\nscreenshot out.png\nreport-panel panel.txt\nquit\n",
                         "s.txt");
-    ASSERT_EQ(commands.size(), 12u);
+    ASSERT_EQ(commands.size(), 13u);
     EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Frames);
     EXPECT_EQ(commands[0].number, 3.0);
     EXPECT_EQ(commands[0].line, 2);
@@ -95,7 +95,9 @@ TEST(ViewScript, ParsesEveryCommand)
     EXPECT_EQ(commands[4].number, 1.5);
     EXPECT_EQ(commands[9].kind, ScriptCommand::Kind::Key);
     EXPECT_EQ(commands[10].words[0], "out.png");
-    EXPECT_EQ(commands[11].kind, ScriptCommand::Kind::Quit);
+    EXPECT_EQ(commands[11].kind, ScriptCommand::Kind::ReportPanel);
+    EXPECT_EQ(commands[11].words[0], "panel.txt");
+    EXPECT_EQ(commands[12].kind, ScriptCommand::Kind::Quit);
 }
 
 TEST(ViewScript, BadLinesNameFileAndLine)
@@ -450,6 +452,83 @@ TEST(Viewer, SeedKeymapsDoWhatTheirTablesSay)
     EXPECT_NE(corners.rgb, volumes.rgb);
     EXPECT_NE(corners.rgb, final.rgb);
     expectEqualWithinOneLevel(readPng(dir / "corners-off.png"), final, "final after c twice");
+}
+
+struct PanelReport {
+    double x = 0.0;
+    double y = 0.0;
+    double width = 0.0;
+    double height = 0.0;
+    int windowWidth = 0;
+    int windowHeight = 0;
+    std::string state;
+};
+
+// report-panel's line (docs/viewer.md "Scripts"): X Y WIDTH HEIGHT WINDOW_WIDTH WINDOW_HEIGHT STATE.
+PanelReport readPanelReport(const fs::path& path)
+{
+    PanelReport report;
+    std::istringstream(readText(path)) >> report.x >> report.y >> report.width >> report.height >> report.windowWidth >>
+        report.windowHeight >> report.state;
+    return report;
+}
+
+void expectInsideTheWindow(const PanelReport& panel, const std::string& what)
+{
+    EXPECT_GE(panel.x, 0.0) << what;
+    EXPECT_GE(panel.y, 0.0) << what;
+    EXPECT_LE(panel.x + panel.width, panel.windowWidth) << what;
+    EXPECT_LE(panel.y + panel.height, panel.windowHeight) << what;
+}
+
+// The panel fits the window it is in (issue 43): in a window below 960x540 it starts collapsed
+// to its title bar, covering at most a quarter of a 320x180 window; in a larger one it is
+// expanded, inside the window; a resize back collapses it again.
+TEST(Viewer, PanelFitsTheWindow)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    ASSERT_EQ(runViewer(dir, "pause\nresize 320 180\nframes 3\nreport-panel small.txt\nview light-count\nframes 3\n"
+                             "report-panel light-count.txt\nview final\nresize 1000 600\nframes 3\n"
+                             "report-panel large.txt\nresize 320 180\nframes 3\nreport-panel small-again.txt\n"
+                             "toggle panel\nframes 2\nreport-panel hidden.txt\nquit\n"),
+              0)
+        << readText(dir / "viewer.log");
+    for (const char* file : {"small.txt", "light-count.txt", "small-again.txt"}) {
+        const PanelReport small = readPanelReport(dir / file);
+        ASSERT_EQ(small.windowWidth, 320) << file;
+        ASSERT_EQ(small.windowHeight, 180) << file;
+        EXPECT_EQ(small.state, "collapsed") << file;
+        EXPECT_GT(small.width * small.height, 0.0) << file;
+        EXPECT_LE(small.width * small.height, 0.25 * 320 * 180) << file << ": " << small.width << "x" << small.height;
+        expectInsideTheWindow(small, file);
+    }
+    const PanelReport large = readPanelReport(dir / "large.txt");
+    ASSERT_EQ(large.windowWidth, 1000);
+    EXPECT_EQ(large.state, "expanded");
+    EXPECT_GT(large.height, 100.0);  // its contents, not a title bar
+    expectInsideTheWindow(large, "large.txt");
+    EXPECT_EQ(readPanelReport(dir / "hidden.txt").state, "hidden");
+}
+
+// The light-count view shows the legend `render` draws into its PNG, title and all.
+TEST(Viewer, LightCountViewShowsTheLegendRenderDraws)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    ASSERT_EQ(runViewer(dir, "pause\nresize 320 180\nframes 3\ntechnique clustered\nview light-count\nframes 2\n"
+                             "screenshot counts.png\nquit\n"),
+              0)
+        << readText(dir / "viewer.log");
+    const std::string options = "--size 320x180 --technique clustered --view light-count";
+    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render " + options + " -o '" + (dir / "legend.png").string() + "'"), 0);
+    ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render " + options + " --no-legend -o '" + (dir / "plain.png").string() + "'"),
+              0);
+    const Png shown = readPng(dir / "counts.png");
+    expectEqualWithinOneLevel(shown, readPng(dir / "legend.png"), "light-count with its legend");
+    EXPECT_NE(shown.rgb, readPng(dir / "plain.png").rgb);  // the legend is there
 }
 
 TEST(Viewer, BadCommandLineIsExitTwo)

@@ -1,0 +1,42 @@
+// How long each key was held in each frame (issue 43, docs/viewer.md "Controls"), so that a
+// camera move is the time its key was down, not the time the frame before took: on a slow
+// machine a tap then moved the camera by a whole slow frame's worth (10-30 degrees).
+// Kept apart from the window so that it is tested without one.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace manylights {
+
+// A press and release both seen within one frame last an unknown time shorter than the frame:
+// they count as this long, as a script's `key` does.
+inline constexpr double kTapSeconds = 1.0 / 30.0;
+
+struct HeldKey {
+    int key;
+    double seconds;  // how long it was held in the frame
+};
+
+class HeldKeys {
+public:
+    // The moments the window reported the key going down and up (seconds, one clock).
+    void press(int key, double time);
+    void release(int key, double time);
+    // Ends the frame at `now`: each key held at some time since the previous frame ended (or,
+    // for the first, since its press), with the seconds it was held within the frame. A key
+    // pressed and released within the frame counts as at least kTapSeconds. Keys released are
+    // then forgotten.
+    std::vector<HeldKey> endFrame(double now);
+
+private:
+    struct Hold {
+        double pressed;
+        std::optional<double> released;
+    };
+    std::map<int, Hold> holds_;
+    std::optional<double> frameStart_;
+};
+
+}  // namespace manylights

@@ -1,0 +1,196 @@
+// The viewer's key maps and held keys without a window (issue 43): each map's one table, which
+// the key handler, the panel and `view --keymap list` read; the time a key was held in a frame;
+// and the camera's step, capped at 3 degrees a frame.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include <epoxy/gl.h>  // before GLFW's header, which would include the system's GL/gl.h
+#include <GLFW/glfw3.h>
+
+#include "apps/view/CameraControls.h"
+#include "apps/view/HeldKeys.h"
+#include "apps/view/Keymaps.h"
+
+namespace manylights {
+namespace {
+
+constexpr Keymap kMaps[] = {Keymap::Default, Keymap::DeferredCourse, Keymap::StencilVolumes};
+
+TEST(Keymaps, NoKeyDoesTwoThingsAndNoActionHasTwoRows)
+{
+    for (Keymap map : kMaps) {
+        std::set<int> keys;
+        std::set<KeyAction> actions;
+        for (const KeyBinding& binding : keyBindings(map)) {
+            EXPECT_TRUE(actions.insert(binding.action).second) << keymapName(map);
+            EXPECT_FALSE(binding.keys.empty()) << keymapName(map);
+            for (int key : binding.keys)
+                EXPECT_TRUE(keys.insert(key).second) << keymapName(map) << ": " << keyName(key) << " twice";
+        }
+    }
+}
+
+// docs/viewer.md's tables: the seeds' own keys, and the default's for the keys they leave.
+TEST(Keymaps, SeedMapsTakeTheirKeysAndLeaveTheOthersTheirDefaultMeaning)
+{
+    EXPECT_EQ(actionOfKey(Keymap::Default, GLFW_KEY_P), KeyAction::TogglePause);
+    EXPECT_EQ(actionOfKey(Keymap::Default, GLFW_KEY_C), KeyAction::PrintCamera);
+    EXPECT_EQ(actionOfKey(Keymap::Default, GLFW_KEY_LEFT), KeyAction::OrbitLeft);
+    EXPECT_EQ(actionOfKey(Keymap::Default, GLFW_KEY_R), std::nullopt);
+
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_A), KeyAction::ToggleAxes);
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_D), KeyAction::UseDeferred);
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_T), KeyAction::UseTexturedForward);
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_W), KeyAction::ToggleWireframe);
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_C), KeyAction::PrintCamera);
+    EXPECT_EQ(actionOfKey(Keymap::DeferredCourse, GLFW_KEY_F1), KeyAction::TogglePanel);
+
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_P), KeyAction::ToggleAmbient);
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_C), KeyAction::ToggleVolumeCorners);
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_A), KeyAction::FlyUp);
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_LEFT), KeyAction::LookLeft);
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_SPACE), KeyAction::TogglePause);
+    EXPECT_EQ(actionOfKey(Keymap::StencilVolumes, GLFW_KEY_ESCAPE), KeyAction::Quit);
+}
+
+// The panel's labels: what the active map binds, not the default's (issue 43: "pause (P)"
+// under stencil-volumes, where P is the ambient term).
+TEST(Keymaps, PanelLabelsNameTheActiveMapsKeys)
+{
+    EXPECT_EQ(keysOf(Keymap::Default, KeyAction::TogglePause), "P, Space");
+    EXPECT_EQ(keysOf(Keymap::StencilVolumes, KeyAction::TogglePause), "Space");
+    EXPECT_EQ(keysOf(Keymap::Default, KeyAction::PrintCamera), "C");
+    EXPECT_EQ(keysOf(Keymap::StencilVolumes, KeyAction::PrintCamera), "");
+    EXPECT_EQ(keysOf(Keymap::StencilVolumes, KeyAction::ToggleAmbient), "P");
+    EXPECT_EQ(keysOf(Keymap::Default, KeyAction::ToggleAmbient), "");
+    EXPECT_EQ(keysOf(Keymap::DeferredCourse, KeyAction::ToggleAxes), "A, X");
+}
+
+TEST(Keymaps, EveryBindingCanBePressedByAScript)
+{
+    for (Keymap map : kMaps)
+        for (const KeyBinding& binding : keyBindings(map)) {
+            bool pressable = false;
+            for (const std::string& name : scriptKeyNames())
+                pressable = pressable ||
+                            std::find(binding.keys.begin(), binding.keys.end(), scriptKey(name)) != binding.keys.end();
+            EXPECT_TRUE(pressable) << keymapName(map) << ": " << actionDescription(binding.action);
+        }
+    EXPECT_EQ(scriptKey("f13"), GLFW_KEY_UNKNOWN);
+}
+
+TEST(Keymaps, ListingHasEveryMapAndEveryBindingOnALine)
+{
+    const std::string listing = keymapListing();
+    for (Keymap map : kMaps) {
+        const std::size_t start = listing.find(std::string(keymapName(map)) + ":\n");
+        ASSERT_NE(start, std::string::npos) << listing;
+        for (const KeyBinding& binding : keyBindings(map)) {
+            const std::string keys = "  " + keysOf(map, binding.action) + " ";
+            const std::size_t line = listing.find(keys, start);
+            ASSERT_NE(line, std::string::npos) << keys;
+            const std::string text = listing.substr(line, listing.find('\n', line) - line);
+            EXPECT_NE(text.find(actionDescription(binding.action)), std::string::npos) << text;
+        }
+    }
+}
+
+// `view --keymap list` prints the listing and opens no window: it works without a display.
+TEST(Keymaps, ListCommandPrintsEveryMapWithoutAWindow)
+{
+    std::FILE* pipe = popen("env -u DISPLAY -u WAYLAND_DISPLAY '" MANYLIGHTS_EXE "' view --keymap list", "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+        output.append(buffer, n);
+    EXPECT_EQ(WEXITSTATUS(pclose(pipe)), 0);
+    EXPECT_EQ(output, keymapListing());
+}
+
+// --- held keys -----------------------------------------------------------------------------
+
+TEST(HeldKeys, AKeyMovesByTheTimeItWasHeldInEachFrame)
+{
+    HeldKeys keys;
+    EXPECT_TRUE(keys.endFrame(1.0).empty());
+    keys.press(GLFW_KEY_LEFT, 1.25);  // seen during the frame that ends at 1.25
+    std::vector<HeldKey> held = keys.endFrame(1.25);
+    EXPECT_TRUE(held.empty());  // held for no time of that frame yet
+    held = keys.endFrame(1.5);
+    ASSERT_EQ(held.size(), 1u);
+    EXPECT_EQ(held[0].key, GLFW_KEY_LEFT);
+    EXPECT_DOUBLE_EQ(held[0].seconds, 0.25);
+    keys.release(GLFW_KEY_LEFT, 1.6);
+    held = keys.endFrame(2.0);  // a slow frame: only the 0.1 s it was held counts, not the 0.5 s
+    ASSERT_EQ(held.size(), 1u);
+    EXPECT_NEAR(held[0].seconds, 0.1, 1e-12);
+    EXPECT_TRUE(keys.endFrame(2.5).empty());  // released: forgotten
+}
+
+TEST(HeldKeys, APressAndReleaseWithinOneFrameIsATap)
+{
+    HeldKeys keys;
+    keys.endFrame(0.0);
+    keys.press(GLFW_KEY_UP, 0.4);
+    keys.release(GLFW_KEY_UP, 0.4);  // both seen at once, after a frame of 0.4 s
+    const std::vector<HeldKey> held = keys.endFrame(0.4);
+    ASSERT_EQ(held.size(), 1u);
+    EXPECT_DOUBLE_EQ(held[0].seconds, kTapSeconds);
+}
+
+// --- the camera's held moves ----------------------------------------------------------------
+
+Camera cameraOnZ()
+{
+    Camera camera;
+    camera.eye = {0.0f, 0.0f, 10.0f};
+    camera.lookAt = {0.0f, 0.0f, 0.0f};
+    return camera;
+}
+
+float yawDegrees(const Camera& camera) { return glm::degrees(std::atan2(camera.eye.x, camera.eye.z)); }
+
+TEST(CameraControls, AHeldKeyTurnsAtItsRateAndAtMostThreeDegreesAFrame)
+{
+    Camera camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::OrbitRight, 0.01);  // 60 degrees a second
+    EXPECT_NEAR(yawDegrees(camera), 0.6f, 1e-3f);
+    camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::OrbitRight, 0.5);  // a slow frame's tap: 30 degrees uncapped
+    EXPECT_NEAR(yawDegrees(camera), kMaxStepDegrees, 1e-3f);
+    EXPECT_EQ(kMaxStepDegrees, 3.0f);
+    // The other moves are capped at the same time.
+    camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::DollyIn, 10.0);
+    EXPECT_NEAR(camera.eye.z, 10.0f * std::pow(1.0f / kDollyPerSecond, 0.05f), 1e-4f);
+    camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::FlyForward, 10.0);
+    EXPECT_NEAR(camera.eye.z, 10.0f - 0.05f * kFlyFractionPerSecond * 10.0f, 1e-4f);
+    // A press action does not move the camera.
+    camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::Quit, 1.0);
+    EXPECT_EQ(camera.eye, cameraOnZ().eye);
+}
+
+TEST(CameraControls, LookLeftTurnsTheViewToTheLeft)
+{
+    Camera camera = cameraOnZ();  // looking down -Z: left is -X
+    applyHeldAction(camera, KeyAction::LookLeft, 0.05);
+    EXPECT_LT(camera.lookAt.x, 0.0f);
+    EXPECT_EQ(camera.eye, cameraOnZ().eye);
+    camera = cameraOnZ();
+    applyHeldAction(camera, KeyAction::LookUp, 0.05);
+    EXPECT_GT(camera.lookAt.y, 0.0f);
+}
+
+}  // namespace
+}  // namespace manylights
