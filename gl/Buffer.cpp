@@ -31,7 +31,7 @@ void Buffer::update(std::size_t offset, std::size_t bytes, const void* data)
 {
     ML_ASSERT(offset + bytes <= size_);
     if (bytes > 0)
-        glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+        counted(glNamedBufferSubData, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
 }
 
 void Buffer::clearToZero(std::size_t bytes)
@@ -43,11 +43,11 @@ void Buffer::clearToZero(std::size_t bytes)
                                   &zero);
 }
 
-void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+void Buffer::bindBase(GLenum target, GLuint index) const { counted(glBindBufferBase, target, index, id()); }
 
 void Buffer::bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const
 {
-    glBindBufferRange(target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
+    counted(glBindBufferRange, target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
 }
 
 void Buffer::copyTo(const Buffer& to, std::size_t bytes) const

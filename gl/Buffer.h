@@ -61,4 +61,15 @@ private:
     std::size_t size_ = 0;
 };
 
+// Uploads `data` to the start of `buffer`, first replacing the buffer with a larger one when the
+// data does not fit (with half as much again to grow into, so that a slowly growing list does
+// not reallocate every frame): per-frame lists of the CPU's.
+template <typename T>
+void uploadGrowing(Buffer& buffer, std::string_view label, std::span<const T> data)
+{
+    if (!buffer || buffer.size() < data.size_bytes())
+        buffer = Buffer(label, data.size_bytes() + data.size_bytes() / 2, nullptr);
+    buffer.update(0, data.size_bytes(), data.data());
+}
+
 }  // namespace manylights::gl

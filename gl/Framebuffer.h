@@ -33,7 +33,7 @@ public:
     // layer = 6 · cube + face) and checks that the framebuffer is complete.
     void attachDepthLayer(const DepthTextureArray& texture, int layer) const;
 
-    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
+    void bind() const { counted(glBindFramebuffer, GL_FRAMEBUFFER, id()); }
     void clearColour(int attachment, const float rgba[4]) const;
     // Zero in every channel, for attachments of any format: integer formats take the unsigned
     // integer clear, the others the float clear.

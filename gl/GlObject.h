@@ -8,6 +8,8 @@
 #include <string_view>
 #include <utility>
 
+#include "gl/CallTally.h"
+
 namespace manylights::gl {
 
 // Attaches a human-readable name that debuggers (RenderDoc) and the debug callback show.

@@ -24,7 +24,7 @@ public:
     int height() const { return height_; }
     int levels() const { return levels_; }
     GLenum format() const { return format_; }
-    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void bindUnit(GLuint unit) const { counted(glBindTextureUnit, unit, id()); }
 
     // The largest anisotropy the driver filters with: GL_MAX_TEXTURE_MAX_ANISOTROPY where it
     // has anisotropic filtering (GL 4.6 core or GL_ARB/EXT_texture_filter_anisotropic), else 1.

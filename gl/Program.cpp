@@ -117,27 +117,27 @@ Program::Program(std::string_view label, const std::vector<ShaderStage>& stages,
 
 void Program::set(GLint location, const glm::vec2& value) const
 {
-    glProgramUniform2fv(id(), location, 1, glm::value_ptr(value));
+    counted(glProgramUniform2fv, id(), location, 1, glm::value_ptr(value));
 }
 void Program::set(GLint location, const glm::vec3& value) const
 {
-    glProgramUniform3fv(id(), location, 1, glm::value_ptr(value));
+    counted(glProgramUniform3fv, id(), location, 1, glm::value_ptr(value));
 }
 void Program::set(GLint location, const glm::vec4& value) const
 {
-    glProgramUniform4fv(id(), location, 1, glm::value_ptr(value));
+    counted(glProgramUniform4fv, id(), location, 1, glm::value_ptr(value));
 }
 void Program::set(GLint location, const glm::mat3& value) const
 {
-    glProgramUniformMatrix3fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+    counted(glProgramUniformMatrix3fv, id(), location, 1, GLboolean{GL_FALSE}, glm::value_ptr(value));
 }
 void Program::set(GLint location, const glm::mat3x2& value) const
 {
-    glProgramUniformMatrix3x2fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+    counted(glProgramUniformMatrix3x2fv, id(), location, 1, GLboolean{GL_FALSE}, glm::value_ptr(value));
 }
 void Program::set(GLint location, const glm::mat4& value) const
 {
-    glProgramUniformMatrix4fv(id(), location, 1, GL_FALSE, glm::value_ptr(value));
+    counted(glProgramUniformMatrix4fv, id(), location, 1, GLboolean{GL_FALSE}, glm::value_ptr(value));
 }
 
 }  // namespace manylights::gl

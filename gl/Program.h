@@ -32,12 +32,15 @@ public:
     Program(std::string_view label, const std::vector<ShaderStage>& stages, const Defines& defines = {},
             const ShaderFileReader& reader = defaultShaderReader());
 
-    void use() const { glUseProgram(id()); }
-    void set(GLint location, int value) const { glProgramUniform1i(id(), location, value); }
-    void set(GLint location, unsigned value) const { glProgramUniform1ui(id(), location, value); }
-    void set(GLint location, float value) const { glProgramUniform1f(id(), location, value); }
-    void set(GLint location, double value) const { glProgramUniform1d(id(), location, value); }
-    void set(GLint location, const glm::uvec2& value) const { glProgramUniform2ui(id(), location, value.x, value.y); }
+    void use() const { counted(glUseProgram, id()); }
+    void set(GLint location, int value) const { counted(glProgramUniform1i, id(), location, value); }
+    void set(GLint location, unsigned value) const { counted(glProgramUniform1ui, id(), location, value); }
+    void set(GLint location, float value) const { counted(glProgramUniform1f, id(), location, value); }
+    void set(GLint location, double value) const { counted(glProgramUniform1d, id(), location, value); }
+    void set(GLint location, const glm::uvec2& value) const
+    {
+        counted(glProgramUniform2ui, id(), location, value.x, value.y);
+    }
     void set(GLint location, const glm::vec2& value) const;
     void set(GLint location, const glm::vec3& value) const;
     void set(GLint location, const glm::vec4& value) const;

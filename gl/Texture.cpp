@@ -21,7 +21,7 @@ Texture2D::Texture2D(std::string_view label, GLenum internalFormat, int width, i
 
 void Texture2D::bindImage(GLuint unit, GLenum access) const
 {
-    glBindImageTexture(unit, id(), 0, GL_FALSE, 0, access, format_);
+    counted(glBindImageTexture, unit, id(), 0, GLboolean{GL_FALSE}, 0, access, format_);
 }
 
 void Texture2D::setLinearFiltering() const

@@ -29,7 +29,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     GLenum format() const { return format_; }
-    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void bindUnit(GLuint unit) const { counted(glBindTextureUnit, unit, id()); }
     // Binds the texture as an image of its own format for loads and stores (`access`:
     // GL_READ_ONLY, GL_WRITE_ONLY or GL_READ_WRITE).
     void bindImage(GLuint unit, GLenum access) const;
@@ -66,7 +66,7 @@ public:
     DepthTextureArray() = default;
     DepthTextureArray(GLenum target, std::string_view label, int size, int layers);
 
-    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void bindUnit(GLuint unit) const { counted(glBindTextureUnit, unit, id()); }
 };
 
 // A texture buffer: the bytes of `buffer` read as texels of `internalFormat` (texelFetch on a
@@ -76,7 +76,7 @@ public:
     BufferTexture() = default;
     BufferTexture(std::string_view label, GLenum internalFormat, const Buffer& buffer);
 
-    void bindUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void bindUnit(GLuint unit) const { counted(glBindTextureUnit, unit, id()); }
 };
 
 }  // namespace manylights::gl

@@ -24,7 +24,7 @@ public:
     void setVertexBuffer(GLuint binding, const Buffer& buffer, GLsizei stride) const;
     void setFloatAttribute(GLuint location, GLuint binding, int components, GLuint offset) const;
     void setIndexBuffer(const Buffer& buffer) const;
-    void bind() const { glBindVertexArray(id()); }
+    void bind() const { counted(glBindVertexArray, id()); }
 };
 
 }  // namespace manylights::gl

@@ -1,14 +1,21 @@
 #include "render/culling/TileCulling.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <optional>
+#include <string>
+#include <thread>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
 #include "core/Error.h"
+#include "render/culling/ScreenBounds.h"
 #include "scene/Falloff.h"
 
 namespace manylights {
@@ -27,8 +34,6 @@ constexpr float kCosineMargin = 2e-6f;
 constexpr float kAngleMargin = 1e-3f;
 // Surfaces are clipped at the near and far planes, up to the rounding of the depth.
 constexpr float kDepthMargin = 1e-3f;
-// The projected rectangle only decides which tiles get the exact test: padded generously.
-constexpr double kRectanglePaddingPixels = 2.0;
 
 // The side planes of every tile, all through the eye, and the rays along their edges.
 class TileFrustums {
@@ -149,33 +154,52 @@ struct Sector {
     bool reaches(const glm::vec3& n, float margin) const { return glm::dot(n, apex) + support(n) >= -margin; }
 };
 
-// The pixels, along one image axis, that a sphere in front of the eye projects onto: the
-// slopes lateral / depth of its two tangent planes through the eye that contain the other
-// image axis, mapped to pixels. Exact for the sphere; padded for rounding.
-std::pair<double, double> projectedPixels(double lateral, double depth, double radius, double tanHalf, int pixels)
-{
-    // Tangent slopes k solve (lateral − k·depth)² = radius² (1 + k²).
-    const double denominator = (depth - radius) * (depth + radius);
-    const double root = radius * std::sqrt(lateral * lateral + denominator);
-    const double low = (lateral * depth - root) / denominator;
-    const double high = (lateral * depth + root) / denominator;
-    const auto toPixels = [&](double slope) { return (slope / tanHalf + 1.0) * 0.5 * pixels; };
-    return {toPixels(low) - kRectanglePaddingPixels, toPixels(high) + kRectanglePaddingPixels};
-}
+// Chunks per thread (TileCuller::cull): enough that the threads finish together where the lights'
+// costs differ, few enough that the counting sort's pass over every chunk's counts stays small.
+constexpr std::size_t kChunksPerThread = 8;
 
-// The tiles [first, last] that the pixel interval [low, high] touches; empty when first > last.
-std::pair<int, int> tileSpan(double low, double high, int tileSize, int tiles)
+// Runs task(i) for every i < count on `threads` threads, the caller's one of them, each taking
+// the next i as it finishes one.
+template <typename Task>
+void runOnThreads(unsigned threads, std::size_t count, const Task& task)
 {
-    if (std::isnan(low) || std::isnan(high))
-        return {0, tiles - 1};  // nothing proved: test every tile
-    const double first = std::floor(low / tileSize);
-    const double last = std::floor(high / tileSize);
-    if (last < 0.0 || first > tiles - 1)
-        return {1, 0};
-    return {static_cast<int>(std::max(first, 0.0)), static_cast<int>(std::min(last, tiles - 1.0))};
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t i = next++; i < count; i = next++)
+            task(i);
+    };
+    std::vector<std::jthread> helpers;
+    for (unsigned t = 1; t < threads && t < count; ++t)
+        helpers.emplace_back(work);
+    work();
 }
 
 }  // namespace
+
+unsigned forcedCullingThreads()
+{
+    static const unsigned threads = [] {
+        const char* text = std::getenv("MANYLIGHTS_CULLING_THREADS");
+        if (text == nullptr)
+            return 0u;
+        char* end = nullptr;
+        const unsigned long value = std::strtoul(text, &end, 10);
+        if (end == text || *end != '\0' || text[0] == '-' || value < 1 || value > kMaxCullingThreads)
+            throw Error("MANYLIGHTS_CULLING_THREADS: expected a whole number of threads from 1 to " +
+                        std::to_string(kMaxCullingThreads) + ", got '" + text + "'");
+        return static_cast<unsigned>(value);
+    }();
+    return threads;
+}
+
+unsigned TileCuller::threadsFor(std::size_t lightCount) const
+{
+    if (threads_ > 0)
+        return threads_;
+    if (const unsigned forced = forcedCullingThreads())
+        return forced;
+    return lightCount >= kParallelCullingLights ? std::max(std::thread::hardware_concurrency(), 1u) : 1;
+}
 
 const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<const GpuLight> lights)
 {
@@ -199,26 +223,19 @@ const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<co
     lists_.tileSize = view.tileSize;
     lists_.tilesX = tilesX;
     lists_.tilesY = tilesY;
-    lists_.tiles.assign(tileCount, TileRange{});
-    pairTiles_.clear();
-    pairLights_.clear();
-    const auto accept = [&](std::size_t tile, std::uint32_t light) {
-        pairTiles_.push_back(static_cast<std::uint32_t>(tile));
-        pairLights_.push_back(light);
-        ++lists_.tiles[tile].count;
-    };
 
-    for (std::size_t i = 0; i < lights.size(); ++i) {
+    // Light i's pairs: accept(tile, i) for each tile it may reach, in ascending tile order.
+    const auto cullLight = [&](std::size_t i, auto&& accept) {
         const GpuLight& light = lights[i];
         const auto index = static_cast<std::uint32_t>(i);
         const float radius = light.positionRadius.w;
         if (!(radius > 0.0f))
-            continue;  // reaches nothing
+            return;  // reaches nothing
         if (radius >= falloff::kUnboundedRadius) {
             // Never fades: no tile can be proved out of its reach.
             for (std::size_t tile = 0; tile < tileCount; ++tile)
                 accept(tile, index);
-            continue;
+            return;
         }
         const glm::vec3 position(light.positionRadius);
         const float margin = kRelativeMargin * (glm::length(position) + eyeScale + radius);
@@ -226,7 +243,7 @@ const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<co
         const glm::vec3 centre(view.view * glm::vec4(position, 1.0f));
         const float depth = -centre.z;
         if (depth + reach < nearLimit || depth - reach > farLimit)
-            continue;  // wholly in front of the near plane (or behind the eye), or beyond the far plane
+            return;  // wholly in front of the near plane (or behind the eye), or beyond the far plane
 
         const float cosCutoff = light.spotAxisCosCutoff.w;
         std::optional<Sector> sector;
@@ -241,7 +258,7 @@ const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<co
                 const glm::vec3 towardsDepth(0.0f, 0.0f, -1.0f);
                 if (!sector->reaches(towardsDepth, margin - nearLimit) ||
                     !sector->reaches(-towardsDepth, farLimit + margin))
-                    continue;
+                    return;
             }
         }
 
@@ -265,19 +282,57 @@ const TileLightLists& TileCuller::cull(const TileCullingView& view, std::span<co
                     continue;
                 accept(lists_.tileIndex(tx, ty), index);
             }
-    }
+    };
 
-    // Group the pairs by tile (a counting sort): each tile's lights stay in ascending order.
+    // The lights in runs of consecutive lights (chunks), each culled by one thread into its own
+    // pairs, in ascending light order, and its own count per tile. More chunks than threads, taken
+    // as threads finish the last: lights differ in cost (one that crosses the near plane tests
+    // every tile), and runs of the lights' space order (render/scene/SceneLights.h) lie off
+    // screen or near the eye together.
+    const unsigned threads = threadsFor(lights.size());
+    const std::size_t chunkCount =
+        threads == 1 ? 1
+                     : std::clamp<std::size_t>(threads * kChunksPerThread, 1, std::max<std::size_t>(lights.size(), 1));
+    if (chunks_.size() < chunkCount)
+        chunks_.resize(chunkCount);
+    const auto chunkLights = [&](std::size_t chunk) {
+        return std::pair(chunk * lights.size() / chunkCount, (chunk + 1) * lights.size() / chunkCount);
+    };
+    runOnThreads(threads, chunkCount, [&](std::size_t c) {
+        Chunk& chunk = chunks_[c];
+        chunk.pairTiles.clear();
+        chunk.pairLights.clear();
+        chunk.tileCounts.assign(tileCount, 0);
+        const auto accept = [&](std::size_t tile, std::uint32_t light) {
+            chunk.pairTiles.push_back(static_cast<std::uint32_t>(tile));
+            chunk.pairLights.push_back(light);
+            ++chunk.tileCounts[tile];
+        };
+        const auto [first, end] = chunkLights(c);
+        for (std::size_t i = first; i < end; ++i)
+            cullLight(i, accept);
+    });
+
+    // Group the pairs by tile (a counting sort): a tile's list is its pairs of the first chunk,
+    // then of the second, and so on, so its lights stay in ascending order whatever the chunks.
+    // Each chunk's counts become where its next pair of each tile goes.
+    lists_.tiles.resize(tileCount);
     std::uint32_t offset = 0;
-    cursors_.resize(tileCount);
     for (std::size_t tile = 0; tile < tileCount; ++tile) {
         lists_.tiles[tile].offset = offset;
-        cursors_[tile] = offset;
-        offset += lists_.tiles[tile].count;
+        for (std::size_t c = 0; c < chunkCount; ++c) {
+            const std::uint32_t count = chunks_[c].tileCounts[tile];
+            chunks_[c].tileCounts[tile] = offset;
+            offset += count;
+        }
+        lists_.tiles[tile].count = offset - lists_.tiles[tile].offset;
     }
-    lists_.lightIndices.resize(pairLights_.size());
-    for (std::size_t pair = 0; pair < pairLights_.size(); ++pair)
-        lists_.lightIndices[cursors_[pairTiles_[pair]]++] = pairLights_[pair];
+    lists_.lightIndices.resize(offset);
+    runOnThreads(threads, chunkCount, [&](std::size_t c) {
+        Chunk& chunk = chunks_[c];
+        for (std::size_t pair = 0; pair < chunk.pairLights.size(); ++pair)
+            lists_.lightIndices[chunk.tileCounts[chunk.pairTiles[pair]]++] = chunk.pairLights[pair];
+    });
     return lists_;
 }
 

@@ -1,5 +1,6 @@
 #include "render/frame/FramePasses.h"
 
+#include "gl/CallTally.h"
 #include "render/programs/Bindings.h"
 #include "render/scene/GpuScene.h"
 
@@ -63,7 +64,7 @@ void FramePasses::begin(const Pass& pass)
         scopeName_ = pass.name;
     }
     if (const GLbitfield bits = barrierFor(pass)) {
-        glMemoryBarrier(bits);
+        gl::counted(glMemoryBarrier, bits);
         for (ResourceState& resource : states_) {
             resource.unmadeVisible &= ~bits;
             // On llvmpipe any barrier finishes the queued draws.
@@ -109,7 +110,7 @@ void FramePasses::finish()
     for (const ResourceState& resource : states_)
         bits |= resource.unmadeVisible;
     if (bits)
-        glMemoryBarrier(bits);
+        gl::counted(glMemoryBarrier, bits);
     states_ = {};
 }
 

@@ -42,17 +42,6 @@ std::size_t variantFor(std::uint32_t count)
     return static_cast<std::size_t>(bound - kTileLightBounds.begin());
 }
 
-// Uploads `data` to the start of `buffer`, first replacing the buffer with a larger one when
-// the data does not fit (with room to grow, so that a slowly growing list does not
-// reallocate every frame).
-template <typename T>
-void upload(gl::Buffer& buffer, std::string_view label, std::span<const T> data)
-{
-    if (!buffer || buffer.size() < data.size_bytes())
-        buffer = gl::Buffer(label, data.size_bytes() + data.size_bytes() / 2, nullptr);
-    buffer.update(0, data.size_bytes(), data.data());
-}
-
 }  // namespace
 
 TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
@@ -109,8 +98,8 @@ void TiledQuadsTechnique::cullAndUpload(const GpuScene& scene, const FrameTarget
     std::copy(variantFirst_.begin(), variantFirst_.end() - 1, cursor.begin());
     forEachQuad([&](const TileQuad& quad) { drawOrder_[cursor[variantFor(quad.lightCount)]++] = quad; });
 
-    upload<TileQuad>(tileQuads_, "tile quads", drawOrder_);
-    upload<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
+    gl::uploadGrowing<TileQuad>(tileQuads_, "tile quads", drawOrder_);
+    gl::uploadGrowing<std::uint32_t>(lightIndices_, "tile light indices", lists.lightIndices);
 }
 
 void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& targets) const

@@ -62,36 +62,46 @@ void VolumeDrawer::drawGlobalTerms() const
     drawCoveredPixels(*globalVariant_);
 }
 
-void VolumeDrawer::drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const
+const gl::Program& VolumeDrawer::lightingProgram() const
 {
     ML_ASSERT(lightingVariant_);
-    drawVolumes(shape, first, count, *lightingVariant_);
+    return *lightingVariant_;
+}
+
+void VolumeDrawer::drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const
+{
+    drawVolumes(shape, first, count, lightingProgram());
 }
 
 void VolumeDrawer::drawVolumes(VolumeShape shape, std::size_t first, std::size_t count,
                                const gl::Program& program) const
 {
-    if (count == 0)
-        return;
     std::size_t listStart = first;
     if (shape != VolumeShape::Sphere)
         listStart += groups_.spheres.size();
     if (shape == VolumeShape::FullScreen)
         listStart += groups_.cones.size();
-    lightLists_.bindBase(GL_SHADER_STORAGE_BUFFER, kVolumeLightsBinding);
-    program.set(kFirstVolumeLight, static_cast<unsigned>(listStart));
+    drawListed(lightLists_, shape, listStart, count, program);
+}
+
+void VolumeDrawer::drawListed(const gl::Buffer& list, VolumeShape shape, std::size_t first, std::size_t count,
+                              const gl::Program& program) const
+{
+    if (count == 0)
+        return;
+    list.bindBase(GL_SHADER_STORAGE_BUFFER, kVolumeLightsBinding);
+    program.set(kFirstVolumeLight, static_cast<unsigned>(first));
     program.set(kVolumeShape, static_cast<int>(shape));
     program.use();
     vertexArray_.bind();
     const auto instances = static_cast<GLsizei>(count);
     if (shape == VolumeShape::FullScreen) {
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 3, instances);
+        gl::counted(glDrawArraysInstanced, GL_TRIANGLES, 0, 3, instances);
         return;
     }
     const MeshRange& range = shape == VolumeShape::Sphere ? sphere_ : cone_;
-    glDrawElementsInstancedBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
-                                      reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
-                                      instances, range.baseVertex);
+    gl::counted(glDrawElementsInstancedBaseVertex, GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)), instances, range.baseVertex);
 }
 
 }  // namespace manylights

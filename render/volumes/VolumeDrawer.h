@@ -32,6 +32,12 @@ public:
     // state (render/frame/FramePasses.h).
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count) const;
     void drawVolumes(VolumeShape shape, std::size_t first, std::size_t count, const gl::Program& program) const;
+    // The same from a list of the caller's: `count` lights of `shape` whose indices into the
+    // light buffer are `list`'s uints from `first` on (the stencil technique's batches).
+    void drawListed(const gl::Buffer& list, VolumeShape shape, std::size_t first, std::size_t count,
+                    const gl::Program& program) const;
+    // The lighting program of the frame's lighting features (prepare).
+    const gl::Program& lightingProgram() const;
 
 private:
     struct MeshRange {

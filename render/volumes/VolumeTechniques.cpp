@@ -1,5 +1,6 @@
 #include "render/volumes/VolumeTechniques.h"
 
+#include "gl/CallTally.h"
 #include "render/frame/ScreenPasses.h"
 #include "render/scene/GpuScene.h"
 #include "render/volumes/LightVolumes.h"
@@ -77,34 +78,56 @@ StencilTechnique::StencilTechnique(const TechniqueOptions& options)
 {
 }
 
-void StencilTechnique::render(const GpuScene& scene, FrameTargets&, FramePasses& passes)
+std::vector<TechniqueCounter> StencilTechnique::counters() const
+{
+    const double perLight =
+        volumeLights_ > 0 ? static_cast<double>(glCalls_) / static_cast<double>(volumeLights_) : 0.0;
+    return {{"gl_calls", static_cast<double>(glCalls_)},
+            {"gl_calls_per_light", perLight},
+            {"stencil_batches", static_cast<double>(batchCount_)}};
+}
+
+void StencilTechnique::render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes)
 {
     shadeGlobalTermsAndUnboundedLights(passes, drawer_);
-    const auto shadeLight = [&](VolumeShape shape, std::size_t index) {
-        passes.run(kMarkInsideVolume, [&] { drawer_.drawVolumes(shape, index, 1, stencilOnly_); });
-        passes.run(kShadeMarked, [&] { drawer_.drawVolumes(shape, index, 1); });
-    };
+    const std::uint64_t callsBefore = gl::callTally();
+    const FrameUniforms& frame = scene.frameUniforms();
+    const StencilBatchView view{.view = frame.view,
+                                .eye = glm::vec3(frame.eye),
+                                .tanHalfFovX = frame.projection.x,
+                                .tanHalfFovY = frame.projection.y,
+                                .width = targets.width,
+                                .height = targets.height};
+    // The batches follow the camera and the lights: a frame that moved neither keeps them.
+    const BatchesMadeFor madeFor{&scene, scene.lightsVersion(), view};
+    if (madeFor != batchesMadeFor_) {
+        batcher_.group(view, scene.packedLights(), drawer_.groups());
+        gl::uploadGrowing<std::uint32_t>(batchOrder_, "stencil batch order", batcher_.batches().order);
+        batchesMadeFor_ = madeFor;
+    }
+    const StencilBatches& batches = batcher_.batches();
+
     // A sphere around the eye has no front face on screen: the stencil pass would mark exactly
     // the pixels whose surface lies in front of its back face, which the back faces drawn with
-    // the reversed depth test (volumes' pass) shade directly, without the stencil pass. Runs
-    // of such spheres are drawn as one instanced draw, in light order, so every pixel adds its
-    // lights in the same order as with a stencil pass per light: the same image bit for bit.
-    const std::vector<std::uint32_t>& spheres = drawer_.groups().spheres;
-    const glm::vec3 eye(scene.frameUniforms().eye);
-    const auto aroundEye = [&](std::size_t i) { return eyeInsideSphereVolume(scene.packedLights()[spheres[i]], eye); };
-    for (std::size_t i = 0; i < spheres.size();) {
-        std::size_t end = i;
-        while (end < spheres.size() && aroundEye(end))
-            ++end;
-        if (end == i) {
-            shadeLight(VolumeShape::Sphere, i++);
-            continue;
-        }
-        passes.run(kBackFaceVolumes, [&] { drawer_.drawVolumes(VolumeShape::Sphere, i, end - i); });
-        i = end;
+    // the reversed depth test (volumes' pass) shade directly, without the stencil pass. They
+    // need no stencil, so they may overlap: all of them are one instanced draw.
+    if (batches.aroundEye > 0)
+        passes.run(kBackFaceVolumes, [&] {
+            drawer_.drawListed(batchOrder_, VolumeShape::Sphere, 0, batches.aroundEye, drawer_.lightingProgram());
+        });
+    // A batch's volumes cover disjoint pixels (render/volumes/StencilBatches.h): its stencil pass
+    // marks each pixel for one volume at most, and its lighting pass clears every mark.
+    for (const StencilBatch& batch : batches.batches) {
+        const auto drawBatch = [&](const gl::Program& program) {
+            drawer_.drawListed(batchOrder_, VolumeShape::Sphere, batch.first, batch.spheres, program);
+            drawer_.drawListed(batchOrder_, VolumeShape::Cone, batch.first + batch.spheres, batch.cones, program);
+        };
+        passes.run(kMarkInsideVolume, [&] { drawBatch(stencilOnly_); });
+        passes.run(kShadeMarked, [&] { drawBatch(drawer_.lightingProgram()); });
     }
-    for (std::size_t i = 0; i < drawer_.groups().cones.size(); ++i)
-        shadeLight(VolumeShape::Cone, i);
+    glCalls_ = gl::callTally() - callsBefore;
+    volumeLights_ = drawer_.groups().spheres.size() + drawer_.groups().cones.size();
+    batchCount_ = batches.batches.size();
 }
 
 }  // namespace manylights

@@ -67,6 +67,28 @@ TEST_F(GlTest, BufferRoundTripsDataAndMoves)
     EXPECT_FALSE(glIsBuffer(name));  // the move-assignment deleted the old object
 }
 
+// The tally behind a technique's gl_calls (gl/CallTally.h): one per call that binds, sets a
+// uniform, changes the program or uploads, and per call made through `counted`; none for
+// making objects or reading back.
+TEST_F(GlTest, CallTallyCountsEachCall)
+{
+    const std::vector<std::uint32_t> data = {1, 2, 3, 4};
+    std::uint64_t before = gl::callTally();
+    gl::Buffer buffer = gl::Buffer::fromSpan<std::uint32_t>("tallied buffer", data);
+    EXPECT_EQ(gl::callTally(), before);
+    buffer.update(0, sizeof(std::uint32_t), data.data());
+    buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    buffer.bindRange(GL_SHADER_STORAGE_BUFFER, 0, 0, sizeof(std::uint32_t));
+    gl::counted(glFlush);
+    EXPECT_EQ(gl::callTally(), before + 4);
+    std::uint32_t back = 0;
+    before = gl::callTally();
+    buffer.read(0, sizeof(back), &back);
+    gl::uploadGrowing<std::uint32_t>(buffer, "tallied buffer", data);  // fits: one update, no new buffer
+    EXPECT_EQ(gl::callTally(), before + 1);
+    EXPECT_EQ(back, 1u);
+}
+
 // Storage the driver cannot give is the user's limit, not a bug: every allocation wrapper
 // reports GL_OUT_OF_MEMORY as an Error naming what was asked for (gl/Debug.h), and the GL is
 // left without a pending error. Whether 4 TiB is refused is the driver's business, so the

@@ -9,16 +9,23 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <set>
+#include <span>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "PackedLights.h"
 #include "render/culling/TileCulling.h"
 #include "scene/Falloff.h"
 
 namespace manylights {
 namespace {
+
+using test::pointLight;
+using test::spotLight;
 
 TileCullingView simpleView()
 {
@@ -31,23 +38,6 @@ TileCullingView simpleView()
     view.height = 256;
     view.tileSize = 32;
     return view;
-}
-
-GpuLight pointLight(const glm::vec3& position, float radius)
-{
-    GpuLight light{};
-    light.positionRadius = glm::vec4(position, radius);
-    light.intensityExponent = glm::vec4(1.0f, 1.0f, 1.0f, 0.0f);
-    light.attenuation = glm::vec4(radius, 0.0f, 0.0f, 1.0f);  // range falloff
-    light.spotAxisCosCutoff = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);
-    return light;
-}
-
-GpuLight spotLight(const glm::vec3& position, float radius, const glm::vec3& axis, float cutoffDegrees)
-{
-    GpuLight light = pointLight(position, radius);
-    light.spotAxisCosCutoff = glm::vec4(glm::normalize(axis), std::cos(glm::radians(cutoffDegrees)));
-    return light;
 }
 
 using TileSet = std::set<std::pair<int, int>>;
@@ -240,16 +230,13 @@ struct BruteForceResult {
     std::size_t allPairs = 0;  // lights × tiles
 };
 
-// Random lights of every kind around the eye of `view`; for every tile that does not list a
-// light, rays through a grid of the tile's pixels (edges included) are sampled densely where
-// they pass through the light's sphere, between the near and the far plane: A·S must be
-// zero at every sample.
-BruteForceResult bruteForceCheck(const TileCullingView& view, std::uint32_t seed, int lightCount)
+// Random lights of every kind around the eye of `view`: points and spots, narrow and wide,
+// classic and range falloff, most in front of the eye, some around it, some anywhere.
+std::vector<GpuLight> lightsOfEveryKind(const TileCullingView& view, std::uint32_t seed, int lightCount)
 {
     const glm::mat3 toWorld = glm::transpose(glm::mat3(view.view));
     const glm::vec3 eye = -(toWorld * glm::vec3(view.view[3]));
     const glm::vec3 viewAxis = toWorld * glm::vec3(0.0f, 0.0f, -1.0f);
-
     std::mt19937 random(seed);
     const auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(random); };
     std::vector<GpuLight> lights;
@@ -282,6 +269,18 @@ BruteForceResult bruteForceCheck(const TileCullingView& view, std::uint32_t seed
         }
         lights.push_back(packLight(light, 1.0f / 256.0f));
     }
+    return lights;
+}
+
+// For every tile that does not list a light of lightsOfEveryKind, rays through a grid of the
+// tile's pixels (edges included) are sampled densely where they pass through the light's
+// sphere, between the near and the far plane: A·S must be zero at every sample.
+BruteForceResult bruteForceCheck(const TileCullingView& view, std::uint32_t seed, int lightCount)
+{
+    const glm::mat3 toWorld = glm::transpose(glm::mat3(view.view));
+    const glm::vec3 eye = -(toWorld * glm::vec3(view.view[3]));
+    const glm::vec3 viewAxis = toWorld * glm::vec3(0.0f, 0.0f, -1.0f);
+    const std::vector<GpuLight> lights = lightsOfEveryKind(view, seed, lightCount);
     const TileLightLists lists = cullLightsToTiles(view, lights);
 
     const float tanY = std::tan(view.fovY / 2.0f);
@@ -339,16 +338,23 @@ BruteForceResult bruteForceCheck(const TileCullingView& view, std::uint32_t seed
     return result;
 }
 
+// Looking down at a slant, as the default scene does.
+TileCullingView slantedView(int width, int height)
+{
+    TileCullingView view;
+    view.view = glm::lookAt(glm::vec3(1.0f, 6.0f, 12.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    view.fovY = glm::radians(50.0f);
+    view.width = width;
+    view.height = height;
+    view.nearPlane = 0.5f;
+    view.farPlane = 30.0f;
+    return view;
+}
+
 TEST(TileCulling, NeverDropsALitPixel)
 {
-    // Looking down at a slant, as the default scene does; the last row of tiles is partial.
-    TileCullingView slanted;
-    slanted.view = glm::lookAt(glm::vec3(1.0f, 6.0f, 12.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    slanted.fovY = glm::radians(50.0f);
-    slanted.width = 320;
-    slanted.height = 180;
-    slanted.nearPlane = 0.5f;
-    slanted.farPlane = 30.0f;
+    // The last row of tiles is partial.
+    const TileCullingView slanted = slantedView(320, 180);
     // A wide, tall view with a distant near plane and small tiles, rolled about its axis.
     TileCullingView wide;
     wide.view = glm::lookAt(glm::vec3(-3.0f, 2.0f, -5.0f), glm::vec3(4.0f, 1.0f, 3.0f), glm::vec3(0.3f, 1.0f, 0.0f));
@@ -399,6 +405,46 @@ TEST(TileCulling, ManyLightsAtFullResolution)
     EXPECT_GT(lists.lightIndices.size(), lights.size() / 2);
     // Small lights: a handful of tiles each, not the whole screen.
     EXPECT_LT(lists.lightIndices.size(), lights.size() * 8);
+}
+
+// Culling on several threads (issue 41) gives the lists of one thread to the byte: each
+// thread culls runs of consecutive lights into lists of its own, which are joined in light
+// order. Light counts that split unevenly over the threads' runs, fewer lights than runs,
+// none; unbounded lights (in every tile) and lights that reach nothing among them; and one
+// culler reused at a falling and a rising count, as the technique reuses it every frame.
+TEST(TileCulling, ThreadsGiveTheListsOfOneThread)
+{
+    // Partial tiles in the last row and column.
+    TileCullingView view = slantedView(331, 187);
+    view.tileSize = 16;
+    std::vector<GpuLight> lights = lightsOfEveryKind(view, 21, 5003);
+    lights[17].positionRadius.w = falloff::kUnboundedRadius;
+    lights[4000].positionRadius.w = falloff::kUnboundedRadius;
+    lights[99].positionRadius.w = 0.0f;
+
+    TileCuller serial(1);
+    std::vector<std::unique_ptr<TileCuller>> parallel;
+    for (const unsigned threads : {2u, 3u, 7u, 16u})
+        parallel.push_back(std::make_unique<TileCuller>(threads));
+    for (const std::size_t count : {std::size_t{5003}, std::size_t{0}, std::size_t{1}, std::size_t{13},
+                                    std::size_t{100}, std::size_t{1001}, std::size_t{5003}}) {
+        const std::span<const GpuLight> some(lights.data(), count);
+        const TileLightLists& expected = serial.cull(view, some);
+        ASSERT_EQ(expected.tileCount(), 21u * 12u);
+        for (const auto& culler : parallel) {
+            const TileLightLists& lists = culler->cull(view, some);
+            ASSERT_EQ(lists.tileCount(), expected.tileCount());
+            for (std::size_t tile = 0; tile < lists.tileCount(); ++tile) {
+                EXPECT_EQ(lists.tiles[tile].offset, expected.tiles[tile].offset) << count << " lights, tile " << tile;
+                EXPECT_EQ(lists.tiles[tile].count, expected.tiles[tile].count) << count << " lights, tile " << tile;
+            }
+            EXPECT_EQ(lists.lightIndices, expected.lightIndices) << count << " lights";
+        }
+    }
+    // The culling culls: more pairs than the unbounded lights make, fewer than half of all.
+    const TileLightLists& lists = serial.cull(view, lights);
+    EXPECT_GT(lists.lightIndices.size(), 3 * lists.tileCount());
+    EXPECT_LT(lists.lightIndices.size(), lights.size() * lists.tileCount() / 2);
 }
 
 }  // namespace

@@ -115,6 +115,41 @@ TEST(WorkCounts, VolumeCullingOnManySmallLights)
     EXPECT_LE(volumesWork, deferredWork);
 }
 
+// The stencil technique draws the lights whose volumes share no pixel on screen together, two
+// passes per batch where it took two per light (issue 41, render/volumes/StencilBatches.h). Its
+// GL calls are counted as they are made (gl/CallTally.h): exact, and the same on every run.
+// Lights that all cover one spot take a batch each, which costs what every light cost before
+// the batches (110 calls, docs/performance.md); the benchmark's courtyard at 4,096 lights must
+// cost at most a third of that per light.
+TEST(WorkCounts, StencilBatchesCutTheGlCallsPerLight)
+{
+    const auto dir = test::scratchDirectory();
+    const auto stencilStats = [&](const std::string& scene, const std::vector<std::string>& options) {
+        const std::filesystem::path stats = dir / "stencil.json";
+        std::vector<std::string> args = {"render",      scene,     "-o",      (dir / "stencil.png").string(),
+                                         "--technique", "stencil", "--stats", stats.string()};
+        args.insert(args.end(), options.begin(), options.end());
+        runCliOrFail(args);
+        std::ifstream in(stats);
+        return nlohmann::json::parse(in);
+    };
+    const nlohmann::json oneSpot = stencilStats(MANYLIGHTS_SOURCE_DIR "/tests/scenes/lights_on_one_spot.json",
+                                                {"--lights", "64", "--size", "160x90"});
+    EXPECT_EQ(oneSpot["stencil_batches"], 64);
+    const double alone = oneSpot["gl_calls_per_light"].get<double>();
+    // Two passes, each binding its target and inputs, setting and resetting the GL state, and
+    // drawing: about 55 calls each.
+    EXPECT_GE(alone, 100.0);
+    EXPECT_LE(alone, 120.0);
+    const nlohmann::json courtyard =
+        stencilStats(MANYLIGHTS_SOURCE_DIR "/bench/courtyard.json", {"--lights", "4096", "--size", "640x360"});
+    const double batched = courtyard["gl_calls_per_light"].get<double>();
+    EXPECT_GT(batched, 0.0);
+    EXPECT_LE(batched, alone / 3.0);
+    EXPECT_LE(courtyard["stencil_batches"].get<double>(), 4096.0 / 8.0);
+    RecordProperty("courtyard_gl_calls_per_light", std::to_string(batched));
+}
+
 TEST(WorkCounts, DefaultSceneEvaluationsPerTechnique)
 {
     const auto dir = test::scratchDirectory();
