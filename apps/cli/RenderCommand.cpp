@@ -271,6 +271,8 @@ void runRender(const RenderOptions& options)
                             {"supersample", options.supersample},
                             {"applied", options.output.eightBit()}};
         stats["load_ms"] = loadMs;
+        const EnvironmentLight& environment = renderer.gpuScene().environment();
+        stats["environment_ms"] = environment.present() ? nlohmann::json(environment.loadMs()) : nlohmann::json();
         outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }
     outputs.commit();

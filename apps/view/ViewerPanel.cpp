@@ -74,6 +74,7 @@ void Viewer::drawPanel()
     ImGui::Checkbox("SSAO", &occlusion.enabled);
     ImGui::SliderFloat(kSsaoRadiusLabel, &occlusion.radius, 0.05f, 4.0f, "%.2f");
     ImGui::SliderFloat(kSsaoStrengthLabel, &occlusion.strength, 0.0f, 2.0f, "%.2f");
+    drawEnvironmentPanel();
 
     if (ImGui::Button("print camera (C)"))
         printCamera();

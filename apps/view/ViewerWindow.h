@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,8 @@ private:
     void drawAxes();
     void writeScreenshot(const std::string& path);
     void drawPanel();
+    // The panel's environment section (apps/view/EnvironmentPanel.cpp): nothing without one.
+    void drawEnvironmentPanel();
     std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
 
     ViewOptions options_;
@@ -87,6 +90,9 @@ private:
     ViewMode view_ = ViewMode::Final;
     Camera camera_;                      // the scene's, then moved by keys and the mouse
     AmbientOcclusion ambientOcclusion_;  // the scene's, then edited in the panel
+    // The scene's environment's intensity, rotation and background, then edited in the panel;
+    // none without an environment.
+    std::optional<EnvironmentLook> environmentLook_;
 
     double time_ = 0.0;
     bool paused_ = false;

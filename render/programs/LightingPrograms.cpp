@@ -65,6 +65,8 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_METALLIC_ROUGHNESS", "1");
     else if (!features.blinnPhong)
         defines.emplace_back("NO_BLINN_PHONG", "1");
+    if (!features.environment)
+        defines.emplace_back("NO_ENVIRONMENT", "1");
     if (!features.specularExponents.empty()) {
         std::string list;
         for (const std::uint16_t exponent : features.specularExponents)
