@@ -37,17 +37,17 @@ struct Softbox {
     }
 };
 
-// The studio's radiances: a sky that brightens from the horizon to the zenith, a darker warm
-// floor, and softboxes bright enough to show as highlights on a rough metal (about 10 times
-// the sky) without making the prefiltered map's samples noisy.
-constexpr glm::dvec3 kSkyHorizon{0.55, 0.58, 0.62};
-constexpr glm::dvec3 kSkyZenith{0.80, 0.84, 0.92};
-constexpr glm::dvec3 kFloorNear{0.10, 0.09, 0.08};
-constexpr glm::dvec3 kFloorFar{0.16, 0.15, 0.13};
+// The studio's radiances: a grey sky that brightens from the horizon to the zenith, a darker
+// warm floor, and softboxes 10 to 30 times the sky, bright enough to show as highlights on a
+// rough metal, dim enough that the prefiltered map's samples stay smooth.
+constexpr glm::dvec3 kSkyHorizon{0.30, 0.32, 0.35};
+constexpr glm::dvec3 kSkyZenith{0.45, 0.48, 0.55};
+constexpr glm::dvec3 kFloorNear{0.05, 0.045, 0.04};
+constexpr glm::dvec3 kFloorFar{0.10, 0.09, 0.08};
 constexpr double kDegree = kPi / 180.0;
 const Softbox kSoftboxes[] = {
     // key: in front and to the left of a camera looking along −Z, raised 35°
-    {-140.0 * kDegree, 35.0 * kDegree, 22.0 * kDegree, 14.0 * kDegree, 4.0 * kDegree, {9.0, 8.6, 8.0}},
+    {-140.0 * kDegree, 35.0 * kDegree, 22.0 * kDegree, 14.0 * kDegree, 4.0 * kDegree, {10.0, 9.5, 8.8}},
     // fill: to the right, lower and dimmer
     {120.0 * kDegree, 15.0 * kDegree, 16.0 * kDegree, 12.0 * kDegree, 4.0 * kDegree, {3.0, 3.2, 3.6}},
     // a long strip high behind the subject

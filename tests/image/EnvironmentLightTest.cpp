@@ -28,6 +28,7 @@
 #include <functional>
 #include <iterator>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -299,6 +300,45 @@ void checkPatch(double rotation, const glm::dvec3& bright, const glm::dvec3& dar
 TEST_P(EnvironmentLight, PatchAtPlusXShowsWhereTheReflectionPointsToPlusX) { checkPatch(0.0, {1, 0, 0}, {0, 0, -1}); }
 
 TEST_P(EnvironmentLight, RotationNinetyTurnsThePatchToMinusZ) { checkPatch(90.0, {0, 0, -1}, {1, 0, 0}); }
+
+TEST_P(EnvironmentLight, TransparentSurfacesGetItAsForwardDoes)
+{
+    // A glass pane of each model in front of the sphere, drawn by the transparency pass, and
+    // a point light: the technique's image is forward's (tests/image/TechniqueAgreementTest.cpp's
+    // tolerance), and the panes are lit by the environment, not only the light.
+    const auto dir = scratchDirectory();
+    writeMap(dir / "map.hdr", 64, [](const glm::dvec3& d) { return glm::vec3(d.y > 0 ? 1.0f : 0.25f, 0.5f, 0.75f); });
+    Json scene = Json::parse(sphereScene({{"base_color", {0.9, 0.6, 0.3}}, {"metallic", 1}, {"roughness", 0.4}}));
+    scene["materials"]["glass"] = {{"diffuse", {0.2, 0.4, 0.9}}, {"specular", {0.5, 0.5, 0.5}}, {"opacity", 0.4}};
+    scene["materials"]["tinted"] = {{"base_color", {0.3, 0.9, 0.3}}, {"roughness", 0.2}, {"opacity", 0.5}};
+    scene["objects"].push_back({{"mesh", {{"primitive", "box"}, {"size", {0.8, 0.8, 0.1}}}},
+                                {"material", "glass"},
+                                {"transform", {{"translate", {-0.5, 0.2, 1.6}}}}});
+    scene["objects"].push_back({{"mesh", {{"primitive", "sphere"}, {"radius", 0.3}}},
+                                {"material", "tinted"},
+                                {"transform", {{"translate", {0.6, -0.2, 1.6}}}}});
+    scene["lights"] = Json::array({{{"type", "point"}, {"pos", {0, 2, 3}}, {"intensity", {1, 1, 1}}, {"range", 6}}});
+    test::writeFile(dir / "scene.json", scene.dump());
+    const std::vector<std::string> args = {"--size", "96x96", "--gbuffer", "seed", "--technique"};
+    auto with = [&](const std::string& technique) {
+        std::vector<std::string> all = args;
+        all.push_back(technique);
+        return all;
+    };
+    const Image reference = test::renderPfm((dir / "scene.json").string(), dir / "forward.pfm", with("forward"));
+    const Image image = test::renderPfm((dir / "scene.json").string(), dir / "technique.pfm", with(GetParam()));
+    test::expectImagesNear(reference, image, test::kAgreementTolerance, GetParam());
+    // The panes alone, over a black background, with and without the environment: what they
+    // show is the transparency pass's, and the environment adds to it.
+    scene["objects"].erase(0);
+    test::writeFile(dir / "panes.json", scene.dump());
+    scene.erase("environment");
+    test::writeFile(dir / "plain.json", scene.dump());
+    const auto total = [](const Image& frame) { return std::accumulate(frame.rgb.begin(), frame.rgb.end(), 0.0); };
+    const double lit = total(test::renderPfm((dir / "panes.json").string(), dir / "panes.pfm", with(GetParam())));
+    const double unlit = total(test::renderPfm((dir / "plain.json").string(), dir / "plain.pfm", with(GetParam())));
+    EXPECT_GT(lit, 1.5 * unlit + 10.0) << "the transparency pass got no environment";
+}
 
 INSTANTIATE_TEST_SUITE_P(Techniques, EnvironmentLight, ::testing::ValuesIn(techniqueNames()), test::techniqueTestName);
 
