@@ -36,9 +36,12 @@ class EnvironmentLight {
 public:
     static constexpr int kRadianceWidth = 512;
     static constexpr int kRadianceLevels = 6;
-    // The storage of the prefiltered levels: half floats hold radiance to 2^-11 of its value
-    // (an eighth of an 8-bit step at 1), far finer than the prefiltering's own error.
-    static constexpr GLenum kRadianceFormat = GL_RGBA16F;
+    // The storage of the prefiltered levels: 32-bit floats. Half floats (2^-11 relative) would
+    // do for the image, but llvmpipe samples float texels faster (no conversion): with them and
+    // environmentAtan2 (shaders/lib/environment.glsl) the environment's cost in the lighting pass
+    // of scenes/pbr-models.json fell from 55 to about 20 ms (docs/performance.md). A GPU
+    // would save bandwidth with half floats, but the image would then depend on the driver.
+    static constexpr GLenum kRadianceFormat = GL_RGBA32F;
     // Samples per texel of the prefiltering (shaders/environment_prefilter.comp): 64 for level 1,
     // 128 for level 2, 256 for the rest. Filtered importance sampling reads a mipmap as wide as
     // each sample's share of the lobe, so the fewer the samples the blurrier the estimate: with

@@ -11,7 +11,7 @@
 // texel exactly, from a few samples each standing for a patch of the lobe: filtered importance
 // sampling blurs, lowering peaks and raising valleys. The largest difference measured over the
 // checked texels was 85% of the tolerance (level 2, a dim texel 2.3% off; the others 1.1-1.7%
-// of their value); half-float storage is within that (2^-10, llvmpipe truncates). A level
+// of their value); the chain's float storage adds nothing to speak of. A level
 // prefiltered for the wrong roughness (the next level's, or α taken as r) is off by more than
 // the tolerance somewhere on this map, which LevelOfTheWrongRoughnessFallsOutside checks.
 #include <gtest/gtest.h>
@@ -146,8 +146,8 @@ TEST_F(EnvironmentLightTest, LevelOfTheWrongRoughnessFallsOutside)
 
 TEST_F(EnvironmentLightTest, FirstLevelIsTheMapItself)
 {
-    // A map as wide as the chain: level 0 is its texels, to half-float rounding (llvmpipe
-    // truncates, so up to a whole step of 2^-10).
+    // A map as wide as the chain: level 0 is its texels (read at their centres; 2^-10 would
+    // allow half-float storage, which llvmpipe truncates).
     EnvironmentImage map = studioEnvironment(EnvironmentLight::kRadianceWidth / 2);
     const std::vector<std::vector<float>> levels = prefilteredLevels(map);
     for (std::size_t t = 0; t < map.radiance.size(); ++t)

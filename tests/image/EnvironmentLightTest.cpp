@@ -8,7 +8,7 @@
 // - The irradiance of a uniform map and of a sky over a ground is exact in spherical harmonics of
 //   order 2 (the harmonics integrate each texel's rectangle exactly): the analytic tolerance.
 // - A uniform map's prefiltered radiance is the map's at every level (an average of equal
-//   values), stored as half floats: 2^-11 relative more. The issue asks for 0.5% against
+//   values); 2^-11 relative more allows half-float storage. The issue asks for 0.5% against
 //   `ambient`, which this meets with room.
 // - An asymmetric map's irradiance: order 2 leaves out the clamped cosine's higher bands, at most
 //   (3/32) ∫ L dω / π of E / π (scene/Environment.h), plus the analytic tolerance.
@@ -16,7 +16,7 @@
 //   the level prefiltered for roughness 0.2, whose GGX lobe (α = 0.04) puts 6.4% of its weight
 //   more than 8.7° from its axis (P(tan²θ > t) = α² / (α² + t)), that is reflections more than
 //   17.5° away, across the horizon from where |R_y| ≥ 0.3. So a pixel may be off by
-//   0.15 · 0.064 · |Lt − Lb| times its F0·A + B, plus half floats and the analytic tolerance.
+//   0.15 · 0.064 · |Lt − Lb| times its F0·A + B, plus 2^-11 and the analytic tolerance.
 // - The u direction and the rotation: a mirror (roughness 0) reads the map itself; the bright
 //   patch's pixels are checked well inside it and the dark ones well outside.
 #include <gtest/gtest.h>
