@@ -56,7 +56,11 @@ with open(f"{out}/map-1024.hdr", "wb") as f:
 json.dump({"environment": {"map": "map-1024.hdr"}}, open(f"{out}/map-1024.json", "w"))
 PY
 frame_ms() { python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['frame_ms']['median'])" "$1"; }
-declare -A times
+lighting_ms() {
+  python3 -c "import json, sys; print(next(p['wall_ms'] for p in json.load(open(sys.argv[1]))['passes']
+if p['name'] == 'lighting'))" "$1"
+}
+declare -A times passes
 cases=(courtyard-without courtyard-with pbr-models-without pbr-models-with)
 for ((rep = 0; rep < reps; ++rep)); do
   for name in "${cases[@]}"; do
@@ -65,16 +69,22 @@ for ((rep = 0; rep < reps; ++rep)); do
     "$ML" render "$out/$name.json" -o "$out/image.png" --size "$size" --technique clustered "${lights[@]}" \
       --frames "$frames" --stats "$out/stats.json" >/dev/null
     times[$name]+="$(frame_ms "$out/stats.json") "
+    passes[$name]+="$(lighting_ms "$out/stats.json") "
   done
 done
-echo "clustered at $size, median frame_ms of $frames frames, $reps runs each (min-max of the runs' medians):"
+echo "clustered at $size, $reps runs each of $frames frames: the runs' medians (min-max), and the change of their median"
 for scene in courtyard pbr-models; do
-  python3 - "$scene" "${times[$scene-without]}" "${times[$scene-with]}" <<'PY'
+  python3 - "$scene" "${times[$scene-without]}" "${times[$scene-with]}" "${passes[$scene-without]}" \
+    "${passes[$scene-with]}" <<'PY'
 import statistics, sys
-name, without, with_ = sys.argv[1], list(map(float, sys.argv[2].split())), list(map(float, sys.argv[3].split()))
-a, b = statistics.median(without), statistics.median(with_)
-print(f"  {name:<11} without {min(without):.0f}-{max(without):.0f} ms, with builtin:studio "
-      f"{min(with_):.0f}-{max(with_):.0f} ms: {100 * (b - a) / a:+.1f}%")
+name = sys.argv[1]
+runs = [list(map(float, arg.split())) for arg in sys.argv[2:]]
+def line(what, without, with_):
+    a, b = statistics.median(without), statistics.median(with_)
+    return (f"{what} without {min(without):.0f}-{max(without):.0f} ms, with builtin:studio "
+            f"{min(with_):.0f}-{max(with_):.0f} ms: {b - a:+.1f} ms ({100 * (b - a) / a:+.1f}%)")
+print(f"  {name:<11} frame    " + line("", runs[0], runs[1]))
+print(f"  {'':<11} lighting " + line("", runs[2], runs[3]))
 PY
 done
 loads=""
