@@ -39,6 +39,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
+#include "render/output/ExrFile.h"
 #include "render/techniques/Technique.h"
 #include "scene/Environment.h"
 
@@ -362,6 +363,32 @@ TEST(EnvironmentBackground, ShowsTheMapWhereNoSurfaceIs)
     test::writeFile(dir / "plain.json", plain.dump());
     const Image without = test::renderPfm((dir / "plain.json").string(), dir / "plain.pfm", {"--size", "32x32"});
     EXPECT_FLOAT_EQ(without.pixel(16, 4)[2], 0.3f);
+}
+
+// An OpenEXR map lights as the same radiance in a Radiance file does: a sky of 1.5 over a ground
+// of 0.25, which both formats hold exactly, so the images are the same to the bit.
+TEST(EnvironmentFiles, ExrAndHdrMapsOfTheSameRadianceGiveTheSameImage)
+{
+    const auto dir = scratchDirectory();
+    const auto radiance = [](const glm::dvec3& d) { return glm::vec3(d.y > 0 ? 1.5f : 0.25f, 0.5f, 1.0f); };
+    writeMap(dir / "map.hdr", 32, radiance);
+    Image exr;
+    exr.width = 64;
+    exr.height = 32;
+    for (int j = 0; j < exr.height; ++j)
+        for (int i = 0; i < exr.width; ++i) {
+            const glm::vec3 value = radiance(environmentDirection({(i + 0.5) / exr.width, (j + 0.5) / exr.height}));
+            exr.rgb.insert(exr.rgb.end(), {value.r, value.g, value.b});
+        }
+    test::writeFile(dir / "map.exr", encodeExr({ExrLayer{"", {"R", "G", "B"}, exr}}, ExrPixels::Float));
+    Json scene = Json::parse(sphereScene({{"base_color", {0.9, 0.6, 0.3}}, {"metallic", 0.5}, {"roughness", 0.3}}));
+    test::writeFile(dir / "hdr.json", scene.dump());
+    scene["environment"]["map"] = "map.exr";
+    test::writeFile(dir / "exr.json", scene.dump());
+    const Image fromHdr = test::renderPfm((dir / "hdr.json").string(), dir / "hdr.pfm", {"--size", "48x48"});
+    const Image fromExr = test::renderPfm((dir / "exr.json").string(), dir / "exr.pfm", {"--size", "48x48"});
+    EXPECT_EQ(fromHdr.rgb, fromExr.rgb);
+    EXPECT_GT(*std::max_element(fromExr.rgb.begin(), fromExr.rgb.end()), 0.2f);
 }
 
 // Bad maps: one line naming the file, exit 1, nothing written (docs/scene-format.md).
