@@ -43,25 +43,46 @@ void MipmappedTexture2D::setWrap(GLenum s, GLenum t) const
 
 MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
                                        std::span<const std::uint8_t> rgba8)
+    : MipmappedTexture2D(label, internalFormat, width, height, fullMipmapLevels(width, height))
+{
+    // Rows of 4-byte texels: any width is aligned, whatever GL_UNPACK_ALIGNMENT says.
+    glTextureSubImage2D(id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba8.data());
+    // For sRGB storage GL recommends (but does not require) filtering the levels in linear
+    // space; Mesa and the vendor drivers do, so colour maps do not darken when minified.
+    glGenerateTextureMipmap(id());
+}
+
+MipmappedTexture2D::MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height, int levels)
     : GlObject(detail::createTexture(GL_TEXTURE_2D)),
       width_(width),
       height_(height),
-      levels_(fullMipmapLevels(width, height)),
+      levels_(levels),
       format_(internalFormat)
 {
     setLabel(GL_TEXTURE, id(), label);
     glTextureStorage2D(id(), levels_, internalFormat, width, height);
     throwIfOutOfMemory("the " + std::to_string(width) + "x" + std::to_string(height) + " texture '" +
                        std::string(label) + "'");
-    // Rows of 4-byte texels: any width is aligned, whatever GL_UNPACK_ALIGNMENT says.
-    glTextureSubImage2D(id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba8.data());
-    // For sRGB storage GL recommends (but does not require) filtering the levels in linear
-    // space; Mesa and the vendor drivers do, so colour maps do not darken when minified.
-    glGenerateTextureMipmap(id());
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+void MipmappedTexture2D::writeLevel(int level, GLenum format, GLenum type, const void* data) const
+{
+    // Rows of floats are 4-byte aligned, whatever their width.
+    glTextureSubImage2D(id(), level, 0, 0, levelWidth(level), levelHeight(level), format, type, data);
+}
+
+void MipmappedTexture2D::bindImage(GLuint unit, int level, GLenum access) const
+{
+    glBindImageTexture(unit, id(), level, GL_FALSE, 0, access, format_);
+}
+
+void MipmappedTexture2D::readLevel(int level, GLenum format, GLenum type, std::size_t bytes, void* data) const
+{
+    glGetTextureImage(id(), level, format, type, static_cast<GLsizei>(bytes), data);
 }
 
 }  // namespace manylights::gl

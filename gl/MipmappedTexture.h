@@ -3,6 +3,8 @@
 // are minified and filtered.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -19,6 +21,23 @@ public:
     // `internalFormat` (GL_SRGB8_ALPHA8 for colour, GL_RGBA8 for data) and generates the rest.
     MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height,
                        std::span<const std::uint8_t> rgba8);
+
+    // Storage for `levels` levels of `internalFormat` (a float format: an environment's radiance),
+    // their texels undefined until written (writeLevel, or as an image by a compute pass); trilinear
+    // filtering, repeated in both directions.
+    MipmappedTexture2D(std::string_view label, GLenum internalFormat, int width, int height, int levels);
+
+    // Writes the whole of `level` from `data` (`format`, `type`; rows bottom to top as GL expects).
+    void writeLevel(int level, GLenum format, GLenum type, const void* data) const;
+    // Makes the levels below the first from it (glGenerateTextureMipmap).
+    void generateMipmaps() const { glGenerateTextureMipmap(id()); }
+    // `level` bound to image unit `unit` for `access`.
+    void bindImage(GLuint unit, int level, GLenum access) const;
+    // Reads `level` back into `data` (`bytes` of `format`, `type`).
+    void readLevel(int level, GLenum format, GLenum type, std::size_t bytes, void* data) const;
+    // The size of `level`: each level half the one before, at least 1.
+    int levelWidth(int level) const { return std::max(width_ >> level, 1); }
+    int levelHeight(int level) const { return std::max(height_ >> level, 1); }
 
     int width() const { return width_; }
     int height() const { return height_; }

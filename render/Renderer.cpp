@@ -62,6 +62,9 @@ void Renderer::apply(const RendererDesc& requested)
         gpuScene_.setLightingTerms(desc.lightingTerms);
     if (first || desc.lightTexels != old.lightTexels)
         gpuScene_.setLightTexels(desc.lightTexels);
+    if (const auto& scene = gpuScene_.scene().environment;
+        scene && (first || desc.environmentLook != old.environmentLook))
+        gpuScene_.setEnvironmentLook(desc.environmentLook.value_or(scene->look));
     profiler_.setTiming(
         desc.passTiming.value_or(gpuScene_.driverChoices().finishAroundPasses ? PassTiming::Wall : PassTiming::Gpu));
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
@@ -182,6 +185,8 @@ void Renderer::issueFrame(Technique& technique, ViewMode view)
     if (!isGBufferView(view)) {
         targets_->litFramebuffer.clearColour(0, &gpuScene_.frameUniforms().background.x);
         technique.render(gpuScene_, *targets_, passes);
+        if (gpuScene_.environment().showsBackground())
+            drawEnvironmentBackground(passes);
         if (gpuScene_.hasTransparentObjects())
             transparencyPassFor(technique.options()).run(gpuScene_, *targets_, passes, technique.isReference());
         if (view == ViewMode::Volumes || view == ViewMode::VolumeCorners)
@@ -323,6 +328,16 @@ void Renderer::countWork()
     workCounts_.transparentLightEvaluations = transparency_ ? transparency_->lastLightEvaluations() : 0;
     workCounts_.lightEvaluations = sumOfTexels(targets_->lightEvaluations) - workCounts_.transparentLightEvaluations;
     workCounts_.inRangePairs = sumOfTexels(targets_->inRangeCounts);
+}
+
+void Renderer::drawEnvironmentBackground(FramePasses& passes)
+{
+    if (!environmentBackgroundProgram_)
+        environmentBackgroundProgram_ =
+            gl::Program("environment background",
+                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "environment_background.frag"}});
+    passes.run({.name = "environment background", .target = Resource::LitImage, .state = kUncoveredPixels},
+               [&] { drawCoveredPixels(environmentBackgroundProgram_); });
 }
 
 void Renderer::drawVolumeOverlay(FramePasses& passes, bool cornersOnly)

@@ -55,6 +55,9 @@ struct RendererDesc {
     std::optional<AmbientOcclusion> ambientOcclusion{};
     // --anisotropy: 0 (kAutoAnisotropy) or 1 to kMaxRequestedAnisotropy.
     int anisotropy = kAutoAnisotropy;
+    // The scene's environment's intensity, rotation and background when not set (the viewer
+    // edits them); nothing without an environment.
+    std::optional<EnvironmentLook> environmentLook{};
     // The viewer's switches for the ambient, diffuse and specular terms (1 on, 0 off).
     glm::vec3 lightingTerms{1.0f, 1.0f, 1.0f};
     // The display pass (render/effects/DisplayPass.h): when set, every frame of the Final and Volumes
@@ -192,6 +195,8 @@ private:
     // The program of a G-buffer, shadow or ssao view (made on first use).
     const gl::Program& gbufferViewProgram(ViewMode view);
     void countWork();
+    // The environment where no surface is (EnvironmentLight::showsBackground).
+    void drawEnvironmentBackground(FramePasses& passes);
     // Each light's volume over the lit image: its edges, or with `cornersOnly` its corners.
     void drawVolumeOverlay(FramePasses& passes, bool cornersOnly);
 
@@ -218,6 +223,7 @@ private:
     std::unique_ptr<Ssao> ssao_;
     std::unique_ptr<VolumeDrawer> overlayDrawer_;  // the volumes view
     gl::Program overlayProgram_;
+    gl::Program environmentBackgroundProgram_;
 
     // The frames issued and not yet finished, oldest first: the technique each ran, whose
     // storage check it is (null for the G-buffer views, which run none).

@@ -13,6 +13,7 @@
 
 #include "scene/Animation.h"
 #include "scene/DisplaySettings.h"
+#include "scene/Environment.h"
 #include "scene/Mesh.h"
 #include "scene/Revolution.h"
 
@@ -253,6 +254,8 @@ struct Scene {
     glm::vec3 ambient{0.0f};
     std::optional<DirectionalLight> directional;
     AmbientOcclusion ssao;
+    // `environment` in the scene file: image-based light (docs/lighting.md, "The environment").
+    std::optional<Environment> environment;
     DisplaySettings display;  // `display` in the scene file: how 8-bit outputs and the window show it
     float attenuationThreshold = kDefaultAttenuationThreshold;
     std::vector<Light> lights;         // explicit lights

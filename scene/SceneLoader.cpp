@@ -1,7 +1,11 @@
 // The scene file's reader (docs/scene-format.md): parseScene and loadSceneFile, and the
-// file's top level with its small sections (camera, directional, display, ssao). The other
-// sections have files of their own; scene/SceneFileLoader.h has the index.
+// file's top level with its small sections (camera, directional, display, ssao, environment).
+// The other sections have files of their own; scene/SceneFileLoader.h has the index.
 #include "scene/SceneLoader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
 
 #include "core/InputFile.h"
 #include "scene/SceneFileLoader.h"
@@ -18,7 +22,7 @@ Scene Loader::load(const Json& root)
     if (!root.is_object())
         fail(top, "the top level must be a JSON object, got " + describeType(root));
     expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights", "light_sets",
-                     "materials", "objects", "light_markers", "ssao", "display", "model_materials"});
+                     "materials", "objects", "light_markers", "ssao", "display", "model_materials", "environment"});
     // Before the objects, which load the model files it applies to.
     if (const auto node = member(top, "model_materials"))
         modelMaterialsAsBlinnPhong_ = oneOf(*node, {"metallic-roughness", "blinn-phong"}) == "blinn-phong";
@@ -34,6 +38,8 @@ Scene Loader::load(const Json& root)
         scene_.ssao = readAmbientOcclusion(*node);
     if (const auto node = member(top, "display"))
         scene_.display = readDisplay(*node);
+    if (const auto node = member(top, "environment"))
+        scene_.environment = readEnvironment(*node);
     if (const auto node = member(top, "attenuation_threshold"))
         scene_.attenuationThreshold = positive(*node);
     if (const auto node = member(top, "lights")) {
@@ -135,6 +141,36 @@ AmbientOcclusion Loader::readAmbientOcclusion(const Node& node) const
     if (const auto strength = member(node, "strength"))
         ao.strength = nonNegative(*strength);
     return ao;
+}
+
+Environment Loader::readEnvironment(const Node& node) const
+{
+    expectKeys(node, {"map", "intensity", "rotation", "background"});
+    Environment environment;
+    const Node map = required(node, "map");
+    environment.map = string(map);
+    if (isBuiltinEnvironment(environment.map)) {
+        // One built-in so far; the prefix is reserved for more.
+        oneOf(map, {std::string(kStudioEnvironment)});
+    } else {
+        const fs::path path = resolve(map);
+        std::string extension = path.extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (extension != ".hdr" && extension != ".exr")
+            fail(map, "must be a .hdr or .exr file or " + std::string(kStudioEnvironment) + ", got " +
+                          describeValue(*map.json));
+        expectRegularFile(map, path);
+        environment.map = path.string();
+    }
+    // number() refuses what overflows a float, so the intensity is finite.
+    if (const auto intensity = member(node, "intensity"))
+        environment.look.intensity = nonNegative(*intensity);
+    if (const auto rotation = member(node, "rotation"))
+        environment.look.rotationDegrees = number(*rotation);
+    if (const auto background = member(node, "background"))
+        environment.look.background = boolean(*background);
+    return environment;
 }
 
 }  // namespace scene_file

@@ -12,7 +12,8 @@
 #                                  variant the tests build, under both driver profiles, is checked
 #   scripts/check-shaders.sh       renders small frames that build every technique in both
 #                                  G-buffer layouts and both driver profiles, every view, the
-#                                  display pass, shadows, SSAO and transparency, then checks those
+#                                  display pass, shadows, SSAO, transparency and an environment,
+#                                  then checks those
 #
 # Exits 1 naming each stage glslang rejects (its messages follow), 0 when all pass.
 set -euo pipefail
@@ -48,6 +49,8 @@ if [ -z "$dump" ]; then
       render tests/scenes/spots_and_points.json --driver-profile "$profile" --technique "$technique"
       render scenes/glass.json --driver-profile "$profile" --technique "$technique"
       render scenes/gltf-models.json --driver-profile "$profile" --technique "$technique"
+      # An environment: its prefiltering, its background and the lighting's image-based light.
+      render scenes/studio.json --driver-profile "$profile" --technique "$technique"
     done
     for view in $views; do
       render tests/scenes/shadows_and_ssao.json --driver-profile "$profile" --view "$view" --shadow-lights 4

@@ -3,7 +3,7 @@
 # project's own commands: scenes/pbr-models.json (the CC0 WaterBottle, metal and plastic balls,
 # 300 coloured lights) as glTF's model shades it and with `"model_materials": "blinn-phong"`, the
 # mapping every glTF material had before (the scene's own metallic-roughness balls and floor
-# stay as they are), into docs/images/.
+# stay as they are), and scenes/studio.json (the built-in studio environment), into docs/images/.
 #
 # With HELMET=1 it also renders DamagedHelmet from ../shared/assets/gltf-pbr/ in both ways, into
 # out/ only: its licence (CC BY-NC 4.0, "Battle Damaged Sci-fi Helmet - PBR" © 2016
@@ -32,6 +32,9 @@ with_blinn_phong scenes/pbr-models.json scenes/.pbr-models-blinn-phong.json
 trap 'rm -rf "$scratch" scenes/.pbr-models-blinn-phong.json' EXIT
 $ml render scenes/pbr-models.json -o $out/pbr-models.png --size 640x400
 $ml render scenes/.pbr-models-blinn-phong.json -o $out/pbr-models-blinn-phong.png --size 640x400
+# The built-in studio environment behind a mirror, gold, copper, plastic and chalk ball (issue 42,
+# docs/scene-format.md "environment").
+$ml render scenes/studio.json -o $out/studio.png --size 640x360
 
 if [ "${HELMET:-0}" = 1 ]; then
   helmet=$(realpath ../shared/assets/gltf-pbr/DamagedHelmet/DamagedHelmet.gltf)

@@ -279,6 +279,8 @@ void runRender(const RenderOptions& options)
         stats["load_ms"] = loadMs;
         stats["lights_ms"] = lightsMs;
         stats["renderer_ms"] = rendererMs;
+        const EnvironmentLight& environment = renderer.gpuScene().environment();
+        stats["environment_ms"] = environment.present() ? nlohmann::json(environment.loadMs()) : nlohmann::json();
         outputs.stage(options.statsPath, "statistics", stats.dump(2) + "\n");
     }
     outputs.commit();

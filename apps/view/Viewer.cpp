@@ -76,6 +76,7 @@ Viewer::Viewer(const ViewOptions& options)
       view_(*parseViewMode(options.view)),
       camera_(scene_.camera),
       ambientOcclusion_(scene_.ssao),
+      environmentLook_(scene_.environment ? std::optional(scene_.environment->look) : std::nullopt),
       time_(options.time)
 {
     lights_ = lightsForCommand(scene_, options.lights);
@@ -163,6 +164,7 @@ RendererDesc Viewer::rendererDesc() const
             .shadowLights = shadowLights_,
             .directionalShadows = directionalShadows_,
             .ambientOcclusion = ambientOcclusion_,
+            .environmentLook = environmentLook_,
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
             .display = shown,
             .wireframe = wireframe_,

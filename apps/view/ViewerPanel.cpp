@@ -197,6 +197,7 @@ void Viewer::drawPanelContents()
     ImGui::Checkbox("SSAO", &occlusion.enabled);
     sliderWithValue(kSsaoRadiusLabel, occlusion.radius, 0.05f, 4.0f, "%.2f");
     sliderWithValue(kSsaoStrengthLabel, occlusion.strength, 0.0f, 2.0f, "%.2f");
+    drawEnvironmentPanel();
 
     if (ImGui::Button(keyedLabel("print camera", KeyAction::PrintCamera).c_str()))
         printCamera();
@@ -273,6 +274,20 @@ void Viewer::writePanelReport(const std::string& path) const
     std::snprintf(line, sizeof line, "%.0f %.0f %.0f %.0f %d %d %s\n", shown.x, shown.y, shown.width, shown.height,
                   windowWidth, windowHeight, state);
     writeFileAtomically(path, "panel report", line);
+}
+
+// The environment's section (issue 42, docs/viewer.md): the scene's environment's intensity and
+// rotation, and whether it shows where no surface is. The renderer takes them through
+// RendererDesc::environmentLook, without prefiltering the map again.
+void Viewer::drawEnvironmentPanel()
+{
+    if (!environmentLook_)
+        return;
+    ImGui::Separator();
+    ImGui::TextUnformatted(("environment: " + scene_.environment->map).c_str());
+    sliderWithValue("env. intensity", environmentLook_->intensity, 0.0f, 4.0f, "%.2f");
+    sliderWithValue("env. rotation (deg)", environmentLook_->rotationDegrees, -180.0f, 180.0f, "%+.0f");
+    ImGui::Checkbox("environment as background", &environmentLook_->background);
 }
 
 }  // namespace manylights

@@ -74,6 +74,8 @@ private:
     std::string keyedLabel(const char* label, KeyAction action) const;
     // For the script's report-panel: the panel as this frame drew it (docs/viewer.md "Scripts").
     void writePanelReport(const std::string& path) const;
+    // The panel's environment section (ViewerPanel.cpp): nothing without one.
+    void drawEnvironmentPanel();
     std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
 
     ViewOptions options_;
@@ -91,6 +93,9 @@ private:
     ViewMode view_ = ViewMode::Final;
     Camera camera_;                      // the scene's, then moved by keys and the mouse
     AmbientOcclusion ambientOcclusion_;  // the scene's, then edited in the panel
+    // The scene's environment's intensity, rotation and background, then edited in the panel;
+    // none without an environment.
+    std::optional<EnvironmentLook> environmentLook_;
 
     double time_ = 0.0;
     bool paused_ = false;

@@ -99,6 +99,9 @@ inline constexpr PipelineState kCoveredPixels{.depthTest = DepthTest::Greater, .
 inline constexpr PipelineState kAddToCoveredPixels{
     .depthTest = DepthTest::Greater, .keepDepth = true, .blend = Blend::Add};
 
+// ... over the pixels that hold none, whose depth is the clear's 1 (the environment's background).
+inline constexpr PipelineState kUncoveredPixels{.depthTest = DepthTest::Equal, .keepDepth = true};
+
 // A full-screen triangle over every pixel, whatever the depth (the display pass).
 inline constexpr PipelineState kEveryPixel{.depthTest = DepthTest::Off, .keepDepth = true};
 

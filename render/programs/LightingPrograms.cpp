@@ -67,6 +67,8 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_BLINN_PHONG", "1");
     if (features.branchOnReach)
         defines.emplace_back("BRANCH_ON_REACH", "1");
+    if (!features.environment)
+        defines.emplace_back("NO_ENVIRONMENT", "1");
     if (!features.specularExponents.empty()) {
         std::string list;
         for (const std::uint16_t exponent : features.specularExponents)

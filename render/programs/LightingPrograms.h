@@ -65,6 +65,10 @@ struct LightingFeatures {
     // The light loops branch on a light's reach (BRANCH_ON_REACH) instead of testing first
     // and selecting: the GPU profile's choice (DriverChoices::branchOnLightReach).
     bool branchOnReach = false;
+    // Whether the scene has an environment (render/environment/EnvironmentLight.h): a program
+    // without leaves its code out (NO_ENVIRONMENT), so that a scene without one renders as it
+    // did before environments, to the bit, and pays nothing for them.
+    bool environment = true;
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
@@ -85,7 +89,7 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
 
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
 // NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, NO_BLINN_PHONG,
-// NO_METALLIC_ROUGHNESS, and SPECULAR_EXPONENT_COUNT
+// NO_METALLIC_ROUGHNESS, NO_ENVIRONMENT, and SPECULAR_EXPONENT_COUNT
 // with SPECULAR_EXPONENTS, as `features` allow.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 

@@ -8,6 +8,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const D
       lights_(lights, scene.attenuationThreshold, driver),
       draws_(scene, lights_.rest(), driver),  // the markers follow the lights in the lights' order
       frame_(scene, lights.size()),
+      environment_(scene.environment ? EnvironmentLight(*scene.environment) : EnvironmentLight()),
       features_(lightingFeaturesOf(lights, scene.directional))
 {
     // The specular powers as multiplications were measured on llvmpipe only. A GPU computes
@@ -18,6 +19,7 @@ GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const D
     features_.branchOnReach = driver_.branchOnLightReach;
     features_.blinnPhong = draws_.drawsModel(ShadingModel::BlinnPhong);
     features_.metallicRoughness = draws_.drawsModel(ShadingModel::MetallicRoughness);
+    features_.environment = environment_.present();
     setTime(0.0);
     setViewport(1, 1);
 }
@@ -27,6 +29,7 @@ void GpuScene::bind() const
     draws_.bind();
     frame_.bind();
     lights_.bind();
+    environment_.bind();
 }
 
 std::vector<GpuScene::TransparentLayer> GpuScene::transparentLayersBackToFront() const

@@ -13,6 +13,7 @@
 #include "gl/Program.h"
 #include "render/DriverProfile.h"
 #include "render/culling/LightBatches.h"
+#include "render/environment/EnvironmentLight.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/scene/DrawList.h"
 #include "render/scene/GpuFrame.h"
@@ -31,12 +32,16 @@ public:
     // outlive this.
     GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver);
 
-    // The three owners.
+    // The three owners, and the environment (none: a black one, EnvironmentLight()).
     const SceneLights& sceneLights() const { return lights_; }
     const DrawList& drawList() const { return draws_; }
     const GpuFrame& frame() const { return frame_; }
+    const EnvironmentLight& environment() const { return environment_; }
+    // The environment's intensity, rotation and background (the viewer's panel); nothing
+    // without one.
+    void setEnvironmentLook(const EnvironmentLook& look) { environment_.setLook(look); }
 
-    // Binds the vertex array, the frame uniforms and the light buffer.
+    // Binds the vertex array, the frame uniforms, the light buffer and the environment.
     void bind() const;
     using DrawBatch = DrawList::DrawBatch;
     using TransparentLayer = DrawList::TransparentLayer;
@@ -144,6 +149,7 @@ private:
     SceneLights lights_;
     DrawList draws_;
     GpuFrame frame_;
+    EnvironmentLight environment_;
     LightingFeatures features_;  // without the frame's shadowing (frame_ has it)
 };
 

@@ -9,6 +9,7 @@
 const int FRAME_BLOCK_BINDING = 0;         // lib/frame.glsl Frame
 const int SHADOWING_BLOCK_BINDING = 1;     // lib/shadows.glsl Shadowing
 const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/culling/LightBatches.h)
+const int ENVIRONMENT_BLOCK_BINDING = 3;   // lib/environment.glsl EnvironmentLight
 
 // Shader storage buffers.
 const int LIGHTS_BUFFER_BINDING = 0;                  // lib/lights.glsl Lights
@@ -77,6 +78,9 @@ const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
 const int GLOBAL_LIGHT_RECORDS_UNIT = 12;  // lib/cluster_lists.glsl globalLightRecordTexels (no material maps there)
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
+// Shares RAW_OCCLUSION's number, within the 16 units GL promises: only ssao_blur.comp uses that.
+const int ENVIRONMENT_RADIANCE_UNIT = 14;  // lib/environment.glsl: the prefiltered radiance
+const int ENVIRONMENT_SOURCE_UNIT = 0;     // environment_prefilter.comp: the map with its mipmaps
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
 // The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/culling/LightBatches.h checks).
 const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/culling/LightBatches.h: light texels)
@@ -87,3 +91,4 @@ const int LIGHT_EVALUATIONS_IMAGE_UNIT = 0;  // lib/lighting.glsl (--count-work)
 const int IN_RANGE_COUNTS_IMAGE_UNIT = 1;    // in_range.comp
 const int OCCLUSION_IMAGE_UNIT = 1;          // ssao.comp, ssao_blur.comp: what they write
 const int LIT_IMAGE_UNIT = 2;                // tiled.comp
+const int ENVIRONMENT_LEVEL_IMAGE_UNIT = 3;  // environment_prefilter.comp: the level it writes

@@ -6,6 +6,9 @@
 #include "lib/lights.glsl"
 #include "lib/shadows.glsl"
 #include "lib/specular_power.glsl"
+#ifndef NO_ENVIRONMENT
+#include "lib/environment.glsl"
+#endif
 
 // A surface of either reflection model (docs/lighting.md). Blinn-Phong reads diffuse (kd),
 // specular (ks) and shininess; metallic-roughness reads diffuse as c_diff = base · (1 − metallic),
@@ -106,16 +109,22 @@ vec3 surfaceBrdf(Surface s, vec3 L, vec3 V)
     return BY_MODEL(s.metallicRoughness, metallicRoughnessBrdf(s, L, V), blinnPhong(s, L, V));
 }
 
+// Karis's analytic fit of the split-sum's (A, B) integral ("Physically based shading on mobile",
+// 2014) at N·V and the roughness: the specular part of a uniform environment of radiance 1 is
+// F0 · A + B.
+vec2 splitSumFit(float NdotV, float roughness)
+{
+    vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+    float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
+    return vec2(-1.04, 1.04) * a004 + r.zw;
+}
+
 // What the metallic-roughness surface reflects of a uniform environment of radiance 1: all of
 // c_diff (a uniform environment's irradiance is π, which k = π's units already hold), and the
-// split-sum specular F0 · A + B with Karis's analytic fit of the (A, B) integral ("Physically
-// based shading on mobile", 2014), times the material's baked occlusion.
+// split-sum specular F0 · A + B, times the material's baked occlusion.
 vec3 metallicRoughnessAmbient(Surface s, vec3 V)
 {
-    float NdotV = max(dot(s.normal, V), kMinNdotV);
-    vec4 r = s.roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
-    float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
-    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    vec2 ab = splitSumFit(max(dot(s.normal, V), kMinNdotV), s.roughness);
     return (s.diffuse + s.specular * ab.x + ab.y) * s.occlusion;
 }
 
@@ -125,13 +134,37 @@ vec3 ambientReflectance(Surface s, vec3 V)
     return BY_MODEL(s.metallicRoughness, metallicRoughnessAmbient(s, V), s.diffuse);
 }
 
-// The light-independent terms: ke + ambient ⊙ kd · ao (kd: ambientReflectance()) + the directional light times its
-// shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off). A program
-// built with NO_DIRECTIONAL_LIGHT (lightingFeatureDefines) is for scenes without one, whose
-// term is zero.
+#ifndef NO_ENVIRONMENT
+// What the surface reflects of the environment (docs/lighting.md, "The environment"): a
+// Blinn-Phong surface kd ⊙ E(n)/π and nothing specular; a metallic-roughness one the split-sum
+// image-based light, (c_diff ⊙ E(n)/π + P(R, r) ⊙ (F0 · A + B)) · o, with P the radiance
+// prefiltered for roughness r at the reflection vector R and (A, B) the fit above at N·V and r
+// (unclamped, as for the ambient term).
+vec3 environmentReflected(Surface s, vec3 V)
+{
+    vec3 diffuse = s.diffuse * environmentIrradianceOverPi(s.normal);
+#ifdef NO_METALLIC_ROUGHNESS
+    return diffuse;
+#else
+    vec2 ab = splitSumFit(max(dot(s.normal, V), kMinNdotV), s.roughness);
+    vec3 specular = environmentPrefiltered(reflect(-V, s.normal), s.roughness) * (s.specular * ab.x + ab.y);
+    return BY_MODEL(s.metallicRoughness, (diffuse + specular) * s.occlusion, diffuse);
+#endif
+}
+#endif
+
+// The light-independent terms: ke + (ambient ⊙ kd + the environment's light) · ao (kd:
+// ambientReflectance(); the environment's: environmentReflected()) + the directional light
+// times its shadow factor (lib/shadows.glsl; both factors are exactly 1 where they are off). A
+// program built with NO_DIRECTIONAL_LIGHT (lightingFeatureDefines) is for scenes without one,
+// whose term is zero; one built with NO_ENVIRONMENT for scenes without an environment, whose
+// colour is then the same to the bit as before there were environments.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
     vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * ambientReflectance(s, V) * ambientOcclusion(s.position);
+#ifndef NO_ENVIRONMENT
+    color += frame.terms.x * environmentReflected(s, V) * ambientOcclusion(s.position);
+#endif
 #ifndef NO_DIRECTIONAL_LIGHT
     color += frame.directionalIntensity.rgb * surfaceBrdf(s, frame.directionalToLight.xyz, V) *
              directionalShadow(s.position);

@@ -1,8 +1,8 @@
 // The binding table (shaders/lib/bindings.glsl, render/programs/Bindings.h) against every program the
-// renderer links: after frames of every technique with shadows, SSAO, transparency, work
-// counting, every view and the display pass with FXAA and auto-exposure, every live program
-// object in the context is asked for its uniform blocks, storage blocks and sampler and image
-// uniforms, and each one's binding must be the table's for its name. A resource the table
+// renderer links: after frames of every technique with shadows, SSAO, transparency, an
+// environment, work counting, every view and the display pass with FXAA and auto-exposure,
+// every live program object in the context is asked for its uniform blocks, storage blocks and
+// sampler and image uniforms, and each one's binding must be the table's for its name. A resource the table
 // does not name fails too, so a new binding cannot bypass it.
 #include <gtest/gtest.h>
 
@@ -46,6 +46,7 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::UniformBlock, "Frame"}, FRAME_BLOCK_BINDING},
         {{Kind::UniformBlock, "Shadowing"}, SHADOWING_BLOCK_BINDING},
         {{Kind::UniformBlock, "LightWindow"}, LIGHT_WINDOW_BLOCK_BINDING},
+        {{Kind::UniformBlock, "EnvironmentLight"}, ENVIRONMENT_BLOCK_BINDING},
         {{Kind::StorageBlock, "Lights"}, LIGHTS_BUFFER_BINDING},
         {{Kind::StorageBlock, "Result"}, LUMINANCE_RESULT_BUFFER_BINDING},
         {{Kind::StorageBlock, "TileQuads"}, TILE_QUADS_BUFFER_BINDING},
@@ -116,11 +117,14 @@ const std::map<std::pair<Kind, std::string>, int>& expectedBindings()
         {{Kind::Sampler, "tileDepthRangeTexels"}, CLUSTER_TILE_DEPTHS_UNIT},
         {{Kind::Sampler, "tileOccupiedSliceTexels"}, CLUSTER_TILE_SLICES_UNIT},
         {{Kind::Sampler, "clusterBoundTexels"}, CLUSTER_BOUNDS_UNIT},
+        {{Kind::Sampler, "environmentRadiance"}, ENVIRONMENT_RADIANCE_UNIT},
+        {{Kind::Sampler, "environmentSource"}, ENVIRONMENT_SOURCE_UNIT},
         {{Kind::Image, "lightEvaluations"}, LIGHT_EVALUATIONS_IMAGE_UNIT},
         {{Kind::Image, "inRangeCounts"}, IN_RANGE_COUNTS_IMAGE_UNIT},
         {{Kind::Image, "rawOcclusion"}, OCCLUSION_IMAGE_UNIT},
         {{Kind::Image, "blurredOcclusion"}, OCCLUSION_IMAGE_UNIT},
         {{Kind::Image, "litImage"}, LIT_IMAGE_UNIT},
+        {{Kind::Image, "environmentLevel"}, ENVIRONMENT_LEVEL_IMAGE_UNIT},
     };
     return table;
 }
@@ -216,6 +220,8 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     pane.material = scene.materials.size() - 1;
     pane.transform = glm::translate(pane.transform, glm::vec3(0.0f, 0.5f, 0.0f));
     scene.objects.push_back(pane);
+    // And the environment, shown as the background (its prefiltering and background programs).
+    scene.environment = Environment{.map = std::string(kStudioEnvironment), .look = {.background = true}};
     std::vector<Light> lights = expandLights(scene);
     // A moving light, for the pass that poses lights on the GPU (render/scene/SceneLights.h).
     lights.front().animation = OrbitAnimation{};

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 #include "TestSupport.h"
 #include "render/output/Image.h"
@@ -14,6 +15,14 @@ namespace manylights::test {
 
 int checkEveryPixel(const std::string& sceneJson, const Expected& expected, const std::string& size,
                     std::filesystem::path directory, const PixelCheck& check)
+{
+    return checkEveryPixelWithNormal(
+        sceneJson, [&](const glm::dvec3& position, const glm::dvec3&) { return expected(position); }, size,
+        std::move(directory), check);
+}
+
+int checkEveryPixelWithNormal(const std::string& sceneJson, const ExpectedWithNormal& expected, const std::string& size,
+                              std::filesystem::path directory, const PixelCheck& check)
 {
     const auto dir = directory.empty() ? scratchDirectory() : directory;
     writeFile(dir / "scene.json", sceneJson);
@@ -32,7 +41,8 @@ int checkEveryPixel(const std::string& sceneJson, const Expected& expected, cons
             if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f)
                 continue;  // background: no surface
             const float* p = position.pixel(x, y);
-            const std::optional<glm::dvec3> maybeWant = expected(glm::dvec3(p[0], p[1], p[2]));
+            const std::optional<glm::dvec3> maybeWant =
+                expected(glm::dvec3(p[0], p[1], p[2]), glm::dvec3(n[0], n[1], n[2]));
             if (!maybeWant)
                 continue;
             const glm::dvec3 want = *maybeWant;

@@ -37,6 +37,16 @@ struct PixelCheck {
 int checkEveryPixel(const std::string& sceneJson, const Expected& expected, const std::string& size = "65x65",
                     std::filesystem::path directory = {}, const PixelCheck& check = {});
 
+// The expected colour at a world position with the shading normal there (the seed layout's
+// --view normal, 32-bit floats: the interpolated normal the lighting used, not the position's
+// direction from a sphere's centre, which a tessellated sphere's flat triangles do not share).
+using ExpectedWithNormal =
+    std::function<std::optional<glm::dvec3>(const glm::dvec3& position, const glm::dvec3& normal)>;
+// checkEveryPixel with the normal as well.
+int checkEveryPixelWithNormal(const std::string& sceneJson, const ExpectedWithNormal& expected,
+                              const std::string& size = "65x65", std::filesystem::path directory = {},
+                              const PixelCheck& check = {});
+
 // The camera straight above the origin looking down, so the centre of an odd-sized image
 // sees exactly the origin.
 extern const char* const kTopCamera;

@@ -121,6 +121,24 @@ const std::vector<BadScene> kBadScenes = {
      ": /ssao/enabled: ", "expected true or false, got a number"},
     {"SsaoTypo", R"json({"ssao": {"radious": 1}})json", ": /ssao/radious: ", "unknown key 'radious'"},
 
+    // Environment (issue 42).
+    {"EnvironmentWithoutMap", R"json({"environment": {"intensity": 1}})json",
+     ": /environment: ", "missing required key 'map'"},
+    {"EnvironmentMapMissing", R"json({"environment": {"map": "maps/missing.hdr"}})json",
+     ": /environment/map: ", "file not found: " + resolved("maps/missing.hdr")},
+    {"EnvironmentMapNotHdrOrExr", R"json({"environment": {"map": "textures/sky.png"}})json",
+     ": /environment/map: ", "must be a .hdr or .exr file or builtin:studio, got 'textures/sky.png'"},
+    {"EnvironmentUnknownBuiltin", R"json({"environment": {"map": "builtin:sunset"}})json",
+     ": /environment/map: ", "'builtin:sunset'"},
+    {"EnvironmentIntensityNegative", R"json({"environment": {"map": "builtin:studio", "intensity": -1}})json",
+     ": /environment/intensity: ", "must be >= 0, got -1"},
+    {"EnvironmentIntensityOverflows", R"json({"environment": {"map": "builtin:studio", "intensity": 1e39}})json",
+     ": /environment/intensity: ", "1e+39 does not fit in a 32-bit float"},
+    {"EnvironmentBackgroundNotBool", R"json({"environment": {"map": "builtin:studio", "background": 1}})json",
+     ": /environment/background: ", "expected true or false, got a number"},
+    {"EnvironmentTypo", R"json({"environment": {"map": "builtin:studio", "rotate": 90}})json",
+     ": /environment/rotate: ", "unknown key 'rotate' (did you mean 'rotation'?)"},
+
     // Lights.
     {"LightsNotArray", R"json({"lights": {}})json", ": /lights: ", "expected an array, got an object"},
     {"LightMissingType", withLight(R"json({"pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1})json"),

@@ -285,6 +285,20 @@ Png renderAtWindowSize(const fs::path& output, const std::string& options)
     return readPng(output);
 }
 
+TEST(Viewer, ShowsTheSceneEnvironmentAsRenderDoes)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    // scenes/studio.json: the built-in studio lights the balls and shows behind them; the panel
+    // draws its environment section (issue 42) in the frames before the screenshot.
+    const std::string scene = "'" MANYLIGHTS_SOURCE_DIR "/scenes/studio.json'";
+    ASSERT_EQ(runViewer(dir, "pause\nframes 2\nscreenshot shown.png\nquit\n", scene), 0)
+        << readText(dir / "viewer.log");
+    expectEqualWithinOneLevel(readPng(dir / "shown.png"), renderAtWindowSize(dir / "reference.png", scene),
+                              "shown.png");
+}
+
 TEST(Viewer, DisplayOptionsShowWhatRenderWrites)
 {
     if (!haveXvfb())
