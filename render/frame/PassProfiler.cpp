@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/EnumNames.h"
 #include "core/Error.h"
 
 namespace manylights {
@@ -16,23 +17,16 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 }
 }  // namespace
 
-std::string_view passTimingName(PassTiming timing)
-{
-    switch (timing) {
-    case PassTiming::Wall: return "wall";
-    case PassTiming::Gpu: return "gpu";
-    case PassTiming::Frame: return "frame";
-    }
-    return "wall";
-}
+namespace {
+constexpr EnumNames<PassTiming, 3> kPassTimings{{
+    {PassTiming::Wall, "wall"},
+    {PassTiming::Gpu, "gpu"},
+    {PassTiming::Frame, "frame"},
+}};
+}  // namespace
 
-std::optional<PassTiming> parsePassTiming(std::string_view name)
-{
-    for (PassTiming timing : {PassTiming::Wall, PassTiming::Gpu, PassTiming::Frame})
-        if (passTimingName(timing) == name)
-            return timing;
-    return std::nullopt;
-}
+std::string_view passTimingName(PassTiming timing) { return nameOf(kPassTimings, timing); }
+std::optional<PassTiming> parsePassTiming(std::string_view name) { return parseName(kPassTimings, name); }
 
 PassProfiler::PassProfiler(PassTiming timing) : timing_(timing), countInvocations_(gl::hasPipelineStatistics())
 {

@@ -1,21 +1,19 @@
 #include "render/techniques/Technique.h"
 
+#include "core/EnumNames.h"
 #include "render/culling/LightBatches.h"
 
 namespace manylights {
 
-std::string_view lightingStageName(LightingStage stage)
-{
-    return stage == LightingStage::Compute ? "compute" : "fragment";
-}
+namespace {
+constexpr EnumNames<LightingStage, 2> kLightingStages{{
+    {LightingStage::Fragment, "fragment"},
+    {LightingStage::Compute, "compute"},
+}};
+}  // namespace
 
-std::optional<LightingStage> parseLightingStage(std::string_view name)
-{
-    for (LightingStage stage : {LightingStage::Fragment, LightingStage::Compute})
-        if (lightingStageName(stage) == name)
-            return stage;
-    return std::nullopt;
-}
+std::string_view lightingStageName(LightingStage stage) { return nameOf(kLightingStages, stage); }
+std::optional<LightingStage> parseLightingStage(std::string_view name) { return parseName(kLightingStages, name); }
 
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
