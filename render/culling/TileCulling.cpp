@@ -156,7 +156,7 @@ struct Sector {
 
 // Chunks per thread (TileCuller::cull): enough that the threads finish together where the lights'
 // costs differ, few enough that the counting sort's pass over every chunk's counts stays small.
-constexpr std::size_t kChunksPerThread = 8;
+constexpr std::size_t kChunksPerThread = 16;
 
 // Runs task(i) for every i < count on `threads` threads, the caller's one of them, each taking
 // the next i as it finishes one.

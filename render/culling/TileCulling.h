@@ -106,9 +106,10 @@ private:
     std::vector<Chunk> chunks_;
 };
 
-// Below this many lights TileCuller culls on one thread unless told otherwise: at 4,096 lights
-// the culling took 1.6 ms on one thread (courtyard, 1280x720), of the order of starting a thread.
-inline constexpr std::size_t kParallelCullingLights = 8192;
+// Below this many lights TileCuller culls on one thread unless told otherwise: one thread culls
+// 4,096 courtyard-like lights at 1280x720 in about 2 ms, and on a busy machine a helper thread
+// may start milliseconds late (idle, a thread's start and join take about 20 µs).
+inline constexpr std::size_t kParallelCullingLights = 4096;
 
 // For measuring (scripts/measure-tile-culling.sh) and testing, MANYLIGHTS_CULLING_THREADS: the
 // threads TileCuller culls on at every light count, a whole number from 1 to

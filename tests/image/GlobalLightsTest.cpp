@@ -151,15 +151,16 @@ TEST_P(GlobalLights, MoreThanTheCapacityAllFallBackToPairs)
 
 INSTANTIATE_TEST_SUITE_P(ListTechniques, GlobalLights, ::testing::Values("tiled", "clustered"));
 
-// The measuring knobs of the lists (docs/cli.md) are read like a user's input: a bad value of
-// `variable` is one line naming the variable, `expected` and the value, exit status 1, and the
-// earlier image kept; each of `good` is taken.
+// The measuring knobs of the lists and of the CPU's culling (docs/cli.md) are read like a user's
+// input: a bad value of `variable` is one line naming the variable, `expected` and the value,
+// exit status 1, and the earlier image of each of `techniques` kept; each of `good` is taken.
 void expectKnobChecked(const std::string& variable, const std::vector<std::string>& bad, const std::string& expected,
-                       const std::vector<std::string>& good)
+                       const std::vector<std::string>& good,
+                       const std::vector<std::string>& techniques = {"clustered", "tiled"})
 {
     const auto dir = scratchDirectory();
     const std::string image = (dir / "old.png").string();
-    for (const std::string technique : {"clustered", "tiled"}) {
+    for (const std::string& technique : techniques) {
         const std::vector<std::string> args = {"render", "-o", image, "--size", "64x36", "--technique", technique};
         ASSERT_EQ(test::runExecutable(args).exitCode, 0);
         const auto before = std::filesystem::last_write_time(image);
@@ -189,6 +190,13 @@ TEST(MaskedListLights, ABadValueIsExitOneAndKeepsTheOldImage)
 {
     expectKnobChecked("MANYLIGHTS_MASKED_LIST_LIGHTS", {"abc", "-1", "1.5", "12x", "", "16385", "99999999999"},
                       "expected a whole number of lights up to 16384", {"0", "16384"});
+}
+
+// tiled-quads' culling threads (render/culling/TileCulling.h): a whole number from 1 to 256.
+TEST(CullingThreads, ABadValueIsExitOneAndKeepsTheOldImage)
+{
+    expectKnobChecked("MANYLIGHTS_CULLING_THREADS", {"abc", "0", "-1", "1.5", "", "257"},
+                      "expected a whole number of threads from 1 to 256", {"1", "3"}, {"tiled-quads"});
 }
 
 }  // namespace
