@@ -1,14 +1,15 @@
 #include "render/Views.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
+
+#include "core/EnumNames.h"
 
 namespace manylights {
 
 namespace {
-const std::array<std::pair<ViewMode, std::string_view>, 12> kViews = {{
+constexpr EnumNames<ViewMode, 12> kViews = {{
     {ViewMode::Final, "final"},
     {ViewMode::Position, "position"},
     {ViewMode::Normal, "normal"},
@@ -24,30 +25,13 @@ const std::array<std::pair<ViewMode, std::string_view>, 12> kViews = {{
 }};
 }  // namespace
 
-std::optional<ViewMode> parseViewMode(std::string_view name)
-{
-    for (const auto& [mode, viewName] : kViews)
-        if (viewName == name)
-            return mode;
-    return std::nullopt;
-}
+std::optional<ViewMode> parseViewMode(std::string_view name) { return parseName(kViews, name); }
 
-std::string_view viewModeName(ViewMode mode)
-{
-    for (const auto& [candidate, viewName] : kViews)
-        if (candidate == mode)
-            return viewName;
-    return "?";
-}
+std::string_view viewModeName(ViewMode mode) { return nameOf(kViews, mode); }
 
 const std::vector<std::string>& viewModeNames()
 {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> result;
-        for (const auto& entry : kViews)
-            result.emplace_back(entry.second);
-        return result;
-    }();
+    static const std::vector<std::string> names = namesOf(kViews);
     return names;
 }
 

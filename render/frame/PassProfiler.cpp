@@ -161,21 +161,18 @@ std::optional<FrameSample> PassProfiler::takeOldestFrame(bool wait)
         return std::nullopt;
     FrameQueries& frame = pending_.front();
     // The end timestamp is the frame's last query: when it is there, so are the others.
-    if (!frame.end.available()) {
-        if (!wait)
-            return std::nullopt;
-        const std::uint64_t end = frame.end.result();  // waits
-        (void)end;
-        if (!frame.wallMs) {
-            frame.wallMs = millisecondsSince(frame.wallStart);
-        }
+    const bool done = frame.end.available();
+    if (!done && !wait)
+        return std::nullopt;
+    if (!done) {
+        frame.end.result();  // waits for the GPU
         // The GPU is drained up to this frame: the next one issued starts a new run.
         if (pending_.size() == 1)
             lastIssueEnd_.reset();
-    } else if (!frame.wallMs) {
-        // Done before anyone waited: its time ends no later than now.
-        frame.wallMs = millisecondsSince(frame.wallStart);
     }
+    // A frame not issued back to back ends when the CPU sees the GPU finish it (no later than now).
+    if (!frame.wallMs)
+        frame.wallMs = millisecondsSince(frame.wallStart);
     FrameSample sample = sampleOf(frame);
     spare_.push_back(std::move(frame));
     pending_.pop_front();
