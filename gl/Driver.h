@@ -7,7 +7,7 @@ namespace manylights::gl {
 
 // True when GL_RENDERER names a rasteriser that runs on the CPU (Mesa's llvmpipe, softpipe or
 // swrast), where texture filtering and shader arithmetic cost CPU time per pixel instead of
-// running in fixed-function hardware. Only render/DriverProfile.cpp asks (--driver-profile auto):
+// running in fixed-function hardware. Only render/driver/DriverProfile.cpp asks (--driver-profile auto):
 // the rest of the renderer follows its DriverChoices, so that a profile can override the driver.
 bool isSoftwareRenderer();
 bool isSoftwareRendererName(std::string_view renderer);

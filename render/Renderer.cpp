@@ -37,7 +37,10 @@ RendererDesc withDefaultsFilledIn(RendererDesc desc)
 }  // namespace
 
 Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, const RendererDesc& desc)
-    : gpuScene_(scene, lights, manylights::driverChoices(desc.driverProfile)), sceneAmbientOcclusion_(scene.ssao)
+    : driver_(resolveDriverChoices(desc.driver)),
+      gpuScene_(scene, lights, driver_),
+      sceneAmbientOcclusion_(scene.ssao),
+      profiler_(driver_.passTiming)
 {
     apply(desc);
 }
@@ -45,9 +48,9 @@ Renderer::Renderer(const Scene& scene, const std::vector<Light>& lights, const R
 void Renderer::apply(const RendererDesc& requested)
 {
     RendererDesc desc = withDefaultsFilledIn(requested);
-    // The profile's choices are made once, with the scene's programs and textures.
+    // The driver's choices are made once, with the scene's programs and textures.
     if (targets_)
-        desc.driverProfile = desc_.driverProfile;
+        desc.driver = desc_.driver;
     checkSize(desc.width, desc.height);
     ML_ASSERT(desc.width % desc.supersample == 0 && desc.height % desc.supersample == 0);
     const bool first = targets_ == nullptr;
@@ -65,8 +68,6 @@ void Renderer::apply(const RendererDesc& requested)
     if (const auto& scene = gpuScene_.scene().environment;
         scene && (first || desc.environmentLook != old.environmentLook))
         gpuScene_.setEnvironmentLook(desc.environmentLook.value_or(scene->look));
-    profiler_.setTiming(
-        desc.passTiming.value_or(gpuScene_.driverChoices().finishAroundPasses ? PassTiming::Wall : PassTiming::Gpu));
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);
@@ -87,12 +88,10 @@ void Renderer::makeTargets()
 
 TechniqueOptions Renderer::techniqueOptions() const
 {
-    const LightingStage profileStage =
-        gpuScene_.driverChoices().computeLighting ? LightingStage::Compute : LightingStage::Fragment;
     return {.countWork = desc_.countWork,
             .gbufferLayout = desc_.gbufferLayout,
             .localShadows = desc_.shadowLights > 0,
-            .lightingStage = desc_.lightingStage.value_or(profileStage)};
+            .lightingStage = driver_.lightingStage};
 }
 
 Technique& Renderer::technique(std::string_view name)

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gl/Program.h"
-#include "render/DriverProfile.h"
 #include "render/Views.h"
+#include "render/driver/DriverProfile.h"
 #include "render/effects/DisplayPass.h"
 #include "render/effects/ShadowMaps.h"
 #include "render/effects/Ssao.h"
@@ -73,16 +73,10 @@ struct RendererDesc {
     // The viewer's wireframe: the final view's lit-image passes draw their polygons as edges
     // (FramePasses::setLitImagePolygonMode; the viewer draws it with forward, whose are meshes).
     bool wireframe = false;
-    // --driver-profile: whose choices the renderer makes (render/DriverProfile.h). Read when the
-    // Renderer is made; apply() keeps it.
-    DriverProfile driverProfile = DriverProfile::Auto;
-    // --pass-timing: how frames and their passes are timed (render/frame/PassProfiler.h); unset,
-    // the driver profile's choice: Wall on a software rasteriser, Gpu on a GPU
-    // (DriverChoices::finishAroundPasses).
-    std::optional<PassTiming> passTiming{};
-    // --lighting-stage: deferred's and clustered's lighting as a fragment or a compute pass;
-    // unset, the driver profile's choice (DriverChoices::computeLighting).
-    std::optional<LightingStage> lightingStage{};
+    // --driver-profile, --pass-timing and --lighting-stage: what is asked of the driver seam
+    // (render/driver/DriverProfile.h). Resolved when the Renderer is made (driverChoices());
+    // apply() keeps it.
+    DriverOverrides driver{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).
@@ -111,8 +105,8 @@ public:
     void setCamera(const Camera& camera) { gpuScene_.setCamera(camera); }
     // The anisotropy the textures got from desc().anisotropy.
     float anisotropy() const { return gpuScene_.textures().anisotropy(); }
-    // The choices of desc().driverProfile, resolved on the context when the Renderer was made.
-    const DriverChoices& driverChoices() const { return gpuScene_.driverChoices(); }
+    // desc().driver resolved on the context when the Renderer was made.
+    const DriverChoices& driverChoices() const { return driver_; }
     // The lit image and the G-buffer of the last frame (the viewer shows the lit image).
     const FrameTargets& targets() const { return *targets_; }
 
@@ -144,7 +138,7 @@ public:
     // The queued frames the GPU has finished, oldest first; with `wait`, every queued frame.
     std::vector<FinishedFrame> finishedFrames(bool wait);
     std::size_t framesInFlight() const { return inFlight_.size(); }
-    // How the frames are timed (desc().passTiming or the driver profile's choice).
+    // How the frames are timed (driverChoices().passTiming).
     PassTiming passTiming() const { return profiler_.timing(); }
     const WorkCounts& lastWorkCounts() const { return workCounts_; }
 
@@ -200,6 +194,7 @@ private:
     // Each light's volume over the lit image: its edges, or with `cornersOnly` its corners.
     void drawVolumeOverlay(FramePasses& passes, bool cornersOnly);
 
+    const DriverChoices driver_;  // before gpuScene_, which is made with it
     GpuScene gpuScene_;
     const AmbientOcclusion sceneAmbientOcclusion_;
     RendererDesc desc_;

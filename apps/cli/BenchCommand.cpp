@@ -92,9 +92,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .shadowLights = options.shadowLights,
                       .anisotropy = options.anisotropy,
                       .display = chooseDisplay(scene, options.display),
-                      .driverProfile = options.driver.profile,
-                      .passTiming = options.driver.passTiming,
-                      .lightingStage = options.driver.lightingStage};
+                      .driver = options.driver.overrides};
     Renderer renderer(scene, lights, desc);
     Technique& technique = renderer.technique(techniqueName);
     // Under PassTiming::Wall each frame is rendered and waited for; otherwise frames are issued
@@ -279,7 +277,7 @@ std::string formatTable(const std::vector<std::vector<std::string>>& rows, const
     return text;
 }
 
-std::string tableText(const std::vector<BenchResult>& results, bool countWork)
+std::string tableText(const std::vector<BenchResult>& results, bool countWork, PassTiming timing)
 {
     std::vector<std::vector<std::string>> rows;
     std::vector<bool> left = {true, false, false, false, false, false, false, false};
@@ -288,10 +286,8 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
         rows.back().insert(rows.back().end(), {"light evals", "in range", "efficiency"});
         left.insert(left.end(), {false, false, false});
     }
-    // The pass times of the clock the frames were timed with (the first result's: one sweep,
-    // one timing).
-    const bool wallPasses = results.empty() || results.front().measured.timing == PassTiming::Wall;
-    rows.back().push_back(wallPasses ? "passes (median wall ms)" : "passes (median gpu ms)");
+    // The pass times of the clock the frames were timed with (one sweep, one timing).
+    rows.back().push_back(timing == PassTiming::Wall ? "passes (median wall ms)" : "passes (median gpu ms)");
     left.push_back(true);
     for (const BenchResult& r : results) {
         std::vector<std::string> row = {r.technique,
@@ -315,7 +311,7 @@ std::string tableText(const std::vector<BenchResult>& results, bool countWork)
         }
         std::string passes;
         for (const PassSummary& pass : r.measured.passes) {
-            const std::optional<double> ms = wallPasses ? pass.wallMs : pass.gpuMs;
+            const std::optional<double> ms = timing == PassTiming::Wall ? pass.wallMs : pass.gpuMs;
             char entry[96];
             if (ms)
                 std::snprintf(entry, sizeof entry, "%s%s %.1f", passes.empty() ? "" : ", ", pass.name.c_str(), *ms);
@@ -502,6 +498,8 @@ void runBench(const BenchOptions& options)
         lightCounts.push_back(std::nullopt);
 
     HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
+    // What every Renderer below resolves the overrides to, for the header: the same context.
+    const DriverChoices driver = resolveDriverChoices(options.driver.overrides);
     std::vector<BenchResult> results;
     {
         const std::size_t cases = options.sizes.size() * lightCounts.size() * techniques.size();
@@ -539,15 +537,13 @@ void runBench(const BenchOptions& options)
         }
     }
 
-    const std::string_view profile = driverProfileName(driverChoices(options.driver.profile).profile);
-    const PassTiming timing =
-        results.empty() ? options.driver.passTiming.value_or(PassTiming::Wall) : results.front().measured.timing;
+    const std::string_view profile = driverProfileName(driver.profile);
     char warmup[64] = "Warm-up until the frame time settled (auto)";
     if (options.warmup)
         std::snprintf(warmup, sizeof warmup, "%d warm-up frame%s", *options.warmup, *options.warmup == 1 ? "" : "s");
     std::printf("%s on %s, driver profile %.*s\n%s\n%s", scene.source.c_str(), context.description().c_str(),
-                int(profile.size()), profile.data(), clocksText(timing, warmup, options.frames).c_str(),
-                tableText(results, options.countWork).c_str());
+                int(profile.size()), profile.data(), clocksText(driver.passTiming, warmup, options.frames).c_str(),
+                tableText(results, options.countWork, driver.passTiming).c_str());
     std::fflush(stdout);
     // Both outputs or neither.
     AtomicFileSet outputs;

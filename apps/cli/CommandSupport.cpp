@@ -125,10 +125,11 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
 {
     command
         .add_option_function<std::string>(
-            "--driver-profile", [&options](const std::string& name) { options.profile = *parseDriverProfile(name); },
+            "--driver-profile",
+            [&options](const std::string& name) { options.overrides.profile = *parseDriverProfile(name); },
             "Make the choices of a software rasteriser or of a GPU driver (auto: by the driver in use)")
-        ->check(CLI::IsMember({"auto", "software", "gpu"}))
-        ->default_str("auto");
+        ->check(CLI::IsMember(namesOf(kDriverProfileNames)))
+        ->default_str(std::string(driverProfileName(DriverProfile::Auto)));
     command
         .add_option_function<std::string>(
             "--device",
@@ -146,17 +147,18 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
             "N|UUID"));
     command
         .add_option_function<std::string>(
-            "--pass-timing", [&options](const std::string& name) { options.passTiming = *parsePassTiming(name); },
+            "--pass-timing",
+            [&options](const std::string& name) { options.overrides.passTiming = *parsePassTiming(name); },
             "How frames are timed: wall (a glFinish around every pass), gpu (timer queries, frames back to back), "
             "frame (gpu without the per-pass queries); default: wall on a software rasteriser, gpu on a GPU")
-        ->check(CLI::IsMember({"wall", "gpu", "frame"}));
+        ->check(CLI::IsMember(namesOf(kPassTimingNames)));
     command
         .add_option_function<std::string>(
             "--lighting-stage",
-            [&options](const std::string& name) { options.lightingStage = *parseLightingStage(name); },
+            [&options](const std::string& name) { options.overrides.lightingStage = *parseLightingStage(name); },
             "deferred's and clustered's lighting as a full-screen fragment pass or a compute pass; default: "
             "fragment on a software rasteriser, compute on a GPU")
-        ->check(CLI::IsMember({"fragment", "compute"}));
+        ->check(CLI::IsMember(namesOf(kLightingStageNames)));
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }

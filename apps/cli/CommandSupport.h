@@ -18,8 +18,8 @@
 #include "core/Error.h"
 
 #include "platform/EglChoice.h"
-#include "render/DriverProfile.h"
-#include "render/Renderer.h"            // kDefaultImageWidth, kDefaultImageHeight
+#include "render/Renderer.h"  // kDefaultImageWidth, kDefaultImageHeight
+#include "render/driver/DriverProfile.h"
 #include "render/effects/ShadowMaps.h"  // kMaxShadowLights
 #include "render/frame/GBuffer.h"
 #include "render/frame/PassProfiler.h"
@@ -110,16 +110,13 @@ std::string formatSize(const ImageSize& size);
 // TextureCache::setAnisotropy takes it (kAutoAnisotropy for "auto").
 void addAnisotropyOption(CLI::App& command, int& level);
 
-// --driver-profile and --device of render, bench and view (docs/cli.md): whose choices the
-// renderer makes (render/DriverProfile.h) and which EGL device it runs on (`manylights devices`),
-// by index or UUID (platform/EglChoice.h: parseDeviceSelector).
+// --driver-profile, --pass-timing, --lighting-stage and --device of render, bench and view
+// (docs/cli.md): what is asked of the renderer's driver seam (render/driver/DriverProfile.h),
+// handed to RendererDesc::driver as it is, and which EGL device the renderer runs on
+// (`manylights devices`), by index or UUID (platform/EglChoice.h: parseDeviceSelector).
 struct DriverOptions {
-    DriverProfile profile = DriverProfile::Auto;
+    DriverOverrides overrides{};
     std::optional<DeviceSelector> device{};  // none: the first device that makes a context, hardware first
-    // --pass-timing wall|gpu|frame (render/frame/PassProfiler.h); none: the profile's choice.
-    std::optional<PassTiming> passTiming{};
-    // --lighting-stage fragment|compute (render/techniques/Technique.h); none: the profile's.
-    std::optional<LightingStage> lightingStage{};
 };
 void addDriverOptions(CLI::App& command, DriverOptions& options);
 

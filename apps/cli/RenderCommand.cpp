@@ -228,9 +228,7 @@ void runRender(const RenderOptions& options)
                        .anisotropy = options.anisotropy,
                        .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
                        .supersample = options.supersample,
-                       .driverProfile = options.driver.profile,
-                       .passTiming = options.driver.passTiming,
-                       .lightingStage = options.driver.lightingStage});
+                       .driver = options.driver.overrides});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
     // The scene on the GPU (lights, meshes, textures, their upload) and the technique's programs.

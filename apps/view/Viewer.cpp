@@ -168,9 +168,7 @@ RendererDesc Viewer::rendererDesc() const
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
             .display = shown,
             .wireframe = wireframe_,
-            .driverProfile = options_.driver.profile,
-            .passTiming = options_.driver.passTiming,
-            .lightingStage = options_.driver.lightingStage};
+            .driver = options_.driver.overrides};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose

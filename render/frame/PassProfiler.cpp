@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "core/EnumNames.h"
 #include "core/Error.h"
 
 namespace manylights {
@@ -17,28 +16,9 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 }
 }  // namespace
 
-namespace {
-constexpr EnumNames<PassTiming, 3> kPassTimings{{
-    {PassTiming::Wall, "wall"},
-    {PassTiming::Gpu, "gpu"},
-    {PassTiming::Frame, "frame"},
-}};
-}  // namespace
-
-std::string_view passTimingName(PassTiming timing) { return nameOf(kPassTimings, timing); }
-std::optional<PassTiming> parsePassTiming(std::string_view name) { return parseName(kPassTimings, name); }
-
 PassProfiler::PassProfiler(PassTiming timing) : timing_(timing), countInvocations_(gl::hasPipelineStatistics())
 {
     current_ = freshFrame();
-}
-
-void PassProfiler::setTiming(PassTiming timing)
-{
-    // Frames of one kind of timing follow each other back to back only.
-    if (timing != timing_)
-        lastIssueEnd_.reset();
-    timing_ = timing;
 }
 
 PassProfiler::FrameQueries PassProfiler::freshFrame()

@@ -5,9 +5,9 @@
 // it bins commands, not when its threads rasterise the tiles, so it under-reports passes with
 // many draws by up to 10x. The wall clock between glFinish calls is exact on llvmpipe (the
 // GPU is the CPU), but on a GPU each glFinish drains the GPU, so a frame timed that way is a
-// frame no application runs. PassTiming says which a frame gets; the driver profile picks
-// (DriverChoices::passTiming) and --pass-timing overrides (docs/performance.md, "Timing on a
-// GPU").
+// frame no application runs. PassTiming (render/driver/DriverProfile.h) says which a frame
+// gets; the driver profile picks (DriverChoices::passTiming) and --pass-timing overrides
+// (docs/performance.md, "Timing on a GPU").
 #pragma once
 
 #include <chrono>
@@ -20,22 +20,9 @@
 
 #include "gl/Debug.h"
 #include "gl/Query.h"
+#include "render/driver/DriverProfile.h"
 
 namespace manylights {
-
-enum class PassTiming {
-    // A glFinish before and after every pass: each pass's wall-clock time is its own, and
-    // frames run one at a time. What a software rasteriser needs.
-    Wall,
-    // Timer queries around every pass and no glFinish anywhere: frames are issued back to back
-    // and each pass's GPU time is read once the GPU has run it, a frame or more later.
-    Gpu,
-    // Gpu without the per-pass queries: only the frame's two timestamps. The frame as it runs
-    // without the profiler, to see what the per-pass queries cost.
-    Frame,
-};
-std::string_view passTimingName(PassTiming timing);  // "wall", "gpu" or "frame"
-std::optional<PassTiming> parsePassTiming(std::string_view name);
 
 struct PassSample {
     std::string name;
@@ -77,8 +64,6 @@ public:
     explicit PassProfiler(PassTiming timing = PassTiming::Wall);
 
     PassTiming timing() const { return timing_; }
-    // From the next frame on.
-    void setTiming(PassTiming timing);
 
     void beginFrame();
     // Ends the frame's queries without waiting for them: its sample comes out of

@@ -8,8 +8,7 @@
 
 namespace manylights {
 
-LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
-                                    const std::optional<DirectionalLight>& directional)
+SceneFeatures sceneFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional)
 {
     const auto any = [&](auto predicate) { return std::any_of(lights.begin(), lights.end(), predicate); };
     return {
@@ -19,6 +18,11 @@ LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
         .directionalLight = directional.has_value(),
         .directionalShadow = directional.has_value() && directional->shadows,
     };
+}
+
+ShaderPolicy shaderPolicyOf(const DriverChoices& driver)
+{
+    return {.multipliedSpecularPowers = driver.multipliedSpecularPowers, .branchOnReach = driver.branchOnLightReach};
 }
 
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials)
@@ -45,8 +49,9 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
     return multiplications <= kSpecularMultiplicationBudget ? exponents : SpecularExponents{};
 }
 
-gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines)
+gl::Defines lightingFeatureDefines(const LightingFeatures& variant, gl::Defines defines)
 {
+    const SceneFeatures& features = variant.scene;
     if (!features.spotLights)
         defines.emplace_back("NO_SPOT_LIGHTS", "1");
     // A scene without local lights takes either; nothing is evaluated.
@@ -65,11 +70,11 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
         defines.emplace_back("NO_METALLIC_ROUGHNESS", "1");
     else if (!features.blinnPhong)
         defines.emplace_back("NO_BLINN_PHONG", "1");
-    if (features.branchOnReach)
+    if (variant.policy.branchOnReach)
         defines.emplace_back("BRANCH_ON_REACH", "1");
     if (!features.environment)
         defines.emplace_back("NO_ENVIRONMENT", "1");
-    if (!features.specularExponents.empty()) {
+    if (variant.policy.multipliedSpecularPowers && !features.specularExponents.empty()) {
         std::string list;
         for (const std::uint16_t exponent : features.specularExponents)
             list += (list.empty() ? "" : ", ") + std::to_string(exponent) + "u";

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "gl/Program.h"
+#include "render/driver/DriverProfile.h"
 #include "scene/Scene.h"
 
 namespace manylights {
@@ -42,7 +43,9 @@ using SpecularExponents = std::vector<std::uint16_t>;
 // integerPower): one per bit below n's highest, one more per set bit after the first.
 constexpr int integerPowerMultiplications(std::uint16_t n) { return std::bit_width(n) - 1 + std::popcount(n) - 1; }
 
-struct LightingFeatures {
+// What the scene holds that a lighting program may leave out: facts about the scene's lights,
+// surfaces and frame, the same on every driver.
+struct SceneFeatures {
     bool spotLights = true;
     bool classicFalloff = true;
     bool rangeFalloff = true;
@@ -54,29 +57,49 @@ struct LightingFeatures {
     bool directionalShadow = true;
     bool ambientOcclusion = true;
     // The shininesses of every surface the scene draws with a specular term where few enough
-    // integers to raise N·H to by multiplications (specularExponentsOf), else empty: pow() costs
-    // a quarter of a lighting pass on llvmpipe (docs/performance.md).
+    // integers to raise N·H to by multiplications (specularExponentsOf), else empty. Whether
+    // the programs multiply is the driver's policy (ShaderPolicy::multipliedSpecularPowers).
     SpecularExponents specularExponents{};
     // The reflection models the drawn surfaces use (DrawList::shadingModels): a program for one
     // of them leaves the other out (NO_BLINN_PHONG, NO_METALLIC_ROUGHNESS), so that a scene of
     // one model pays nothing for the other's code (llvmpipe runs both sides of a select).
     bool blinnPhong = true;
     bool metallicRoughness = true;
-    // The light loops branch on a light's reach (BRANCH_ON_REACH) instead of testing first
-    // and selecting: the GPU profile's choice (DriverChoices::branchOnLightReach).
-    bool branchOnReach = false;
     // Whether the scene has an environment (render/environment/EnvironmentLight.h): a program
     // without leaves its code out (NO_ENVIRONMENT), so that a scene without one renders as it
     // did before environments, to the bit, and pays nothing for them.
     bool environment = true;
+
+    auto operator<=>(const SceneFeatures&) const = default;
+};
+
+// How the driver profile wants the lighting code written (render/driver/DriverProfile.h):
+// the same image either way, at different costs on different drivers.
+struct ShaderPolicy {
+    // The scene's integer shininesses raised by multiplications (SPECULAR_EXPONENTS; pow()
+    // costs a quarter of a lighting pass on llvmpipe, docs/performance.md) rather than pow():
+    // DriverChoices::multipliedSpecularPowers.
+    bool multipliedSpecularPowers = true;
+    // The light loops branch on a light's reach (BRANCH_ON_REACH) instead of testing first
+    // and selecting: DriverChoices::branchOnLightReach.
+    bool branchOnReach = false;
+
+    auto operator<=>(const ShaderPolicy&) const = default;
+};
+ShaderPolicy shaderPolicyOf(const DriverChoices& driver);
+
+// What a lighting program is specialised for: the scene's features under the driver's policy.
+// `{}` is the general program, which handles every scene.
+struct LightingFeatures {
+    SceneFeatures scene{};
+    ShaderPolicy policy{};
 
     auto operator<=>(const LightingFeatures&) const = default;
 };
 
 // What `lights` and the scene's directional light use. Animation moves lights but never
 // changes their kind, so this holds for every frame of a scene.
-LightingFeatures lightingFeaturesOf(const std::vector<Light>& lights,
-                                    const std::optional<DirectionalLight>& directional);
+SceneFeatures sceneFeaturesOf(const std::vector<Light>& lights, const std::optional<DirectionalLight>& directional);
 
 // The distinct shininesses of the materials in `materials` with a specular term, ascending,
 // when there are at most kMaxSpecularExponents, each is an integer in [1, kMaxSpecularExponent]
@@ -90,7 +113,7 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
 // `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
 // NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, NO_BLINN_PHONG,
 // NO_METALLIC_ROUGHNESS, NO_ENVIRONMENT, and SPECULAR_EXPONENT_COUNT
-// with SPECULAR_EXPONENTS, as `features` allow.
+// with SPECULAR_EXPONENTS, as `features` allow; BRANCH_ON_REACH as its policy asks.
 gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
 
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).

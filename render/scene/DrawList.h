@@ -15,7 +15,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
-#include "render/DriverProfile.h"
+#include "render/driver/DriverProfile.h"
 #include "render/frame/PipelineState.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/scene/TextureCache.h"

@@ -4,22 +4,16 @@ namespace manylights {
 
 GpuScene::GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver)
     : scene_(scene),
-      driver_(driver),
       lights_(lights, scene.attenuationThreshold, driver),
       draws_(scene, lights_.rest(), driver),  // the markers follow the lights in the lights' order
       frame_(scene, lights.size()),
       environment_(scene.environment ? EnvironmentLight(*scene.environment) : EnvironmentLight()),
-      features_(lightingFeaturesOf(lights, scene.directional))
+      features_{.scene = sceneFeaturesOf(lights, scene.directional), .policy = shaderPolicyOf(driver)}
 {
-    // The specular powers as multiplications were measured on llvmpipe only. A GPU computes
-    // pow() with two special-function instructions (log2, exp2), where several chains of
-    // multiplications may well be slower: there it stays (no GPU was lent to measure it).
-    if (driver_.multipliedSpecularPowers)
-        features_.specularExponents = draws_.specularExponents();
-    features_.branchOnReach = driver_.branchOnLightReach;
-    features_.blinnPhong = draws_.drawsModel(ShadingModel::BlinnPhong);
-    features_.metallicRoughness = draws_.drawsModel(ShadingModel::MetallicRoughness);
-    features_.environment = environment_.present();
+    features_.scene.specularExponents = draws_.specularExponents();
+    features_.scene.blinnPhong = draws_.drawsModel(ShadingModel::BlinnPhong);
+    features_.scene.metallicRoughness = draws_.drawsModel(ShadingModel::MetallicRoughness);
+    features_.scene.environment = environment_.present();
     setTime(0.0);
     setViewport(1, 1);
 }
@@ -68,8 +62,8 @@ void GpuScene::reorderDraws()
 LightingFeatures GpuScene::lightingFeatures() const
 {
     LightingFeatures features = features_;
-    features.directionalShadow = frame_.directionalShadow();
-    features.ambientOcclusion = frame_.ambientOcclusion();
+    features.scene.directionalShadow = frame_.directionalShadow();
+    features.scene.ambientOcclusion = frame_.ambientOcclusion();
     return features;
 }
 

@@ -11,8 +11,8 @@
 #include <glm/glm.hpp>
 
 #include "gl/Program.h"
-#include "render/DriverProfile.h"
 #include "render/culling/LightBatches.h"
+#include "render/driver/DriverProfile.h"
 #include "render/environment/EnvironmentLight.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/scene/DrawList.h"
@@ -27,9 +27,9 @@ class GpuScene {
 public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights):
     // the only route to the lights (the scene's own `lights` are not read). Loads every
-    // material's textures; throws manylights::Error for a broken one. `driver`: the choices of
-    // the driver profile (render/DriverProfile.h), fixed for the scene's lifetime. `scene` must
-    // outlive this.
+    // material's textures; throws manylights::Error for a broken one. `driver`: the Renderer's
+    // resolved driver choices (render/driver/DriverProfile.h), fixed for the scene's lifetime.
+    // `scene` must outlive this.
     GpuScene(const Scene& scene, const std::vector<Light>& lights, const DriverChoices& driver);
 
     // The three owners, and the environment (none: a black one, EnvironmentLight()).
@@ -108,8 +108,8 @@ public:
     std::size_t lightCount() const { return lights_.count(); }
     // The GPU memory the lights hold (SceneLights::memoryBytes).
     std::size_t lightMemoryBytes() const { return lights_.memoryBytes(); }
-    // The kinds of light the scene has and what the frame's shadowing reads, which the lighting
-    // programs are specialised for.
+    // The kinds of light the scene has and what the frame's shadowing reads, under the driver's
+    // shader policy: what the lighting programs are specialised for.
     LightingFeatures lightingFeatures() const;
     // Whether this frame reads a directional shadow map and the SSAO factor (the Renderer says,
     // before its technique runs; ShadowMaps sets the same in the shadowing uniforms).
@@ -123,7 +123,6 @@ public:
     const std::vector<GpuLight>& packedLights() const { return lights_.packed(); }
     const FrameUniforms& frameUniforms() const { return frame_.uniforms(); }
     const TextureCache& textures() const { return draws_.textures(); }
-    const DriverChoices& driverChoices() const { return driver_; }
     // The light sources and windows (render/scene/SceneLights.h).
     void bindLightWindow(const LightBatch& batch) const { lights_.bindWindow(batch); }
     void setLightTexels(bool wanted) { lights_.setTexels(wanted); }
@@ -145,7 +144,6 @@ private:
     void reorderDraws();
 
     const Scene& scene_;
-    DriverChoices driver_;
     SceneLights lights_;
     DrawList draws_;
     GpuFrame frame_;

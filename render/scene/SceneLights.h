@@ -19,8 +19,8 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "render/DriverProfile.h"
 #include "render/culling/LightBatches.h"
+#include "render/driver/DriverProfile.h"
 #include "render/programs/LightingPrograms.h"
 #include "scene/Scene.h"
 
@@ -54,7 +54,7 @@ class SceneLights {
 public:
     // `lights` are the scene's lights as rendered (explicit and generated, see expandLights),
     // at rest; `attenuationThreshold` the scene's (its classic lights' radii). `driver`: the
-    // driver profile's choices (render/DriverProfile.h). Posed at time 0, with light texels.
+    // driver profile's choices (render/driver/DriverProfile.h). Posed at time 0, with light texels.
     // The lights are kept, and given to the shaders, in the order of their rest positions
     // along a Morton curve (scene/SpatialOrder.h), not in `lights`' order: a cluster's lights
     // are then neighbours in memory (docs/techniques.md, "The light lists of tiled and

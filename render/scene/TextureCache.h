@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl/MipmappedTexture.h"
+#include "render/driver/DriverProfile.h"
 #include "scene/Scene.h"
 
 namespace manylights {
@@ -43,10 +44,9 @@ DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned
 // Anisotropic filtering of material textures (--anisotropy). kAutoAnisotropy picks per
 // driver profile (DriverChoices::autoAnisotropy): none (1) on a software rasteriser, where llvmpipe filters every
 // anisotropic tap in software (8x cost 40% of the geometry pass on the LearnOpenGL scene, docs/performance.md),
-// kHardwareAnisotropy on a GPU, where the texture units do it nearly for free and oblique
-// floors stay sharp.
+// kHardwareAnisotropy (render/driver/DriverProfile.h) on a GPU, where the texture units do it nearly for free and
+// oblique floors stay sharp.
 inline constexpr int kAutoAnisotropy = 0;
-inline constexpr int kHardwareAnisotropy = 8;
 inline constexpr int kMaxRequestedAnisotropy = 16;  // the largest any driver offers
 // The anisotropy `requested` (kAutoAnisotropy, which means `autoLevel`, or 1 to
 // kMaxRequestedAnisotropy) gives on the current GL context: clamped to what the driver filters

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "render/driver/DriverProfile.h"
 #include "render/frame/FrameTargets.h"
 #include "render/frame/GBuffer.h"
 
@@ -15,14 +16,6 @@ namespace manylights {
 
 class GpuScene;
 class FramePasses;
-
-// Where deferred's and clustered's lighting runs (--lighting-stage): a full-screen fragment
-// pass, or a compute pass of an invocation per pixel that stores into the lit image. The
-// other techniques have one stage only (tiled computes; forward, the volumes and tiled-quads
-// rasterise) and ignore it. DriverChoices::computeLighting picks by default.
-enum class LightingStage { Fragment, Compute };
-std::string_view lightingStageName(LightingStage stage);  // "fragment" or "compute"
-std::optional<LightingStage> parseLightingStage(std::string_view name);
 
 // How a technique's shaders are built.
 struct TechniqueOptions {

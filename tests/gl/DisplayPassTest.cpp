@@ -49,7 +49,7 @@ std::vector<unsigned char> runDisplay(const Image& input, const DisplaySettings&
     // The pass runs as a pass of a frame: a frame of one plane whose lit image is `input`.
     const Scene scene =
         parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<one plane>", ".");
-    const GpuScene gpuScene(scene, expandLights(scene), driverChoices(DriverProfile::Auto));
+    const GpuScene gpuScene(scene, expandLights(scene), resolveDriverChoices({.profile = DriverProfile::Auto}));
     FrameTargets targets(input.width, input.height);
     writeLinear(input, targets.lit);
     DisplayPass pass;

@@ -39,7 +39,7 @@ GLuint shadedSamples(const std::string& json)
 {
     const Scene scene = parseScene(json, "<draw order test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
-    GpuScene gpuScene(scene, lights, driverChoices(DriverProfile::Auto));
+    GpuScene gpuScene(scene, lights, resolveDriverChoices({.profile = DriverProfile::Auto}));
     gpuScene.setViewport(kWidth, kHeight);
     const gl::Texture2D depthStencil("depth", GL_DEPTH24_STENCIL8, kWidth, kHeight);
     const GBuffer gbuffer(kWidth, kHeight, depthStencil, kDefaultGBufferLayout);

@@ -13,8 +13,9 @@
 #include "gl/Driver.h"
 #include "platform/EglChoice.h"
 #include "platform/HeadlessContext.h"
-#include "render/DriverProfile.h"
 #include "render/Renderer.h"
+#include "render/driver/DriverProfile.h"
+#include "render/programs/LightingPrograms.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 
@@ -26,31 +27,50 @@ TEST(DriverProfileNames, RoundTrip)
     for (const DriverProfile profile : {DriverProfile::Auto, DriverProfile::Software, DriverProfile::Gpu})
         EXPECT_EQ(parseDriverProfile(driverProfileName(profile)), profile);
     EXPECT_EQ(parseDriverProfile("hardware"), std::nullopt);
+    for (const PassTiming timing : {PassTiming::Wall, PassTiming::Gpu, PassTiming::Frame})
+        EXPECT_EQ(parsePassTiming(passTimingName(timing)), timing);
+    for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute})
+        EXPECT_EQ(parseLightingStage(lightingStageName(stage)), stage);
 }
 
 class DriverProfileTest : public GlContextTest {};
 
+// The overrides replace the one choice each names, under either profile, and nothing else.
+TEST_F(DriverProfileTest, OverridesReplaceOneChoiceEach)
+{
+    for (const DriverProfile profile : {DriverProfile::Software, DriverProfile::Gpu}) {
+        const DriverChoices plain = resolveDriverChoices({.profile = profile});
+        DriverChoices expected = plain;
+        expected.passTiming = PassTiming::Frame;
+        EXPECT_EQ(resolveDriverChoices({.profile = profile, .passTiming = PassTiming::Frame}), expected);
+        expected = plain;
+        expected.lightingStage =
+            plain.lightingStage == LightingStage::Compute ? LightingStage::Fragment : LightingStage::Compute;
+        EXPECT_EQ(resolveDriverChoices({.profile = profile, .lightingStage = expected.lightingStage}), expected);
+    }
+}
+
 TEST_F(DriverProfileTest, AutoFollowsTheRendererAndTheOthersAreFixed)
 {
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const DriverChoices automatic = driverChoices(DriverProfile::Auto);
+    const DriverChoices automatic = resolveDriverChoices({.profile = DriverProfile::Auto});
     EXPECT_EQ(automatic.profile, gl::isSoftwareRendererName(renderer) ? DriverProfile::Software : DriverProfile::Gpu)
         << renderer;
-    const DriverChoices software = driverChoices(DriverProfile::Software);
+    const DriverChoices software = resolveDriverChoices({.profile = DriverProfile::Software});
     EXPECT_EQ(software.profile, DriverProfile::Software);
     EXPECT_TRUE(software.multipliedSpecularPowers);
     EXPECT_TRUE(software.lightTexelsBeforeWindows);
     EXPECT_EQ(software.autoAnisotropy, 1);
-    EXPECT_TRUE(software.finishAroundPasses);
-    EXPECT_FALSE(software.computeLighting);
+    EXPECT_EQ(software.passTiming, PassTiming::Wall);
+    EXPECT_EQ(software.lightingStage, LightingStage::Fragment);
     EXPECT_FALSE(software.branchOnLightReach);
-    const DriverChoices gpu = driverChoices(DriverProfile::Gpu);
+    const DriverChoices gpu = resolveDriverChoices({.profile = DriverProfile::Gpu});
     EXPECT_EQ(gpu.profile, DriverProfile::Gpu);
     EXPECT_FALSE(gpu.multipliedSpecularPowers);
     EXPECT_FALSE(gpu.lightTexelsBeforeWindows);
     EXPECT_EQ(gpu.autoAnisotropy, kHardwareAnisotropy);
-    EXPECT_FALSE(gpu.finishAroundPasses);
-    EXPECT_TRUE(gpu.computeLighting);
+    EXPECT_EQ(gpu.passTiming, PassTiming::Gpu);
+    EXPECT_EQ(gpu.lightingStage, LightingStage::Compute);
     EXPECT_TRUE(gpu.branchOnLightReach);
 }
 
@@ -62,22 +82,34 @@ TEST_F(DriverProfileTest, RendererMakesTheProfilesChoices)
         "objects": [{"mesh": {"primitive": "sphere", "radius": 1}, "material": "a"}]})",
                                    "<driver profile test>", ".");
     const std::vector<Light> lights = expandLights(scene);
-    Renderer software(scene, lights, {.width = 32, .height = 32, .driverProfile = DriverProfile::Software});
-    Renderer gpu(scene, lights, {.width = 32, .height = 32, .driverProfile = DriverProfile::Gpu});
+    Renderer software(scene, lights, {.width = 32, .height = 32, .driver = {.profile = DriverProfile::Software}});
+    Renderer gpu(scene, lights, {.width = 32, .height = 32, .driver = {.profile = DriverProfile::Gpu}});
     EXPECT_EQ(software.driverChoices().profile, DriverProfile::Software);
     EXPECT_EQ(gpu.driverChoices().profile, DriverProfile::Gpu);
-    EXPECT_EQ(software.gpuScene().lightingFeatures().specularExponents, (SpecularExponents{16}));
-    EXPECT_EQ(gpu.gpuScene().lightingFeatures().specularExponents, SpecularExponents{});
+    // Both scenes hold the one integer shininess; only llvmpipe's policy raises to it by
+    // multiplications.
+    EXPECT_EQ(software.gpuScene().lightingFeatures().scene.specularExponents, (SpecularExponents{16}));
+    EXPECT_EQ(gpu.gpuScene().lightingFeatures().scene.specularExponents, (SpecularExponents{16}));
+    EXPECT_TRUE(software.gpuScene().lightingFeatures().policy.multipliedSpecularPowers);
+    EXPECT_FALSE(gpu.gpuScene().lightingFeatures().policy.multipliedSpecularPowers);
+    const auto definesName = [](const gl::Defines& defines, const std::string& name) {
+        return std::any_of(defines.begin(), defines.end(), [&](const auto& define) { return define.first == name; });
+    };
+    EXPECT_TRUE(definesName(lightingFeatureDefines(software.gpuScene().lightingFeatures(), {}), "SPECULAR_EXPONENTS"));
+    EXPECT_FALSE(definesName(lightingFeatureDefines(gpu.gpuScene().lightingFeatures(), {}), "SPECULAR_EXPONENTS"));
+    EXPECT_TRUE(definesName(lightingFeatureDefines(gpu.gpuScene().lightingFeatures(), {}), "BRANCH_ON_REACH"));
     // With light texels, a GPU reads the uniform windows and llvmpipe the texels.
     if (software.gpuScene().indexedLightSource() == LightSource::TexelBuffer) {
         EXPECT_EQ(software.gpuScene().walkedLightSource(), LightSource::TexelBuffer);
         EXPECT_EQ(gpu.gpuScene().walkedLightSource(), LightSource::UniformWindow);
     }
-    // The profile is fixed when the renderer is made.
+    // The driver's choices are fixed when the renderer is made.
     RendererDesc desc = gpu.desc();
-    desc.driverProfile = DriverProfile::Software;
+    desc.driver = {.profile = DriverProfile::Software, .passTiming = PassTiming::Frame};
     gpu.apply(desc);
-    EXPECT_EQ(gpu.desc().driverProfile, DriverProfile::Gpu);
+    EXPECT_EQ(gpu.desc().driver.profile, DriverProfile::Gpu);
+    EXPECT_EQ(gpu.driverChoices().passTiming, PassTiming::Gpu);
+    EXPECT_EQ(gpu.passTiming(), PassTiming::Gpu);
 }
 
 TEST(EglDevices, ListedWithTheirRendererAndIndex)

@@ -58,7 +58,7 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
     const Scene scene = makeDefaultScene();
     const std::vector<Light> lights = expandLights(scene);
     ASSERT_TRUE(scene.lightMarkerRadius.has_value());
-    GpuScene gpuScene(scene, lights, driverChoices(DriverProfile::Auto));
+    GpuScene gpuScene(scene, lights, resolveDriverChoices({.profile = DriverProfile::Auto}));
 
     // What the scene asks for: one item per object sub-mesh and per light marker. Items that
     // cannot be instanced (material maps, a vertex-shader surface of revolution) are one draw
@@ -143,7 +143,7 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
 TEST_F(InstancingTest, LightMarkersFollowTheirMovingLights)
 {
     const Scene scene = makeDefaultScene();
-    GpuScene gpuScene(scene, expandLights(scene), driverChoices(DriverProfile::Auto));
+    GpuScene gpuScene(scene, expandLights(scene), resolveDriverChoices({.profile = DriverProfile::Auto}));
     const LightingProgram programs("geometry pass",
                                    {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
     const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {

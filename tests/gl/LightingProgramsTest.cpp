@@ -35,13 +35,13 @@ bool hasDefine(const gl::Defines& defines, const std::string& name)
 
 TEST(LightingFeatures, ComeFromTheKindsOfLightPresent)
 {
-    const LightingFeatures points = lightingFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt);
+    const SceneFeatures points = sceneFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt);
     EXPECT_FALSE(points.spotLights);
     EXPECT_TRUE(points.classicFalloff);
     EXPECT_FALSE(points.rangeFalloff);
     EXPECT_FALSE(points.directionalLight);
 
-    const LightingFeatures mixed = lightingFeaturesOf(
+    const SceneFeatures mixed = sceneFeaturesOf(
         {lightOf(LightType::Point, Falloff::Classic), lightOf(LightType::Spot, Falloff::Range)}, DirectionalLight{});
     EXPECT_TRUE(mixed.spotLights);
     EXPECT_TRUE(mixed.classicFalloff);
@@ -54,15 +54,15 @@ TEST(LightingFeatures, DefinesLeaveOutOnlyWhatIsAbsent)
     const gl::Defines general = lightingFeatureDefines(LightingFeatures{}, {});
     EXPECT_TRUE(general.empty());
 
-    const gl::Defines points =
-        lightingFeatureDefines(lightingFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt), {});
+    const gl::Defines points = lightingFeatureDefines(
+        {.scene = sceneFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt)}, {});
     EXPECT_TRUE(hasDefine(points, "NO_SPOT_LIGHTS"));
     EXPECT_TRUE(hasDefine(points, "ONLY_CLASSIC_FALLOFF"));
     EXPECT_FALSE(hasDefine(points, "ONLY_RANGE_FALLOFF"));
     EXPECT_TRUE(hasDefine(points, "NO_DIRECTIONAL_LIGHT"));
 
-    const gl::Defines spots =
-        lightingFeatureDefines(lightingFeaturesOf({lightOf(LightType::Spot, Falloff::Range)}, DirectionalLight{}), {});
+    const gl::Defines spots = lightingFeatureDefines(
+        {.scene = sceneFeaturesOf({lightOf(LightType::Spot, Falloff::Range)}, DirectionalLight{})}, {});
     EXPECT_FALSE(hasDefine(spots, "NO_SPOT_LIGHTS"));
     EXPECT_TRUE(hasDefine(spots, "ONLY_RANGE_FALLOFF"));
     EXPECT_FALSE(hasDefine(spots, "ONLY_CLASSIC_FALLOFF"));
@@ -133,10 +133,13 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
 
     LightingFeatures features;
     EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
-    features.specularExponents = {13, 40};
+    features.scene.specularExponents = {13, 40};
     const gl::Defines defines = lightingFeatureDefines(features, {});
     const gl::Defines expected = {{"SPECULAR_EXPONENT_COUNT", "2"}, {"SPECULAR_EXPONENTS", "13u, 40u"}};
     EXPECT_EQ(defines, expected);
+    // The same scene under a policy of pow() (the GPU profile's) gets none.
+    features.policy.multipliedSpecularPowers = false;
+    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
 }
 
 class LightingProgramTest : public GlContextTest {};
@@ -150,11 +153,12 @@ TEST_F(LightingProgramTest, SceneTakesTheSpecularExponentsOfWhatItDraws)
             "materials": )" + materials + R"(, "objects": )" +
                                            objects + "}",
                                        "<specular exponent test>", ".");
-        return GpuScene(scene, expandLights(scene, std::nullopt), driverChoices(profile))
-            .lightingFeatures()
-            .specularExponents;
+        const LightingFeatures features =
+            GpuScene(scene, expandLights(scene, std::nullopt), resolveDriverChoices({.profile = profile}))
+                .lightingFeatures();
+        return features.policy.multipliedSpecularPowers ? features.scene.specularExponents : SpecularExponents{};
     };
-    // Measured on llvmpipe only: the GPU profile keeps pow() (render/scene/GpuScene.cpp).
+    // Measured on llvmpipe only: the GPU profile's policy keeps pow() (DriverChoices).
     EXPECT_EQ(exponentsOf(R"({"a": {"specular": [0.5, 0.5, 0.5], "shininess": 16}})",
                           R"([{"mesh": {"primitive": "box", "size": [1, 1, 1]}, "material": "a"}])",
                           DriverProfile::Gpu),
@@ -178,7 +182,7 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
                                   {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
                                   shaderDefines({}));
     const LightingFeatures points{
-        .spotLights = false, .classicFalloff = true, .rangeFalloff = false, .directionalLight = false};
+        .scene = {.spotLights = false, .classicFalloff = true, .rangeFalloff = false, .directionalLight = false}};
     const gl::Program& general = program.variant(LightingFeatures{});
     const gl::Program& specialised = program.variant(points);
     EXPECT_NE(general.id(), 0u);

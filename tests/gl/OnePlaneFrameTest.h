@@ -14,7 +14,7 @@ class OnePlaneFrameTest : public GlContextTest {
 protected:
     const Scene scene_ =
         parseScene(R"({"objects": [{"mesh": {"primitive": "plane", "size": [4, 4]}}]})", "<one plane>", ".");
-    GpuScene gpuScene_{scene_, expandLights(scene_), driverChoices(DriverProfile::Auto)};
+    GpuScene gpuScene_{scene_, expandLights(scene_), resolveDriverChoices({.profile = DriverProfile::Auto})};
     FrameTargets targets_{32, 32};
     PassProfiler profiler_;
 };

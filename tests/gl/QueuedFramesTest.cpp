@@ -57,8 +57,8 @@ TEST_F(QueuedFramesTest, BackToBackFramesReadNothingBackAndGiveTheImagesOfFrames
     const Scene scene = floorScene(3000);
     const std::vector<Light> lights = expandLights(scene);
     for (const std::string technique : {"clustered", "tiled"}) {
-        Renderer queued(scene, lights, {.width = 320, .height = 180, .passTiming = PassTiming::Gpu});
-        Renderer waited(scene, lights, {.width = 320, .height = 180, .passTiming = PassTiming::Wall});
+        Renderer queued(scene, lights, {.width = 320, .height = 180, .driver = {.passTiming = PassTiming::Gpu}});
+        Renderer waited(scene, lights, {.width = 320, .height = 180, .driver = {.passTiming = PassTiming::Wall}});
         Technique& queuedTechnique = queued.technique(technique);
         ASSERT_EQ(queued.passTiming(), PassTiming::Gpu);
 
@@ -119,7 +119,7 @@ TEST_F(QueuedFramesTest, RenderFrameWaitsForItsFrameUnderEveryTiming)
     const std::vector<Light> lights = expandLights(scene);
     std::map<PassTiming, std::vector<float>> images;
     for (PassTiming timing : {PassTiming::Wall, PassTiming::Gpu, PassTiming::Frame}) {
-        Renderer renderer(scene, lights, {.width = 320, .height = 180, .passTiming = timing});
+        Renderer renderer(scene, lights, {.width = 320, .height = 180, .driver = {.passTiming = timing}});
         const FrameSample sample = renderer.renderFrame("clustered", ViewMode::Final);
         EXPECT_EQ(sample.timing, timing);
         EXPECT_GT(sample.wallMs, 0.0);

@@ -80,7 +80,7 @@ TEST_F(SceneLightsTest, LightsAreKeptInMortonOrderOfTheirRestPositions)
     // Drawn in an order that jumps across the box; the ranges tell them apart.
     const std::vector<Light> drawn{pointLight({10, 0, 10}, 1.0f), pointLight({0, 0, 0}, 2.0f),
                                    pointLight({10, 0, 0}, 3.0f), pointLight({0, 0, 10}, 4.0f)};
-    const SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    const SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     ASSERT_EQ(lights.count(), 4u);
     // Morton order over the box: (0,0) then x = 10 (bit 0), then z = 10 (bit 2), then both.
     EXPECT_EQ(lights.rest()[0].range, 2.0f);
@@ -93,7 +93,7 @@ TEST_F(SceneLightsTest, LightsAreKeptInMortonOrderOfTheirRestPositions)
 TEST_F(SceneLightsTest, LightsAtRestAreNotPosedAgain)
 {
     const std::vector<Light> drawn{pointLight({0, 0, 0}, 1.0f), pointLight({5, 0, 5}, 2.0f)};
-    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     const auto version = lights.version();
     lights.pose(3.5);
     lights.pose(7.0);
@@ -111,7 +111,7 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
             light.animation = OrbitAnimation{.radius = 2.0f, .degreesPerSecond = 90.0f};
         drawn.push_back(light);
     }
-    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     const std::vector<GpuLight> atZero = lights.packed();
     expectSameLights(lightsOnTheGpu(lights), atZero);
     const auto version = lights.version();
@@ -153,12 +153,12 @@ TEST_F(SceneLightsTest, MemoryIsTheBufferAndTheMovingLightsMotions)
             light.animation = DriftAnimation{};
         drawn.push_back(light);
     }
-    const SceneLights moving(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    const SceneLights moving(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     const std::size_t windows = (1500 + kLightsPerWindow - 1) / kLightsPerWindow;
     EXPECT_EQ(moving.memoryBytes(), windows * kLightWindowBytes + 500 * sizeof(GpuLightMotion));
     for (Light& light : drawn)
         light.animation.reset();
-    const SceneLights still(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    const SceneLights still(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     EXPECT_EQ(still.memoryBytes(), windows * kLightWindowBytes);
 }
 
@@ -180,7 +180,7 @@ TEST_F(SceneLightsTest, TheGpuPosesEveryMotionAsTheCpuDoes)
                                              .phaseDegrees = phase};
         drawn.push_back(light);
     }
-    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     for (const double t : {0.25, 3.0, 12345.678, 0.0}) {
         lights.pose(t);
         lights.applyPose();
@@ -198,7 +198,7 @@ TEST_F(SceneLightsTest, TheGpuPosesLightsPastOneRowOfWorkgroups)
         drawn[i].position = {float(i % 2048) * 0.01f, 0.0f, float(i / 2048) * 0.01f};
         drawn[i].animation = OrbitAnimation{.radius = 0.001f * float(1 + i % 7)};
     }
-    SceneLights lights(drawn, 0.01f, driverChoices(DriverProfile::Software));
+    SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     lights.pose(2.0);
     lights.applyPose();
     EXPECT_EQ(expectPosedAsOnTheCpu(lightsOnTheGpu(lights), lights), static_cast<int>(kLights));

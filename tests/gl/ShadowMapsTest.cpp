@@ -70,7 +70,7 @@ TEST_F(ShadowMapsTest, MovedObjectsRebuildEveryMap)
 {
     const Scene scene = parseScene(kScene, "<shadow maps test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
-    GpuScene gpuScene(scene, lights, driverChoices(DriverProfile::Auto));
+    GpuScene gpuScene(scene, lights, resolveDriverChoices({.profile = DriverProfile::Auto}));
     gpuScene.setViewport(96, 64);
     ShadowMaps maps;
     maps.setLocalLightBudget(3);

@@ -95,7 +95,8 @@ TEST_F(SpecularPower, CompactShininessCodeKeepsEveryIntegerExponentWithinHalf)
 // (2046, 2047 and 2048), each surface's power is its own exponent's, bit for bit.
 TEST_F(SpecularPower, EachSurfacePicksItsOwnExponent)
 {
-    const gl::Defines defines = lightingFeatureDefines(LightingFeatures{.specularExponents = {2046, 2047, 2048}}, {});
+    const gl::Defines defines =
+        lightingFeatureDefines(LightingFeatures{.scene = {.specularExponents = {2046, 2047, 2048}}}, {});
     const std::vector<float> picked = runForEach(
         "uint exponent = 2046u + i % 3u;\n"
         "    float x = 0.9995;\n"

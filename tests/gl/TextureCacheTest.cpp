@@ -95,7 +95,7 @@ TEST_F(TextureCacheTest, SharedTextureIsLoadedOncePerColourSpace)
     Material c;
     c.specularMap = path;  // data again: shares b's linear texture
     scene.materials = {a, b, c, Material{}};
-    const GpuScene gpuScene(scene, {}, driverChoices(DriverProfile::Auto));
+    const GpuScene gpuScene(scene, {}, resolveDriverChoices({.profile = DriverProfile::Auto}));
     EXPECT_EQ(gpuScene.textures().size(), 2u);
 }
 
@@ -161,7 +161,7 @@ TEST_F(TextureCacheTest, AnisotropyIsSetOnLoadedAndLaterTextures)
     };
     // `auto` is what the driver profile says: none for software, 8x for a GPU.
     for (const DriverProfile profile : {DriverProfile::Software, DriverProfile::Gpu}) {
-        TextureCache cache({}, driverChoices(profile).autoAnisotropy);
+        TextureCache cache({}, resolveDriverChoices({.profile = profile}).autoAnisotropy);
         const gl::MipmappedTexture2D& texture =
             cache.get(writePng("auto.png", 2, 2, std::vector<unsigned char>(12, 9)), TextureColourSpace::Linear);
         EXPECT_EQ(anisotropyOf(texture),

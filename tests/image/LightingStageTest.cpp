@@ -84,7 +84,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<StageCase>& param) { return param.param.name; });
 
 // Without --lighting-stage, the driver profile decides: the fragment pass on a software
-// rasteriser, the compute pass on a GPU (DriverChoices::computeLighting).
+// rasteriser, the compute pass on a GPU (DriverChoices::lightingStage).
 TEST(LightingStages, TheProfileChoosesByDefault)
 {
     const auto dir = scratchDirectory();
