@@ -1,4 +1,5 @@
 #include "render/Renderer.h"
+#include "render/Techniques.h"
 #include "render/programs/Bindings.h"
 
 #include <algorithm>
@@ -7,8 +8,8 @@
 
 #include "core/Error.h"
 #include "gl/Driver.h"
-#include "render/culling/LightBatches.h"
 #include "render/frame/ScreenPasses.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 
@@ -91,7 +92,8 @@ TechniqueOptions Renderer::techniqueOptions() const
     return {.countWork = desc_.countWork,
             .gbufferLayout = desc_.gbufferLayout,
             .localShadows = desc_.shadowLights > 0,
-            .lightingStage = driver_.lightingStage};
+            .lightingStage = driver_.lightingStage,
+            .culling = desc_.culling};
 }
 
 Technique& Renderer::technique(std::string_view name)

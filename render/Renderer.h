@@ -66,7 +66,7 @@ struct RendererDesc {
     std::optional<DisplaySettings> display{};
     int supersample = 0;
     // Lighting passes read the lights through the light texels where the driver has them and
-    // they are the faster source (render/culling/LightBatches.h, GpuScene::readsLightWindows); false:
+    // they are the faster source (render/programs/LightBatches.h, GpuScene::readsLightWindows); false:
     // through the uniform windows or the storage buffer, as on a driver without them (the
     // tests compare the sources).
     bool lightTexels = true;
@@ -77,6 +77,9 @@ struct RendererDesc {
     // (render/driver/DriverProfile.h). Resolved when the Renderer is made (driverChoices());
     // apply() keeps it.
     DriverOverrides driver{};
+    // The culling's tuning, for measuring and testing (render/frame/TechniqueOptions.h): the
+    // techniques are made for it, as for the other options.
+    CullingTuning culling{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).

@@ -18,6 +18,7 @@
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
 #include "render/Renderer.h"
+#include "render/Techniques.h"
 #include "render/output/Image.h"
 #include "scene/LightSets.h"
 
@@ -84,7 +85,7 @@ std::optional<std::uint64_t> totalFragmentInvocations(const std::vector<PassSumm
 }
 
 BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const std::string& techniqueName,
-                    ImageSize size, const BenchOptions& options)
+                    ImageSize size, const BenchOptions& options, const CullingTuning& culling)
 {
     RendererDesc desc{.width = size.width,
                       .height = size.height,
@@ -92,7 +93,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .shadowLights = options.shadowLights,
                       .anisotropy = options.anisotropy,
                       .display = chooseDisplay(scene, options.display),
-                      .driver = options.driver.overrides};
+                      .driver = options.driver.overrides,
+                      .culling = culling};
     Renderer renderer(scene, lights, desc);
     Technique& technique = renderer.technique(techniqueName);
     // Under PassTiming::Wall each frame is rendered and waited for; otherwise frames are issued
@@ -497,6 +499,7 @@ void runBench(const BenchOptions& options)
     if (lightCounts.empty())
         lightCounts.push_back(std::nullopt);
 
+    const CullingTuning culling = cullingTuningFromEnvironment();
     HeadlessContext context({.debug = defaultDebugContext(), .device = options.driver.device});
     // What every Renderer below resolves the overrides to, for the header: the same context.
     const DriverChoices driver = resolveDriverChoices(options.driver.overrides);
@@ -526,7 +529,7 @@ void runBench(const BenchOptions& options)
                         continue;
                     }
                     progress.show(label + " ...");
-                    results.push_back(measure(scene, lights, technique, size, options));
+                    results.push_back(measure(scene, lights, technique, size, options, culling));
                     char ms[32];
                     std::snprintf(ms, sizeof ms, ": %.1f ms", results.back().measured.wallMs.median);
                     progress.showAndLog(label + ms);

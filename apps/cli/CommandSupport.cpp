@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <regex>
@@ -14,6 +15,9 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
+#include "render/Techniques.h"
+#include "render/culling/ClusterLists.h"
+#include "render/culling/TileCulling.h"
 #include "render/output/Image.h"
 #include "render/scene/TextureCache.h"
 #include "render/techniques/Technique.h"
@@ -159,6 +163,48 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
             "deferred's and clustered's lighting as a full-screen fragment pass or a compute pass; default: "
             "fragment on a software rasteriser, compute on a GPU")
         ->check(CLI::IsMember(namesOf(kLightingStageNames)));
+}
+
+namespace {
+
+// A whole number from `low` to `high`, all of `text`; none for anything else.
+std::optional<unsigned long> wholeNumberIn(const char* text, unsigned long low, unsigned long high)
+{
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long value = std::strtoul(text, &end, 10);
+    if (end == text || *end != '\0' || text[0] == '-' || errno == ERANGE || value < low || value > high)
+        return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+CullingTuning cullingTuningFromEnvironment()
+{
+    CullingTuning tuning;
+    if (const char* text = std::getenv("MANYLIGHTS_GLOBAL_LIGHT_FRACTION")) {
+        char* end = nullptr;
+        const double value = std::strtod(text, &end);
+        if (end == text || *end != '\0' || !(value > 0.0) || !std::isfinite(value))
+            throw Error(std::string("MANYLIGHTS_GLOBAL_LIGHT_FRACTION: expected a number > 0, got '") + text + "'");
+        tuning.globalLightGridFraction = value;
+    }
+    if (const char* text = std::getenv("MANYLIGHTS_MASKED_LIST_LIGHTS")) {
+        const std::optional<unsigned long> value = wholeNumberIn(text, 0, kMaskedListLights);
+        if (!value)
+            throw Error("MANYLIGHTS_MASKED_LIST_LIGHTS: expected a whole number of lights up to " +
+                        std::to_string(kMaskedListLights) + ", got '" + text + "'");
+        tuning.maskedListLights = static_cast<std::uint32_t>(*value);
+    }
+    if (const char* text = std::getenv("MANYLIGHTS_CULLING_THREADS")) {
+        const std::optional<unsigned long> value = wholeNumberIn(text, 1, kMaxCullingThreads);
+        if (!value)
+            throw Error("MANYLIGHTS_CULLING_THREADS: expected a whole number of threads from 1 to " +
+                        std::to_string(kMaxCullingThreads) + ", got '" + text + "'");
+        tuning.cullingThreads = static_cast<unsigned>(*value);
+    }
+    return tuning;
 }
 
 std::string formatSize(const ImageSize& size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }

@@ -20,9 +20,9 @@
 #include "platform/EglChoice.h"
 #include "render/Renderer.h"  // kDefaultImageWidth, kDefaultImageHeight
 #include "render/driver/DriverProfile.h"
-#include "render/effects/ShadowMaps.h"  // kMaxShadowLights
 #include "render/frame/GBuffer.h"
 #include "render/frame/PassProfiler.h"
+#include "render/programs/LoopBudget.h"  // kMaxShadowLights
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
 
@@ -119,6 +119,12 @@ struct DriverOptions {
     std::optional<DeviceSelector> device{};  // none: the first device that makes a context, hardware first
 };
 void addDriverOptions(CLI::App& command, DriverOptions& options);
+
+// The culling's tuning for RendererDesc::culling from the environment (docs/cli.md,
+// "Environment"): MANYLIGHTS_GLOBAL_LIGHT_FRACTION, MANYLIGHTS_MASKED_LIST_LIGHTS and
+// MANYLIGHTS_CULLING_THREADS, each unset where its variable is. Throws manylights::Error naming
+// the variable and its value for one that is not what it must be.
+CullingTuning cullingTuningFromEnvironment();
 
 // Median (the mean of the middle two for an even count), 95th percentile (nearest rank: the
 // smallest value that at least 95% of them do not exceed), min and max; `values` not empty.

@@ -14,9 +14,9 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "platform/HeadlessContext.h"
+#include "render/HeatMapLegend.h"
 #include "render/Renderer.h"
 #include "render/output/ExrFile.h"
-#include "render/output/HeatMapLegend.h"
 #include "scene/LightSets.h"
 
 namespace manylights {
@@ -228,7 +228,8 @@ void runRender(const RenderOptions& options)
                        .anisotropy = options.anisotropy,
                        .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
                        .supersample = options.supersample,
-                       .driver = options.driver.overrides});
+                       .driver = options.driver.overrides,
+                       .culling = cullingTuningFromEnvironment()});
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
     // The scene on the GPU (lights, meshes, textures, their upload) and the technique's programs.

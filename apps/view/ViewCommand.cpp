@@ -58,7 +58,12 @@ int runViewCommand(int argc, const char* const* argv)
         std::fputs(keymapListing().c_str(), stdout);
         return 0;
     }
-    return reportingErrors([&] { runView(options); }, "in the viewer");
+    return reportingErrors(
+        [&] {
+            options.culling = cullingTuningFromEnvironment();
+            runView(options);
+        },
+        "in the viewer");
 }
 
 }  // namespace manylights

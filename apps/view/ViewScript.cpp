@@ -7,6 +7,7 @@
 #include "apps/view/Keymaps.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
+#include "render/Techniques.h"
 #include "render/Views.h"
 #include "render/techniques/Technique.h"
 

@@ -28,8 +28,8 @@
 #include "platform/EglChoice.h"
 #include "platform/HeadlessContext.h"
 #include "platform/window/WindowContext.h"
+#include "render/HeatMapLegend.h"
 #include "render/Renderer.h"
-#include "render/output/HeatMapLegend.h"
 #include "scene/LightSets.h"
 
 namespace manylights {
@@ -168,7 +168,8 @@ RendererDesc Viewer::rendererDesc() const
             .lightingTerms = {ambient_ ? 1.0f : 0.0f, diffuse_ ? 1.0f : 0.0f, specular_ ? 1.0f : 0.0f},
             .display = shown,
             .wireframe = wireframe_,
-            .driver = options_.driver.overrides};
+            .driver = options_.driver.overrides,
+            .culling = options_.culling};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose

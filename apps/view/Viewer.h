@@ -28,6 +28,8 @@ struct ViewOptions {
     // --driver-profile, and --device: the window's context is the display server's, so the
     // viewer checks that it runs on that device rather than choosing it (docs/viewer.md).
     DriverOptions driver;
+    // The culling's tuning (the environment's: cullingTuningFromEnvironment).
+    CullingTuning culling{};
 };
 
 // Runs the viewer until the window closes, Escape/Q, or the script's `quit`. Throws

@@ -8,6 +8,7 @@
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewerWindow.h"
 #include "core/Error.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 
 namespace manylights {

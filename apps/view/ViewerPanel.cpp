@@ -13,6 +13,7 @@
 
 #include "apps/view/ViewerWindow.h"
 #include "core/AtomicFile.h"
+#include "render/Techniques.h"
 #include "render/effects/ShadowMaps.h"
 #include "render/techniques/Technique.h"
 

@@ -20,8 +20,8 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "render/culling/LightBatches.h"
 #include "render/frame/FramePasses.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 

@@ -13,7 +13,7 @@
 #include "core/Error.h"
 #include "gl/Driver.h"
 #include "render/culling/LightTiles.h"
-#include "render/effects/ShadowMaps.h"
+#include "render/programs/LoopBudget.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -43,8 +43,7 @@ static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopI
 // A part's walk: each entry tested once and shaded at most once, two iterations per chunk of 32
 // (lib/cluster_lists.glsl); before it, in part 0, the global list, an iteration per light; the
 // shadow filters of the shadowed lights (LightBatches.cpp's count); room for the loops around it.
-static_assert(2 * kClusterListPart + 2 * (kClusterListPart / 32) + kGlobalLightCapacity + 16 * (kMaxShadowLights + 1) +
-                  1024 <=
+static_assert(2 * kClusterListPart + 2 * (kClusterListPart / 32) + kGlobalLightCapacity + kShadowLookupBudget + 1024 <=
               kMaxLoopIterations);
 // cluster_mask_lists.comp's walk of a cluster that every light of a masked frame reaches: the
 // summary's words, the mask's words and two lights an iteration.
@@ -117,44 +116,10 @@ std::size_t bytesOf(std::uint32_t uints) { return std::size_t{uints} * sizeof(st
 // A cluster mask's summary words (lib/clusters.glsl clusterMaskSummaryWords).
 std::uint32_t summaryWordsOf(std::uint32_t maskWords) { return (maskWords + 31) / 32; }
 
-// The share of the grid a global light covers: kGlobalLightGridFraction, or for measuring
-// others (scripts/measure-global-fraction.sh) MANYLIGHTS_GLOBAL_LIGHT_FRACTION, a number > 0
-// (above 1 no light but an unbounded one is global).
-double globalLightGridFraction()
-{
-    static const double fraction = [] {
-        const char* text = std::getenv("MANYLIGHTS_GLOBAL_LIGHT_FRACTION");
-        if (text == nullptr)
-            return kGlobalLightGridFraction;
-        char* end = nullptr;
-        const double value = std::strtod(text, &end);
-        if (end == text || *end != '\0' || !(value > 0.0) || !std::isfinite(value))
-            throw Error(std::string("MANYLIGHTS_GLOBAL_LIGHT_FRACTION: expected a number > 0, got '") + text + "'");
-        return value;
-    }();
-    return fraction;
-}
-
-// kMaskedListLights, or for measuring and testing MANYLIGHTS_MASKED_LIST_LIGHTS, a whole number
-// up to kMaskedListLights (0: every frame sorts its pairs): more would take
-// cluster_mask_lists.comp's walk past the loop bound.
-std::uint32_t maskedListLights()
-{
-    const char* text = std::getenv("MANYLIGHTS_MASKED_LIST_LIGHTS");
-    if (text == nullptr)
-        return kMaskedListLights;
-    char* end = nullptr;
-    const unsigned long value = std::strtoul(text, &end, 10);
-    if (end == text || *end != '\0' || text[0] == '-' || value > kMaskedListLights)
-        throw Error("MANYLIGHTS_MASKED_LIST_LIGHTS: expected a whole number of lights up to " +
-                    std::to_string(kMaskedListLights) + ", got '" + text + "'");
-    return static_cast<std::uint32_t>(value);
-}
-
 // The tiles a light's screen rectangle must cover to be global in a grid of `tiles`: at least one.
-std::uint32_t globalLightTiles(std::uint32_t tiles)
+std::uint32_t globalLightTiles(double gridFraction, std::uint32_t tiles)
 {
-    const double wanted = std::ceil(globalLightGridFraction() * tiles);
+    const double wanted = std::ceil(gridFraction * tiles);
     return static_cast<std::uint32_t>(std::clamp(wanted, 1.0, static_cast<double>(tiles) + 1.0));
 }
 
@@ -180,9 +145,11 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList
     return defines;
 }
 
-ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines)
+ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines,
+                           const CullingTuning& tuning)
     : shape_(shape),
-      maskedListLights_(maskedListLights()),
+      maskedListLights_(tuning.maskedListLights.value_or(kMaskedListLights)),
+      globalLightGridFraction_(tuning.globalLightGridFraction.value_or(kGlobalLightGridFraction)),
       maskLists_(makeMaskListProgram(shape)),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
                  clusterListDefines(clusterGridDefines({}, shape))),
@@ -338,7 +305,7 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
             narrow.set(kPairLightCountLocation, lightCount);
             narrow.set(kPairCapacityLocation, capacity_);
             if (!emit) {
-                narrow.set(kPairGlobalTilesLocation, globalLightTiles(tiles));
+                narrow.set(kPairGlobalTilesLocation, globalLightTiles(globalLightGridFraction_, tiles));
                 narrow.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
             }
             if (run == PairRun::Mask)

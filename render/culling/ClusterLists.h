@@ -69,13 +69,13 @@
 #include "render/culling/GpuScan.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
+#include "render/frame/TechniqueOptions.h"
 #include "render/programs/LightingPrograms.h"
-#include "render/techniques/Technique.h"
 
 namespace manylights {
 
 // The lights one invocation of the lighting walks (a part of a list): within the loop bound
-// of render/culling/LightBatches.h, with room for the iterations around the walk (each entry
+// of render/programs/LightBatches.h, with room for the iterations around the walk (each entry
 // may take two: its reach test and its shading, ClusterLists.cpp).
 inline constexpr std::uint32_t kClusterListPart = 4096;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
@@ -102,7 +102,7 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels = false, bool gl
 // 1280x720 in clustered's grid: 60.8 MB; at 1920x1080 from 8,192 lights on, clustered sorts).
 // On the courtyard at 1280x720 the masks' lists cost 12 against 20 ms at 1,024 lights, 19
 // against 24 at 16,384, and tiled's 20 against 23-24 at 32,768 (docs/techniques.md).
-// MANYLIGHTS_MASKED_LIST_LIGHTS, read when the lists are made, sets a lower number for
+// CullingTuning::maskedListLights (MANYLIGHTS_MASKED_LIST_LIGHTS) sets a lower number for
 // measuring (scripts/measure-masked-lists.sh) and testing: 0 sorts every frame's pairs. Not a
 // higher one: the masks' walk of a cluster every light reaches stays within the loop bound up
 // to kMaskedListLights (ClusterLists.cpp checks).
@@ -115,8 +115,9 @@ inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 
 class ClusterLists {
 public:
     // For grids of `shape` (their programs are compiled for it), lit by programs made with
-    // `lightingDefines` (the technique's, render/techniques/Technique.h shaderDefines).
-    ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines);
+    // `lightingDefines` (the technique's, render/frame/TechniqueOptions.h shaderDefines), made as
+    // `tuning` asks.
+    ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines, const CullingTuning& tuning = {});
 
     // Builds the frame's lists for the scene's lights (bound by the passes) over `grid`, fitted
     // to the frame's surfaces already.
@@ -202,7 +203,8 @@ private:
     const gl::Program& pairProgram(bool wide, PairRun run, bool gridTexels);
 
     ClusterGridShape shape_;
-    std::uint32_t maskedListLights_;  // kMaskedListLights or MANYLIGHTS_MASKED_LIST_LIGHTS
+    std::uint32_t maskedListLights_;  // kMaskedListLights or CullingTuning::maskedListLights
+    double globalLightGridFraction_;  // kGlobalLightGridFraction or CullingTuning's
     std::optional<gl::Program> pairPrograms_[2][3][2];
     gl::Program maskLists_;
     gl::Program longLists_;

@@ -7,7 +7,7 @@
 #include <cstddef>
 
 #include "gl/Program.h"
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 

@@ -176,28 +176,10 @@ void runOnThreads(unsigned threads, std::size_t count, const Task& task)
 
 }  // namespace
 
-unsigned forcedCullingThreads()
-{
-    static const unsigned threads = [] {
-        const char* text = std::getenv("MANYLIGHTS_CULLING_THREADS");
-        if (text == nullptr)
-            return 0u;
-        char* end = nullptr;
-        const unsigned long value = std::strtoul(text, &end, 10);
-        if (end == text || *end != '\0' || text[0] == '-' || value < 1 || value > kMaxCullingThreads)
-            throw Error("MANYLIGHTS_CULLING_THREADS: expected a whole number of threads from 1 to " +
-                        std::to_string(kMaxCullingThreads) + ", got '" + text + "'");
-        return static_cast<unsigned>(value);
-    }();
-    return threads;
-}
-
 unsigned TileCuller::threadsFor(std::size_t lightCount) const
 {
     if (threads_ > 0)
         return threads_;
-    if (const unsigned forced = forcedCullingThreads())
-        return forced;
     return lightCount >= kParallelCullingLights ? std::max(std::thread::hardware_concurrency(), 1u) : 1;
 }
 

@@ -80,9 +80,9 @@ struct TileLightLists {
 // consecutive lights; the lists are the same to the byte whatever the number of threads.
 class TileCuller {
 public:
-    // On `threads` threads; 0: as MANYLIGHTS_CULLING_THREADS says (forcedCullingThreads), or
-    // where it is not set on every core for kParallelCullingLights lights or more and on one
-    // below (where starting threads would cost more than they save).
+    // On `threads` threads (1 to kMaxCullingThreads; CullingTuning::cullingThreads); 0: on every
+    // core for kParallelCullingLights lights or more and on one below (where starting threads
+    // would cost more than they save).
     explicit TileCuller(unsigned threads = 0) : threads_(threads) {}
     const TileLightLists& cull(const TileCullingView& view, std::span<const GpuLight> lights);
     const TileLightLists& lists() const { return lists_; }
@@ -111,11 +111,8 @@ private:
 // may start milliseconds late (idle, a thread's start and join take about 20 µs).
 inline constexpr std::size_t kParallelCullingLights = 4096;
 
-// For measuring (scripts/measure-tile-culling.sh) and testing, MANYLIGHTS_CULLING_THREADS: the
-// threads TileCuller culls on at every light count, a whole number from 1 to
-// kMaxCullingThreads; 0 where it is not set. Throws manylights::Error naming the variable for
-// anything else.
-unsigned forcedCullingThreads();
+// The most threads a TileCuller may be told to cull on (for measuring,
+// scripts/measure-tile-culling.sh, and testing: MANYLIGHTS_CULLING_THREADS).
 inline constexpr unsigned kMaxCullingThreads = 256;
 
 // One-shot form of TileCuller::cull.

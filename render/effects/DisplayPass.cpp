@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/Error.h"
-#include "render/frame/PipelineState.h"
+#include "render/programs/PipelineState.h"
 
 namespace manylights {
 

@@ -20,14 +20,11 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/LoopBudget.h"
 #include "render/scene/GpuScene.h"
 #include "scene/Scene.h"
 
 namespace manylights {
-
-// The most local lights --shadow-lights (and the viewer) may give shadow maps: a cube map of
-// 512² faces is 4.5 MiB of depth, so 256 of them already take over a GiB.
-inline constexpr int kMaxShadowLights = 256;
 
 class GpuScene;
 class FramePasses;

@@ -7,8 +7,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "render/frame/FramePasses.h"
+#include "render/frame/TechniqueOptions.h"
 #include "render/scene/GpuScene.h"
-#include "render/techniques/Technique.h"
 
 namespace manylights {
 

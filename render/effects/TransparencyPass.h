@@ -23,8 +23,8 @@
 #include "render/culling/ClusterGrid.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
+#include "render/frame/TechniqueOptions.h"
 #include "render/programs/LightingPrograms.h"
-#include "render/techniques/Technique.h"
 
 namespace manylights {
 

@@ -17,7 +17,7 @@
 
 #include "render/frame/FrameTargets.h"
 #include "render/frame/PassProfiler.h"
-#include "render/frame/PipelineState.h"
+#include "render/programs/PipelineState.h"
 
 namespace manylights {
 

@@ -167,7 +167,7 @@ FrameSample PassProfiler::sampleOf(const FrameQueries& frame) const
     sample.gpuMs = static_cast<double>(frame.end.result() - frame.start.result()) / kNanosecondsPerMs;
     for (std::size_t i = 0; i < frame.passCount; ++i) {
         const PassQueries& queries = frame.passes[i];
-        // A pass that runs once per light batch (render/culling/LightBatches.h) is one entry: the
+        // A pass that runs once per light batch (render/programs/LightBatches.h) is one entry: the
         // sum of its runs, in the place of its first.
         auto pass = std::find_if(sample.passes.begin(), sample.passes.end(),
                                  [&](const PassSample& earlier) { return earlier.name == queries.name; });

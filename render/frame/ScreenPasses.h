@@ -4,8 +4,8 @@
 #pragma once
 
 #include "gl/Program.h"
-#include "render/culling/LightBatches.h"
 #include "render/frame/FramePasses.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 

@@ -119,14 +119,14 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).
 enum class LightSource : std::uint8_t {
     StorageBuffer,  // the whole light buffer, any light by index
-    UniformWindow,  // the batch's window (render/culling/LightBatches.h: light windows); the caller
+    UniformWindow,  // the batch's window (render/programs/LightBatches.h: light windows); the caller
                     // binds it with GpuScene::bindLightWindow
-    TexelBuffer,    // the whole light buffer as texels (render/culling/LightBatches.h: light texels),
+    TexelBuffer,    // the whole light buffer as texels (render/programs/LightBatches.h: light texels),
                     // which GpuScene::bind binds
 };
 
 // The batch size of a pass that walks its lights from `source`: a window's worth from a
-// uniform window, else kLightsPerBatch (render/culling/LightBatches.h).
+// uniform window, else kLightsPerBatch (render/programs/LightBatches.h).
 std::uint32_t lightsPerBatch(LightSource source);
 
 // What a mesh program (shaders/mesh.vert with a fragment shader calling lib/material.glsl's

@@ -16,8 +16,8 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/driver/DriverProfile.h"
-#include "render/frame/PipelineState.h"
 #include "render/programs/LightingPrograms.h"
+#include "render/programs/PipelineState.h"
 #include "render/scene/TextureCache.h"
 #include "scene/Scene.h"
 

@@ -11,9 +11,9 @@
 #include <glm/glm.hpp>
 
 #include "gl/Program.h"
-#include "render/culling/LightBatches.h"
 #include "render/driver/DriverProfile.h"
 #include "render/environment/EnvironmentLight.h"
+#include "render/programs/LightBatches.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/scene/DrawList.h"
 #include "render/scene/GpuFrame.h"

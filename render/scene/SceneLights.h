@@ -1,6 +1,6 @@
 // The scene's local lights on the GPU: at rest and posed at a time, packed into one storage
 // buffer (shaders/lib/lights.glsl), read as texels or uniform windows where the driver allows
-// (render/culling/LightBatches.h), with a version counter for passes that cache what they derive
+// (render/programs/LightBatches.h), with a version counter for passes that cache what they derive
 // from the lights. Made from the expanded light list alone (scene/LightSets.h): no other
 // route to the lights.
 //
@@ -19,8 +19,8 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "render/culling/LightBatches.h"
 #include "render/driver/DriverProfile.h"
+#include "render/programs/LightBatches.h"
 #include "render/programs/LightingPrograms.h"
 #include "scene/Scene.h"
 
@@ -107,7 +107,7 @@ public:
     // Binds lights [batch.first, batch.first + kLightsPerWindow) as the uniform block at
     // kLightWindowBinding; batch.first must be a multiple of kLightsPerWindow.
     void bindWindow(const LightBatch& batch) const;
-    // Makes the light texels (render/culling/LightBatches.h; bound by bind()) when `wanted` and the
+    // Makes the light texels (render/programs/LightBatches.h; bound by bind()) when `wanted` and the
     // driver has them for this many lights (lightTexelsSupported); drops them otherwise
     // (RendererDesc::lightTexels). They are wanted from the start.
     void setTexels(bool wanted);

@@ -19,7 +19,7 @@ LightingProgram clusteredLighting(const TechniqueOptions& options, bool listTexe
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kClusteredGridShape),
-      lists_(kClusteredGridShape, shaderDefines(options)),
+      lists_(kClusteredGridShape, shaderDefines(options), options.culling),
       lighting_{{clusteredLighting(options, false, false), clusteredLighting(options, false, true)},
                 {clusteredLighting(options, true, false), clusteredLighting(options, true, true)}}
 {

@@ -3,7 +3,7 @@
 
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/techniques/Technique.h"
 

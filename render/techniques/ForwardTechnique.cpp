@@ -1,8 +1,8 @@
 // forward: the reference. Every fragment of every object loops over every light.
 #include "render/techniques/ForwardTechnique.h"
 
-#include "render/culling/LightBatches.h"
 #include "render/frame/FramePasses.h"
+#include "render/programs/LightBatches.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {

@@ -47,7 +47,8 @@ std::size_t variantFor(std::uint32_t count)
 TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
     : Technique(options),
       global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}},
-              shaderDefines(options))
+              shaderDefines(options)),
+      culler_(options.culling.cullingThreads.value_or(0))
 {
     for (std::size_t v = 0; v < kVariants; ++v)
         variants_.push_back(makeVariant(options, v));

@@ -9,8 +9,8 @@
 
 #include "gl/Buffer.h"
 #include "gl/Program.h"
-#include "render/culling/LightBatches.h"
 #include "render/culling/TileCulling.h"
+#include "render/programs/LightBatches.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/techniques/Technique.h"
 
@@ -20,7 +20,7 @@ namespace manylights {
 // drawn by the variant with the smallest bound ≥ n. Its loop then has a constant trip limit,
 // which shader compilers can unroll and schedule for: the classic way this technique kept
 // per-tile loops cheap on hardware with weak dynamic loops. The last bound is a light batch
-// (render/culling/LightBatches.h): a tile with more lights is drawn as several quads, one per run of
+// (render/programs/LightBatches.h): a tile with more lights is drawn as several quads, one per run of
 // that many of its lights, added together.
 inline constexpr std::array<std::uint32_t, 9> kTileLightBounds = {8, 16, 32, 64, 128, 256, 512, 1024, kLightsPerBatch};
 

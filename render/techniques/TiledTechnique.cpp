@@ -7,7 +7,7 @@ namespace manylights {
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kTiledGridShape),
-      lists_(kTiledGridShape, shaderDefines(options)),
+      lists_(kTiledGridShape, shaderDefines(options), options.culling),
       lighting_("tiled lighting", shaderDefines(options), kTiledGridShape)
 {
 }

@@ -18,6 +18,7 @@
 
 #include "GlContextTest.h"
 #include "render/Renderer.h"
+#include "render/Techniques.h"
 #include "render/programs/Bindings.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"

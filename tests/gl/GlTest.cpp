@@ -16,8 +16,8 @@
 #include "gl/VertexArray.h"
 #include "platform/HeadlessContext.h"
 #include "render/culling/ClusterGrid.h"
-#include "render/culling/LightBatches.h"
 #include "render/frame/GBuffer.h"
+#include "render/programs/LightBatches.h"
 #include "render/techniques/TiledTechnique.h"
 
 namespace manylights {
@@ -290,7 +290,7 @@ TEST_F(GlTest, QueriesCountFragmentsAndTime)
 namespace manylights {
 namespace {
 
-// What render/culling/LightBatches.h works around: how many iterations a compute invocation really
+// What render/programs/LightBatches.h works around: how many iterations a compute invocation really
 // runs of a loop asked to run `requested` times, nested `inner` deep per iteration (inner
 // loops with a trip count from a uniform, which no compiler can unroll).
 std::uint32_t iterationsRun(std::uint32_t requested, std::uint32_t inner)
@@ -335,7 +335,7 @@ class LoopLimit : public GlContextTest {};
 
 TEST_F(LoopLimit, LlvmpipeEndsLoopsAfter65535IterationsInAll)
 {
-    // Every driver runs a loop of 16,384 iterations (render/culling/LightBatches.h's bound), nested
+    // Every driver runs a loop of 16,384 iterations (render/programs/LightBatches.h's bound), nested
     // loops included.
     EXPECT_EQ(iterationsRun(kMaxLoopIterations, 0), kMaxLoopIterations);
     EXPECT_EQ(iterationsRun(kMaxLoopIterations / 4, 3), kMaxLoopIterations / 4);

@@ -10,7 +10,7 @@
 
 #include "GlContextTest.h"
 #include "core/Error.h"
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 #include "render/programs/LightingPrograms.h"
 #include "render/scene/GpuScene.h"
 #include "render/techniques/Technique.h"

@@ -1,14 +1,15 @@
 // The light lists of tiled and clustered built from bit masks (render/culling/ClusterLists.h:
 // frames of at most kMaskedListLights lights) against the same lists built by the pair sort
-// (MANYLIGHTS_MASKED_LIST_LIGHTS=0). Both paths must give the same lists in the same order, so
-// the images must be the same bytes, with no tolerance: the lighting adds the same lights in
-// the same order. The light counts cover each shape of the masks: fewer than 32 words a cluster,
-// exactly 32 (the most without a summary), 33 (a summary of two words), 3,000 and 4,500. The
-// lights drift, and each renderer draws several times in turn: a bit left in a mask by one frame
-// would put a light into the next frame's lists where it no longer reaches.
+// (CullingTuning::maskedListLights 0, as MANYLIGHTS_MASKED_LIST_LIGHTS=0 sets it). Both paths
+// must give the same lists in the same order, so the images must be the same bytes, with no
+// tolerance: the lighting adds the same lights in the same order. The light counts cover each
+// shape of the masks: fewer than 32 words a cluster, exactly 32 (the most without a summary),
+// 33 (a summary of two words), 3,000 and 4,500. The lights drift, and each renderer draws
+// several times in turn: a bit left in a mask by one frame would put a light into the next
+// frame's lists where it no longer reaches.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -58,25 +59,6 @@ std::string yardScene(int count, double spread, double shortestRange, double lon
     return scene.dump();
 }
 
-// MANYLIGHTS_MASKED_LIST_LIGHTS set to `value` (or unset) while a renderer's techniques are
-// made: their lists read it then.
-class MaskedListLightsSetting {
-public:
-    explicit MaskedListLightsSetting(const std::optional<std::string>& value)
-    {
-        if (value)
-            ::setenv(kName, value->c_str(), 1);
-        else
-            ::unsetenv(kName);
-    }
-    ~MaskedListLightsSetting() { ::unsetenv(kName); }
-    MaskedListLightsSetting(const MaskedListLightsSetting&) = delete;
-    MaskedListLightsSetting& operator=(const MaskedListLightsSetting&) = delete;
-
-private:
-    static constexpr const char* kName = "MANYLIGHTS_MASKED_LIST_LIGHTS";
-};
-
 std::map<std::string, double> countersOf(Technique& technique)
 {
     std::map<std::string, double> counters;
@@ -87,12 +69,12 @@ std::map<std::string, double> countersOf(Technique& technique)
 
 const std::vector<std::string> kTechniques = {"clustered", "tiled"};
 
-// A renderer of `desc` for the scene, with MANYLIGHTS_MASKED_LIST_LIGHTS set to `setting` (or
-// unset) while its techniques, and their lists, are made (they are made when first asked for).
+// A renderer of `desc` for the scene whose lists are made from masks up to `maskedListLights`
+// lights (unset: the default; 0: every frame sorts), with its techniques made.
 void makeRenderer(std::optional<Renderer>& renderer, const Scene& scene, const std::vector<Light>& lights,
-                  const RendererDesc& desc, const std::optional<std::string>& setting)
+                  RendererDesc desc, std::optional<std::uint32_t> maskedListLights)
 {
-    const MaskedListLightsSetting scoped(setting);
+    desc.culling.maskedListLights = maskedListLights;
     renderer.emplace(scene, lights, desc);
     for (const std::string& technique : kTechniques)
         renderer->technique(technique);
@@ -139,7 +121,7 @@ TEST_F(MaskedListsTest, MasksGiveTheSortsListsFrameAfterFrame)
         std::optional<Renderer> masked;
         std::optional<Renderer> sorted;
         makeRenderer(masked, scene, lights, desc, std::nullopt);
-        makeRenderer(sorted, scene, lights, desc, "0");
+        makeRenderer(sorted, scene, lights, desc, 0);
         for (const std::string& technique : kTechniques) {
             for (const double t : {0.0, 1.3, 0.4}) {
                 const std::map<std::string, double> fromMasks = expectSameFrame(
@@ -168,7 +150,7 @@ TEST_F(MaskedListsTest, TheMemoryBudgetDecidesAtNineteenTwentyByTenEighty)
         std::optional<Renderer> masked;
         std::optional<Renderer> sorted;
         makeRenderer(masked, scene, lights, desc, std::nullopt);
-        makeRenderer(sorted, scene, lights, desc, "0");
+        makeRenderer(sorted, scene, lights, desc, 0);
         for (const std::string& technique : kTechniques)
             expectSameFrame(*masked, *sorted, technique, 0.7, technique == "tiled" || count == 4096,
                             technique + ", " + std::to_string(count) + " lights, 1920x1080");

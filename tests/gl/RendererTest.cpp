@@ -7,6 +7,7 @@
 #include "GlContextTest.h"
 #include "core/Error.h"
 #include "render/Renderer.h"
+#include "render/Techniques.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 #include "tests/support/ImageComparison.h"
@@ -180,7 +181,7 @@ TEST_F(RendererTest, LightTexelsWindowsAndTheStorageBufferGiveTheSameImage)
         RendererDesc desc{.width = 96, .height = 64};
         Renderer renderer(scene, expandLights(scene), desc);
         if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
-            GTEST_SKIP() << "the driver has no light texels (render/culling/LightBatches.h)";
+            GTEST_SKIP() << "the driver has no light texels (render/programs/LightBatches.h)";
         for (const char* technique : {"forward", "deferred", "tiled-quads", "tiled", "clustered"}) {
             const std::string what = std::string(technique) + ", " + std::to_string(lightCount) + " lights";
             desc.lightTexels = true;
@@ -232,7 +233,7 @@ TEST_F(RendererTest, LightSourcesAndCullingTechniquesAgreePastSixtyFiveThousandL
     RendererDesc desc{.width = 1280, .height = 720};
     Renderer renderer(scene, expandLights(scene), desc);
     if (renderer.gpuScene().indexedLightSource() != LightSource::TexelBuffer)
-        GTEST_SKIP() << "the driver has no light texels (render/culling/LightBatches.h)";
+        GTEST_SKIP() << "the driver has no light texels (render/programs/LightBatches.h)";
     std::optional<Image> clustered;
     for (const char* technique : {"clustered", "tiled", "tiled-quads"}) {
         desc.lightTexels = true;
@@ -279,7 +280,7 @@ TEST_F(RendererTest, ForwardAddsEveryLightPastTwoHundredFiftySixBatches)
     const Image oneImage = oneRenderer.readColour();
     Renderer renderer(many, lights, desc);
     if (!renderer.gpuScene().readsLightWindows())
-        GTEST_SKIP() << "the driver has no light windows (render/culling/LightBatches.h)";
+        GTEST_SKIP() << "the driver has no light windows (render/programs/LightBatches.h)";
     renderer.renderFrame("forward", ViewMode::Final);
     Image expected = oneImage;
     int lit = 0;

@@ -20,6 +20,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 
 namespace manylights {

@@ -32,6 +32,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 

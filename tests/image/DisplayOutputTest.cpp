@@ -20,9 +20,10 @@
 
 #include "TestSupport.h"
 #include "core/Error.h"
+#include "render/HeatMapLegend.h"
+#include "render/Techniques.h"
 #include "render/Views.h"
 #include "render/output/ExrFile.h"
-#include "render/output/HeatMapLegend.h"
 #include "render/output/Image.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
@@ -308,7 +309,7 @@ TEST(DisplayOutput, ExrReadingErrorsNameTheFile)
     EXPECT_THROW(exrChannelNames(dir / "not.exr"), Error);
 }
 
-// The light-count view's PNG carries a labelled colour bar (render/output/HeatMapLegend.h) in its
+// The light-count view's PNG carries a labelled colour bar (render/HeatMapLegend.h) in its
 // legend area only; --no-legend gives the plain heat map of the counts, pixel for pixel.
 TEST(DisplayOutput, LightCountLegendChangesOnlyItsAreaAndNoLegendIsThePlainHeatMap)
 {

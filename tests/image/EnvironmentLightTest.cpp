@@ -39,6 +39,7 @@
 
 #include "AnalyticSupport.h"
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/output/ExrFile.h"
 #include "render/techniques/Technique.h"
 #include "scene/Environment.h"

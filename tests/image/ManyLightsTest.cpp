@@ -1,7 +1,7 @@
 // No light dropped at any count or size (issue 11). Mesa's llvmpipe silently ends a shader's
 // loops after 65,535 iterations in all (tests/gl/GlTest.cpp, LoopLimit), so a technique
 // that looped over more lights in one invocation lost the rest without an error; every
-// technique now takes lights in batches (render/culling/LightBatches.h). These tests put more lights
+// technique now takes lights in batches (render/programs/LightBatches.h). These tests put more lights
 // on one spot than that limit, and check every technique's work against the pairs in range
 // at a size people render at.
 #include <gtest/gtest.h>
@@ -13,8 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/culling/ClusterLists.h"
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 #include "render/techniques/Technique.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"

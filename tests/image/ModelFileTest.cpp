@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 

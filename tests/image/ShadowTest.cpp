@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
 

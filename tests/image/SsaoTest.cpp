@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 
 namespace manylights {

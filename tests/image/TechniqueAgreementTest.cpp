@@ -52,6 +52,7 @@
 #include <filesystem>
 
 #include "TestSupport.h"
+#include "render/Techniques.h"
 #include "render/scene/TextureCache.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"

@@ -22,6 +22,7 @@
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewScript.h"
 #include "core/Error.h"
+#include "render/Techniques.h"
 #include "render/Views.h"
 #include "render/techniques/Technique.h"
 

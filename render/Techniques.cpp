@@ -1,5 +1,5 @@
-// The registry of techniques: the one place that knows every technique, so that the base
-// class (render/techniques/Technique.h) includes none of them.
+#include "render/Techniques.h"
+
 #include "render/techniques/ClusteredTechnique.h"
 #include "render/techniques/DeferredTechnique.h"
 #include "render/techniques/ForwardTechnique.h"
@@ -15,7 +15,7 @@ namespace {
 // Every technique, in the order of the docs: the one list the names and the factory come from,
 // so a technique cannot be named without being made or made without being named. With each, the
 // lights its light-count view counts at a pixel (its shaders' recordLightEvaluations), which the
-// view's legend names (render/output/HeatMapLegend.h); 26 characters at most, for the legend.
+// view's legend names (render/HeatMapLegend.h); 26 characters at most, for the legend.
 struct TechniqueEntry {
     std::string_view name;
     std::unique_ptr<Technique> (*make)(const TechniqueOptions& options);

@@ -1,6 +1,6 @@
-#include "render/techniques/Technique.h"
+#include "render/frame/TechniqueOptions.h"
 
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 
 namespace manylights {
 

@@ -1,4 +1,4 @@
-#include "render/output/HeatMapLegend.h"
+#include "render/HeatMapLegend.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,8 +6,8 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/Techniques.h"
 #include "render/Views.h"
-#include "render/techniques/Technique.h"
 
 namespace manylights {
 

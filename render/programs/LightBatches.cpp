@@ -1,18 +1,16 @@
-#include "render/culling/LightBatches.h"
+#include "render/programs/LightBatches.h"
 
 #include <algorithm>
 #include <string>
 
 #include "core/Error.h"
 #include "gl/Driver.h"
-#include "render/effects/ShadowMaps.h"
 
 namespace manylights {
 
 // A pixel's worst case: a batch of lights with their bit-mask walk, and the directional and
-// every shadowed local light through a 3x3 filter of 3 + 1 outer and 3 · (3 + 1) inner
-// iterations.
-static_assert(kLightsPerBatch + 2 * (kLightsPerBatch / 32) + 64 + 16 * (kMaxShadowLights + 1) <= kMaxLoopIterations);
+// every shadowed local light's lookup.
+static_assert(kLightsPerBatch + 2 * (kLightsPerBatch / 32) + 64 + kShadowLookupBudget <= kMaxLoopIterations);
 
 std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t perBatch)
 {

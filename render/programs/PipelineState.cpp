@@ -1,4 +1,4 @@
-#include "render/frame/PipelineState.h"
+#include "render/programs/PipelineState.h"
 
 #include <epoxy/gl.h>
 

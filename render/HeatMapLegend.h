@@ -25,7 +25,7 @@ std::array<unsigned char, kLegendGlyphHeight> legendGlyph(char c);
 std::string_view legendCharacters();
 
 // The title of the light-count legend for `technique`: "LIGHT EVALUATIONS PER PIXEL: " and the
-// lights it counts (countedLights, render/techniques/Technique.h), in capitals.
+// lights it counts (countedLights, render/Techniques.h), in capitals.
 std::string heatMapLegendTitle(std::string_view technique);
 
 // The rectangle the legend covers (pixels, rows top to bottom); empty when it does not fit.

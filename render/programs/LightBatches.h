@@ -10,11 +10,11 @@
 // adding to the lit image. The first batch also adds the light-independent terms.
 //
 // The rule for every shader in this project: no invocation iterates more than
-// kMaxLoopIterations times in all, whatever the scene, size or light count. A batch's loops
-// stay under it with room for the iterations around them: word walks of bit masks and
-// per-tile culling, which each shader's comment counts, and the 3x3 shadow filters of
-// shaders/lib/shadows.glsl (at most 13 iterations each, should a compiler not unroll them)
-// for the shadowed lights, at most kMaxShadowLights (LightBatches.cpp checks the sum).
+// kMaxLoopIterations (render/programs/LoopBudget.h) times in all, whatever the scene, size or light count. A batch's
+// loops stay under it with room for the iterations around them: word walks of bit masks and per-tile culling, which
+// each shader's comment counts, and the 3x3 shadow filters of shaders/lib/shadows.glsl (at most 13 iterations each,
+// should a compiler not unroll them) for the shadowed lights, at most kMaxShadowLights (kShadowLookupBudget;
+// LightBatches.cpp checks the sum).
 #pragma once
 
 #include <cstdint>
@@ -22,10 +22,10 @@
 
 #include "gl/Program.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/LoopBudget.h"
 
 namespace manylights {
 
-inline constexpr std::uint32_t kMaxLoopIterations = 16384;
 inline constexpr std::uint32_t kLightsPerBatch = 8192;  // LightBatches.cpp checks it against the bound
 
 // Location of `lightBatch` in shaders/lib/light_batch.glsl (the shaders get it as
