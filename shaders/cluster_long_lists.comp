@@ -2,7 +2,7 @@
 // Clustered, once per frame after the lists are sorted (render/culling/ClusterLists.h): one invocation
 // per tile notes the frame's longest list and lists the tiles with a list longer than one
 // part (CLUSTER_LIST_PART lights, what one invocation of the lighting may walk): the later
-// parts of those lists are lit by passes over those tiles only (list_lighting.comp), the
+// parts of those lists are lit by passes over those tiles only (long_list_lighting.comp), the
 // rest of the image by the one lighting pass, a workgroup per listed tile (x, then z past
 // 32,768: an 8K image has 129,600 tiles, and a scene whose lights all reach every cluster may
 // list them all). Loop iterations: CLUSTER_SLICES.

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 
 #include "core/Error.h"
@@ -145,8 +144,7 @@ gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList
     return defines;
 }
 
-ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines,
-                           const CullingTuning& tuning)
+ClusterLists::ClusterLists(const ClusterGridShape& shape, const CullingTuning& tuning)
     : shape_(shape),
       maskedListLights_(tuning.maskedListLights.value_or(kMaskedListLights)),
       globalLightGridFraction_(tuning.globalLightGridFraction.value_or(kGlobalLightGridFraction)),
@@ -159,10 +157,6 @@ ClusterLists::ClusterLists(const ClusterGridShape& shape, const gl::Defines& lig
                          sortDefines(SortPass::ScatterGather)),
       globalLightOrder_("global light order", {{GL_COMPUTE_SHADER, "global_light_order.comp"}},
                         {{"GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity)}}),
-      longLighting_{LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
-                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), false)),
-                    LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "list_lighting.comp"}},
-                                    clusterListDefines(clusterGridDefines(lightingDefines, shape), true))},
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT),
       globalLightCandidates_("global light candidates", bytesOf(kGlobalLightCapacity), nullptr, 0),
       globalLights_("global lights", bytesOf(kGlobalLightCapacity + 1), nullptr, 0),  // and the count
@@ -453,27 +447,10 @@ void ClusterLists::bind() const
     longListTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LONG_TILES_BUFFER_BINDING);
 }
 
-void ClusterLists::lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const
+void ClusterLists::dispatchOverLongListTiles() const
 {
-    if (laterParts_ == 0)
-        return;
-    const LightSource source = scene.indexedLightSource();
-    const gl::Program& program = longLighting_[readsTexels() ? 1 : 0].variant(scene.lightingFeatures(), source);
-    for (std::uint32_t part = 1; part <= laterParts_; ++part)
-        passes.run({.name = "lighting",
-                    .sampled = Resource::GBuffer | Resource::LightGrid,  // the lists as texels
-                    .images = Resource::LitImage,
-                    .storage = Resource::LightGrid,
-                    .indirect = Resource::LightGrid,
-                    .writes = Resource::LitImage},
-                   [&] {
-                       grid.bind();
-                       bind();
-                       program.set(kClusterListPartLocation, part);
-                       program.use();
-                       statusBuffer_.bindAsDispatchIndirect();
-                       glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, longTileGroups)));
-                   });
+    statusBuffer_.bindAsDispatchIndirect();
+    glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, longTileGroups)));
 }
 
 void ClusterLists::frameIssued()
@@ -481,38 +458,20 @@ void ClusterLists::frameIssued()
     if (!built_)
         return;
     built_ = false;
-    StatusCopy copy;
-    if (!spareStatus_.empty()) {
-        copy = std::move(spareStatus_.back());
-        spareStatus_.pop_back();
-    } else {
-        copy.buffer = gl::Buffer("cluster list status copy", sizeof(Status), nullptr,
-                                 GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
-        copy.mapped = copy.buffer.mapForReading();
-    }
-    // The lighting's atomics (listVisits) and the build's are shader writes: a copy reads them
-    // after this barrier.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    statusBuffer_.copyTo(copy.buffer, sizeof(Status));
-    copy.fence = gl::Fence::afterIssuedCommands();
-    copy.capacity = capacity_;
-    copy.laterParts = laterParts_;
-    copy.globalList = globalListOfBuild_;
-    pendingStatus_.push_back(std::move(copy));
+    // The lighting's atomics (listVisits) and the build's are shader writes, which the ring's
+    // copy waits for.
+    statusCopies_.push(statusBuffer_,
+                       {.capacity = capacity_, .laterParts = laterParts_, .globalList = globalListOfBuild_});
 }
 
 bool ClusterLists::oldestFrameFitted()
 {
-    if (pendingStatus_.empty())
+    if (statusCopies_.pending() == 0)
         return true;
-    StatusCopy& copy = pendingStatus_.front();
-    copy.fence.wait();
-    std::memcpy(&status_, copy.mapped, sizeof(Status));
-    const std::uint32_t builtCapacity = copy.capacity;
-    const std::uint32_t builtLaterParts = copy.laterParts;
-    const bool builtWithGlobalList = copy.globalList;
-    spareStatus_.push_back(std::move(copy));
-    pendingStatus_.pop_front();
+    const Plan built = statusCopies_.readOldest(&status_);
+    const std::uint32_t builtCapacity = built.capacity;
+    const std::uint32_t builtLaterParts = built.laterParts;
+    const bool builtWithGlobalList = built.globalList;
 
     const std::uint32_t candidates = status_.globalLightCandidates;
     const bool listHeldThem = candidates <= kGlobalLightCapacity;
@@ -553,45 +512,6 @@ std::vector<TechniqueCounter> ClusterLists::counters(const ClusterGrid& grid) co
             {"cluster_rebuilds", static_cast<double>(rebuilds_)},
             {"cluster_lists_from_masks", masked_ ? 1.0 : 0.0},
             {"gpu_memory_bytes", static_cast<double>(lightMemoryBytes_ + memoryBytes() + grid.memoryBytes())}};
-}
-
-namespace {
-LightingProgram everyTileProgram(const std::string& label, const gl::Defines& techniqueDefines,
-                                 const ClusterGridShape& shape, bool listTexels, bool globalList)
-{
-    gl::Defines defines = clusterListDefines(clusterGridDefines(techniqueDefines, shape), listTexels, globalList);
-    defines.emplace_back("EVERY_TILE", "1");
-    return LightingProgram(label, {{GL_COMPUTE_SHADER, "list_lighting.comp"}}, std::move(defines));
-}
-}  // namespace
-
-EveryTileLighting::EveryTileLighting(const std::string& label, const gl::Defines& techniqueDefines,
-                                     const ClusterGridShape& shape)
-    : programs_{{everyTileProgram(label, techniqueDefines, shape, false, false),
-                 everyTileProgram(label, techniqueDefines, shape, false, true)},
-                {everyTileProgram(label, techniqueDefines, shape, true, false),
-                 everyTileProgram(label, techniqueDefines, shape, true, true)}}
-{
-}
-
-void EveryTileLighting::run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists,
-                            FramePasses& passes) const
-{
-    const gl::Program& program = programs_[lists.readsTexels() ? 1 : 0][lists.hasGlobalList() ? 1 : 0].variant(
-        scene.lightingFeatures(), scene.indexedLightSource());
-    passes.run({.name = "lighting",
-                // The lists may be read as texels: fetches wait on the list passes' writes too.
-                .sampled = Resource::GBuffer | Resource::LightGrid,
-                .images = Resource::LitImage,
-                .storage = Resource::LightGrid,
-                .writes = Resource::LitImage},
-               [&] {
-                   grid.bind();
-                   lists.bind();
-                   program.set(kClusterListPartLocation, 0u);
-                   program.use();
-                   glDispatchCompute(static_cast<GLuint>(grid.gridWidth()), static_cast<GLuint>(grid.gridHeight()), 1);
-               });
 }
 
 void buildListsOverSurfaces(const GpuScene& scene, FrameTargets& targets, FramePasses& passes, ClusterGrid& grid,

@@ -56,19 +56,18 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gl/Buffer.h"
-#include "gl/Fence.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/GpuScan.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
+#include "render/frame/ReadbackRing.h"
 #include "render/frame/TechniqueOptions.h"
 #include "render/programs/LightingPrograms.h"
 
@@ -81,7 +80,7 @@ inline constexpr std::uint32_t kClusterListPart = 4096;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
 inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
-inline constexpr int kClusterListPartLocation = 58;  // list_lighting.comp's part
+inline constexpr int kClusterListPartLocation = 58;  // long_list_lighting.comp's part
 // The most lights the global list holds. Part 0 of a list is walked after the global list, so
 // both are within the loop bound together, with the shadow filters (ClusterLists.cpp checks:
 // 4,096 did not fit beside the chunked walk of a part), and the sort's rank count walks the
@@ -114,10 +113,8 @@ inline constexpr ClusterGridShape kClusteredGridShape{.tileSize = 16, .slices = 
 
 class ClusterLists {
 public:
-    // For grids of `shape` (their programs are compiled for it), lit by programs made with
-    // `lightingDefines` (the technique's, render/frame/TechniqueOptions.h shaderDefines), made as
-    // `tuning` asks.
-    ClusterLists(const ClusterGridShape& shape, const gl::Defines& lightingDefines, const CullingTuning& tuning = {});
+    // For grids of `shape` (their programs are compiled for it), made as `tuning` asks.
+    explicit ClusterLists(const ClusterGridShape& shape, const CullingTuning& tuning = {});
 
     // Builds the frame's lists for the scene's lights (bound by the passes) over `grid`, fitted
     // to the frame's surfaces already.
@@ -135,10 +132,12 @@ public:
     // list (on the courtyard the difference measured within the spread). A frame without one
     // gives its candidates pairs, as any other light: nothing waits for the plan.
     bool hasGlobalList() const { return globalListOfBuild_; }
-    // After the lighting of part 0 of every list: the later parts of the long lists, as many
-    // as planned for this frame, each an indirect dispatch of list_lighting.comp over the tiles
-    // that have them, adding to the lit image. Passes named "lighting".
-    void lightLongLists(const GpuScene& scene, const ClusterGrid& grid, FramePasses& passes) const;
+    // The parts after part 0 that the lists of the frame built last were planned with
+    // (render/techniques/ListLighting.h lights each).
+    std::uint32_t laterParts() const { return laterParts_; }
+    // Dispatches the bound compute program over the tiles whose lists are longer than a part
+    // (listed by cluster_long_lists.comp; an indirect dispatch: the CPU does not know how many).
+    void dispatchOverLongListTiles() const;
 
     // After all of a frame's commands are issued: copies the status of the frame built last
     // (if one was built since) for oldestFrameFitted, behind a fence.
@@ -150,7 +149,7 @@ public:
     // it yet.
     bool oldestFrameFitted();
     // Frames issued whose status oldestFrameFitted has not read yet.
-    std::size_t framesPending() const { return pendingStatus_.size(); }
+    std::size_t framesPending() const { return statusCopies_.pending(); }
 
     std::uint64_t rebuilds() const { return rebuilds_; }
     std::uint32_t pairs() const { return status_.pairsNeeded; }
@@ -212,7 +211,6 @@ private:
     gl::Program sortScatter_;
     gl::Program sortScatterGather_;  // the last digit: with the lights' spheres
     gl::Program globalLightOrder_;
-    LightingProgram longLighting_[2];  // without and with the list texels
     GpuScan scan_;
 
     std::uint32_t capacity_ = 0;    // pairs the storage holds
@@ -244,18 +242,14 @@ private:
     gl::Buffer longListTiles_;
     gl::Buffer histogram_;
     gl::Buffer statusBuffer_;
-    // A frame's status, copied after its commands; read behind the fence (frameIssued).
-    struct StatusCopy {
-        gl::Buffer buffer;  // persistently mapped
-        const void* mapped = nullptr;
-        gl::Fence fence;
-        // The plan the frame was built with: what its needs are checked against.
+    // The plan a frame was built with, which its status is checked against.
+    struct Plan {
         std::uint32_t capacity = 0;
         std::uint32_t laterParts = 0;
         bool globalList = false;
     };
-    std::deque<StatusCopy> pendingStatus_;  // oldest first
-    std::vector<StatusCopy> spareStatus_;   // read, for reuse
+    // Each frame's status, copied after its commands and read behind a fence (frameIssued).
+    ReadbackRing<Plan> statusCopies_{"cluster list status copy", sizeof(Status)};
     // Each cluster's bit mask over the frame's lights and its summary (a bit per mask word
     // holding a light), where the frame is masked. All zero between frames:
     // cluster_mask_lists.comp clears what it reads.
@@ -266,22 +260,6 @@ private:
     gl::Buffer globalLightRecords_;     // their GpuLight records, beside them
     gl::BufferTexture globalLightTexels_;
     gl::BufferTexture globalLightRecordTexels_;
-};
-
-// Part 0 of every list, lit in a compute pass over the whole image, a workgroup per tile
-// (list_lighting.comp's EVERY_TILE): tiled's lighting, and clustered's under
-// LightingStage::Compute. Each covered pixel stores the global terms, the global lights and
-// part 0 of its cluster's list; lightLongLists adds the later parts.
-class EveryTileLighting {
-public:
-    EveryTileLighting(const std::string& label, const gl::Defines& techniqueDefines, const ClusterGridShape& shape);
-    // After ClusterLists::build over `grid`: the pass named "lighting".
-    void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes) const;
-
-private:
-    // [texels][global list]: reading the lists from the storage buffer or from texels, walking
-    // the global list or not (ClusterLists::readsTexels, hasGlobalList).
-    LightingProgram programs_[2][2];
 };
 
 // What tiled and clustered do before their lighting: the G-buffer, the grid fitted to its

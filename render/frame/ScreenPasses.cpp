@@ -17,4 +17,13 @@ Pass lightBatchPass(const LightBatch& batch, Resource storage)
             .storage = storage};
 }
 
+Pass computeLightingPass(const Pass& fragment)
+{
+    return {.name = fragment.name,
+            .sampled = fragment.sampled,
+            .images = Resource::LitImage,
+            .storage = fragment.storage,
+            .writes = Resource::LitImage};
+}
+
 }  // namespace manylights

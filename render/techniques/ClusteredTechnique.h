@@ -11,12 +11,9 @@
 // during the frame, and no light is dropped at any count (docs/techniques.md).
 #pragma once
 
-#include <cstdint>
-#include <optional>
-
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
-#include "render/programs/LightingPrograms.h"
+#include "render/techniques/ListLighting.h"
 #include "render/techniques/Technique.h"
 
 namespace manylights {
@@ -36,12 +33,7 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    // Part 0 of every list, the one pass over the image, under LightingStage::Fragment: reading
-    // the lists from the storage buffer and from texels, walking the global list or not:
-    // [texels][global list] (ClusterLists::readsTexels, hasGlobalList).
-    LightingProgram lighting_[2][2];
-    // The same in a compute pass, under LightingStage::Compute (made only then).
-    std::optional<EveryTileLighting> computeLighting_;
+    ListLighting lighting_;  // in the stage of the technique's options
 };
 
 }  // namespace manylights

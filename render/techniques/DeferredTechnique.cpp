@@ -30,32 +30,14 @@ void DeferredTechnique::render(const GpuScene& scene, FrameTargets& targets, Fra
     targets.gbuffer.fill(passes);
     const LightSource source = scene.walkedLightSource();
     const gl::Program& program = lighting_.variant(scene.lightingFeatures(), source);
-    const bool compute = options().lightingStage == LightingStage::Compute;
-    for (const LightBatch& batch :
-         lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source))) {
-        const auto bindBatch = [&] {
-            scene.bindLightSource(source, batch);
-            setLightBatch(program, batch);
-        };
-        if (!compute) {
-            passes.run(lightBatchPass(batch), [&] {
-                bindBatch();
-                drawCoveredPixels(program);
-            });
-            continue;
-        }
-        // Each batch reads what the one before stored (deferred.comp).
-        passes.run({.name = "lighting",
-                    .sampled = Resource::GBuffer,
-                    .images = Resource::LitImage,
-                    .writes = Resource::LitImage},
-                   [&] {
-                       bindBatch();
-                       program.use();
-                       glDispatchCompute(static_cast<GLuint>((targets.width + kComputeTile - 1) / kComputeTile),
-                                         static_cast<GLuint>((targets.height + kComputeTile - 1) / kComputeTile), 1);
-                   });
-    }
+    const auto groups = [](int pixels) { return static_cast<GLuint>((pixels + kComputeTile - 1) / kComputeTile); };
+    // In the compute stage each batch reads what the one before stored (deferred.comp).
+    for (const LightBatch& batch : lightBatches(static_cast<std::uint32_t>(scene.lightCount()), lightsPerBatch(source)))
+        runLightingPass(passes, options().lightingStage, lightBatchPass(batch), program, groups(targets.width),
+                        groups(targets.height), [&] {
+                            scene.bindLightSource(source, batch);
+                            setLightBatch(program, batch);
+                        });
 }
 
 }  // namespace manylights

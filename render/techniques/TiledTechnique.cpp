@@ -7,8 +7,8 @@ namespace manylights {
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
     : Technique(options),
       grid_(options.gbufferLayout, kTiledGridShape),
-      lists_(kTiledGridShape, shaderDefines(options), options.culling),
-      lighting_("tiled lighting", shaderDefines(options), kTiledGridShape)
+      lists_(kTiledGridShape, options.culling),
+      lighting_("tiled lighting", options, kTiledGridShape, LightingStage::Compute)
 {
 }
 
@@ -16,7 +16,6 @@ void TiledTechnique::render(const GpuScene& scene, FrameTargets& targets, FrameP
 {
     buildListsOverSurfaces(scene, targets, passes, grid_, lists_);
     lighting_.run(scene, grid_, lists_, passes);
-    lists_.lightLongLists(scene, grid_, passes);
 }
 
 }  // namespace manylights

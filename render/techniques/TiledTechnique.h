@@ -12,7 +12,7 @@
 
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
-#include "render/programs/LightingPrograms.h"
+#include "render/techniques/ListLighting.h"
 #include "render/techniques/Technique.h"
 
 namespace manylights {
@@ -33,7 +33,7 @@ public:
 private:
     ClusterGrid grid_;
     ClusterLists lists_;
-    EveryTileLighting lighting_;
+    ListLighting lighting_;  // in compute: a workgroup per tile
 };
 
 }  // namespace manylights

@@ -6,7 +6,7 @@
 // most of the grid: at most GLOBAL_LIGHT_CAPACITY of them, all or none (ClusterLists.h says why).
 layout(std430, binding = CLUSTER_LIST_STATUS_BUFFER_BINDING) buffer ClusterListStatus {
     // The tiles holding a list longer than a part, a workgroup each (x, then z past 32,768 in
-    // x) of list_lighting.comp; their count is longTiles.
+    // x) of long_list_lighting.comp; their count is longTiles.
     uint longTileGroups[3];
     uint pairsNeeded;        // (cluster, light) pairs of the frame: the list storage it needs
     uint longestList;        // the longest cluster list

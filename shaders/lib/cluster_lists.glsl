@@ -3,7 +3,7 @@
 // lights (sorted by cluster, stably). A list is walked in parts of CLUSTER_LIST_PART lights,
 // the most one invocation may walk within render/culling/LightBatches.h's bound: part 0 by the
 // lighting pass over the whole image, the later parts of long lists by passes over their
-// tiles only (list_lighting.comp).
+// tiles only (long_list_lighting.comp).
 //
 // Each listed light gets a finer test per pixel before it is shaded: whether the pixel's
 // surface lies in the light's sphere, the same test as lib/lighting.glsl's lightReach, with its

@@ -1,0 +1,74 @@
+#include "render/techniques/ListLighting.h"
+
+#include "render/frame/ScreenPasses.h"
+#include "render/scene/GpuScene.h"
+
+namespace manylights {
+
+namespace {
+
+LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
+                                 const ClusterGridShape& shape, LightingStage stage, bool texels, bool globalList)
+{
+    const gl::Defines defines =
+        clusterListDefines(clusterGridDefines(shaderDefines(options), shape), texels, globalList);
+    if (stage == LightingStage::Compute)
+        return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, defines);
+    return LightingProgram(label, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
+                           defines);
+}
+
+LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape, bool texels)
+{
+    return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}},
+                           clusterListDefines(clusterGridDefines(shaderDefines(options), shape), texels));
+}
+
+}  // namespace
+
+ListLighting::ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
+                           LightingStage stage)
+    : stage_(stage),
+      firstPart_{{firstPartProgram(label, options, shape, stage, false, false),
+                  firstPartProgram(label, options, shape, stage, false, true)},
+                 {firstPartProgram(label, options, shape, stage, true, false),
+                  firstPartProgram(label, options, shape, stage, true, true)}},
+      laterParts_{laterPartsProgram(options, shape, false), laterPartsProgram(options, shape, true)}
+{
+}
+
+void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists,
+                       FramePasses& passes) const
+{
+    // Lists name lights by index, so the lights are read by index.
+    const LightSource source = scene.indexedLightSource();
+    const int texels = lists.readsTexels() ? 1 : 0;
+    const gl::Program& first =
+        firstPart_[texels][lists.hasGlobalList() ? 1 : 0].variant(scene.lightingFeatures(), source);
+    const LightBatch allLights{0, static_cast<std::uint32_t>(scene.lightCount())};
+    Pass pass = lightBatchPass(allLights, Resource::LightGrid);
+    // The lists may be read as texels (GL_TEXTURE_FETCH_BARRIER_BIT after the list passes'
+    // storage writes, not only GL_SHADER_STORAGE_BARRIER_BIT).
+    pass.sampled = pass.sampled | Resource::LightGrid;
+    runLightingPass(passes, stage_, pass, first, static_cast<GLuint>(grid.gridWidth()),
+                    static_cast<GLuint>(grid.gridHeight()), [&] {
+                        scene.bindLightSource(source, allLights);
+                        grid.bind();
+                        lists.bind();
+                    });
+    if (lists.laterParts() == 0)
+        return;
+    const gl::Program& later = laterParts_[texels].variant(scene.lightingFeatures(), source);
+    Pass laterPass = computeLightingPass(pass);
+    laterPass.indirect = Resource::LightGrid;
+    for (std::uint32_t part = 1; part <= lists.laterParts(); ++part)
+        passes.run(laterPass, [&] {
+            grid.bind();
+            lists.bind();
+            later.set(kClusterListPartLocation, part);
+            later.use();
+            lists.dispatchOverLongListTiles();
+        });
+}
+
+}  // namespace manylights

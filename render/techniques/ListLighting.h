@@ -1,0 +1,37 @@
+// The lighting of a frame from the light lists of a cluster grid (render/culling/ClusterLists.h),
+// shared by tiled and clustered: part 0 of every list in one pass over the image, in the
+// technique's lighting stage (clustered.frag, or every_tile_lighting.comp: a workgroup per
+// tile), then the later parts of the lists longer than a part, each an indirect dispatch of
+// long_list_lighting.comp over the tiles that have them, adding to the lit image. Every pass
+// is named "lighting". The shaders share one function of a pixel (shaders/lib/list_pixel.glsl),
+// so that the stages give the same image, bit for bit.
+#pragma once
+
+#include <string>
+
+#include "render/culling/ClusterGrid.h"
+#include "render/culling/ClusterLists.h"
+#include "render/frame/TechniqueOptions.h"
+#include "render/programs/LightingPrograms.h"
+
+namespace manylights {
+
+class ListLighting {
+public:
+    // For lists over grids of `shape`, with programs made for `options` (whose lighting stage
+    // is `stage`: tiled lights in compute whatever its options say).
+    ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
+                 LightingStage stage);
+    // After ClusterLists::build over `grid`.
+    void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes) const;
+
+private:
+    LightingStage stage_;
+    // Part 0 in the stage: [texels][global list], reading the lists from the storage buffer or
+    // from texels, walking the global list or not (ClusterLists::readsTexels, hasGlobalList).
+    LightingProgram firstPart_[2][2];
+    // The later parts: [texels]. The global list is part 0's.
+    LightingProgram laterParts_[2];
+};
+
+}  // namespace manylights
