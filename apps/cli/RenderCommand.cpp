@@ -231,6 +231,7 @@ void runRender(const RenderOptions& options)
                        .driverProfile = options.driver.profile,
                        .passTiming = options.driver.passTiming,
                        .lightingStage = options.driver.lightingStage});
+    printWarnings(renderer.gpuScene().environment().warnings());
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
     // The scene on the GPU (lights, meshes, textures, their upload) and the technique's programs.
