@@ -73,8 +73,8 @@ PrefilterSource splitForPrefiltering(const EnvironmentImage& map, int maxWidth, 
             if (luminance <= threshold)
                 continue;
             const glm::vec3 kept = texel * (threshold / luminance);
-            const glm::dvec3 direction = environmentDirection(
-                {(i + 0.5) / remainder.width, (j + 0.5) / remainder.height});
+            const glm::dvec3 direction =
+                environmentDirection({(i + 0.5) / remainder.width, (j + 0.5) / remainder.height});
             source.bright.push_back({.direction = glm::vec4(glm::vec3(direction), 0.0f),
                                      .power = glm::vec4(glm::vec3(glm::dvec3(texel - kept) * solidAngle), 0.0f)});
             texel = kept;
