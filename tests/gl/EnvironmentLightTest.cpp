@@ -162,6 +162,21 @@ TEST_F(EnvironmentLightTest, SunMapLevelsWithinThreePercentAtEveryTexel)
     }
 }
 
+TEST_F(EnvironmentLightTest, SunNearTheZenithWithinThreePercentAtThePoles)
+{
+    // A noon sun, 1.5° from the pole, in the narrow texels of the first row but one: every texel
+    // of the rows at the poles, and every fourth of the others.
+    const glm::dvec3 sun = environmentDirection({0.3, 1.5 / 180.0});
+    const EnvironmentImage map = test::sunMap(128, sun);
+    const test::EnvironmentTexelSum reference(map);
+    const std::vector<std::vector<float>> levels = prefilteredLevels(map);
+    for (int level = 0; level < EnvironmentLight::kRadianceLevels; ++level) {
+        const double worst = worstOfLevel(reference, levels[static_cast<std::size_t>(level)], level,
+                                          environmentLevelRoughness(level), 4, 0.03, 0.0);
+        EXPECT_LE(worst, 1.0) << "level " << level;
+    }
+}
+
 TEST_F(EnvironmentLightTest, SplitKeepsThePowerAndBoundsTheBrightTexels)
 {
     const EnvironmentImage map = test::sunMap(128);

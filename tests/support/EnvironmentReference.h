@@ -61,7 +61,8 @@ private:
 // Issue 48's map: a sky of about 1 (bluer and brighter towards the zenith) over a ground of about
 // 0.4, and a sun 0.6° across of radiance 20,000 at kSunDirection, 55° up. Each texel holds the
 // mean over its solid angle (the sun's share by 16x16 points spread evenly in u and cos θ), so a
-// sun narrower than a texel is a texel of its power, as in a file of that size. `height` rows.
+// sun narrower than a texel is a texel of its power, as in a file of that size. `height` rows;
+// the sun elsewhere with `sun` (unit).
 inline const glm::dvec3 kSunDirection = glm::normalize(glm::dvec3(0.35, 0.82, 0.45));
 inline constexpr double kSunRadiance = 20000.0;
 inline constexpr double kSunDiameterDegrees = 0.6;
@@ -73,7 +74,7 @@ inline glm::dvec3 sunMapSky(const glm::dvec3& d)
     return glm::dvec3(0.75, 0.85, 1.0) + glm::dvec3(0.15, 0.2, 0.35) * d.y;
 }
 
-inline EnvironmentImage sunMap(int height)
+inline EnvironmentImage sunMap(int height, const glm::dvec3& sun = kSunDirection)
 {
     constexpr int kPoints = 16;
     const double sunCos = std::cos(kSunDiameterDegrees / 2.0 * std::numbers::pi / 180.0);
@@ -88,14 +89,14 @@ inline EnvironmentImage sunMap(int height)
         for (int i = 0; i < map.width; ++i) {
             const glm::dvec3 centre = environmentDirection({(i + 0.5) / map.width, (j + 0.5) / height});
             glm::dvec3 radiance = sunMapSky(centre);
-            if (glm::dot(centre, kSunDirection) > nearCos) {
+            if (glm::dot(centre, sun) > nearCos) {
                 int inside = 0;
                 for (int a = 0; a < kPoints; ++a)
                     for (int b = 0; b < kPoints; ++b) {
                         const double cosTheta = cosTop + (cosBottom - cosTop) * (b + 0.5) / kPoints;
                         const double v = std::acos(std::clamp(cosTheta, -1.0, 1.0)) / std::numbers::pi;
                         const glm::dvec3 d = environmentDirection({(i + (a + 0.5) / kPoints) / map.width, v});
-                        inside += glm::dot(d, kSunDirection) > sunCos ? 1 : 0;
+                        inside += glm::dot(d, sun) > sunCos ? 1 : 0;
                     }
                 radiance += glm::dvec3(kSunRadiance * inside / (kPoints * kPoints));
             }
