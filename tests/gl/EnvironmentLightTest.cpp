@@ -64,7 +64,7 @@ EnvironmentImage smoothMap()
 }
 
 class EnvironmentLightTest : public GlContextTest {
-protected:
+public:
     // Each level of the chain prefiltered from `map`, as RGBA floats, rows from v = 0.
     static std::vector<std::vector<float>> prefilteredLevels(const EnvironmentImage& map)
     {
@@ -147,6 +147,20 @@ TEST_F(EnvironmentLightTest, LevelOfTheWrongRoughnessFallsOutside)
     }
 }
 
+// Every level of `map` within 3% of the reference at every `step`-th texel and every texel of
+// the poles' rows.
+void expectLevelsWithinThreePercent(const EnvironmentImage& map, int step)
+{
+    const test::EnvironmentTexelSum reference(map);
+    const std::vector<std::vector<float>> levels = EnvironmentLightTest::prefilteredLevels(map);
+    for (int level = 0; level < EnvironmentLight::kRadianceLevels; ++level) {
+        const double worst =
+            EnvironmentLightTest::worstOfLevel(reference, levels[static_cast<std::size_t>(level)], level,
+                                               environmentLevelRoughness(level), step, 0.03, 0.0);
+        EXPECT_LE(worst, 1.0) << "level " << level;
+    }
+}
+
 TEST_F(EnvironmentLightTest, SunMapLevelsWithinThreePercentAtEveryTexel)
 {
     const EnvironmentImage map = test::sunMap(128);
@@ -155,28 +169,14 @@ TEST_F(EnvironmentLightTest, SunMapLevelsWithinThreePercentAtEveryTexel)
     for (const glm::vec3& texel : map.radiance)
         brightest = std::max(brightest, texel.r);
     EXPECT_GT(brightest, 1000.0f);
-    const test::EnvironmentTexelSum reference(map);
-    const std::vector<std::vector<float>> levels = prefilteredLevels(map);
-    for (int level = 0; level < EnvironmentLight::kRadianceLevels; ++level) {
-        const double worst = worstOfLevel(reference, levels[static_cast<std::size_t>(level)], level,
-                                          environmentLevelRoughness(level), 1, 0.03, 0.0);
-        EXPECT_LE(worst, 1.0) << "level " << level;
-    }
+    expectLevelsWithinThreePercent(map, 1);
 }
 
 TEST_F(EnvironmentLightTest, SunNearTheZenithWithinThreePercentAtThePoles)
 {
     // A noon sun, 1.5° from the pole, in the narrow texels of the first row but one: every texel
     // of the rows at the poles, and every fourth of the others.
-    const glm::dvec3 sun = environmentDirection({0.3, 1.5 / 180.0});
-    const EnvironmentImage map = test::sunMap(128, sun);
-    const test::EnvironmentTexelSum reference(map);
-    const std::vector<std::vector<float>> levels = prefilteredLevels(map);
-    for (int level = 0; level < EnvironmentLight::kRadianceLevels; ++level) {
-        const double worst = worstOfLevel(reference, levels[static_cast<std::size_t>(level)], level,
-                                          environmentLevelRoughness(level), 4, 0.03, 0.0);
-        EXPECT_LE(worst, 1.0) << "level " << level;
-    }
+    expectLevelsWithinThreePercent(test::sunMap(128, environmentDirection({0.3, 1.5 / 180.0})), 4);
 }
 
 TEST_F(EnvironmentLightTest, SplitKeepsThePowerAndBoundsTheBrightTexels)
