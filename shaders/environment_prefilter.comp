@@ -1,12 +1,14 @@
 #version 450 core
 // One level of the environment's prefiltered radiance (render/environment/EnvironmentLight.h):
 // the map convolved with the GGX lobe of `roughness` about each texel's direction, with N = V = R
-// (the split-sum approximation's assumption, Karis 2013), importance-sampled with filtered
-// importance sampling (Křivánek and Colbert 2008): each of `sampleCount` samples reads the
-// map's mipmap whose texels cover the solid angle the sample stands for, so that a few samples
-// see the whole lobe without the noise of point samples. Weighted by N·L as Karis's. Roughness 0
-// is the map itself, resampled. tests/gl/EnvironmentLightTest.cpp checks the levels against the
-// integral summed over the map's texels on the CPU.
+// (the split-sum approximation's assumption, Karis 2013), weighted by N·L as Karis's, in two
+// parts (render/environment/PrefilterSource.h). The map's remainder below a threshold is
+// importance-sampled with filtered importance sampling (Křivánek and Colbert 2008): each of
+// `sampleCount` samples reads the remainder's mipmap whose texels cover the solid angle the
+// sample stands for, so that a few samples see the whole lobe without the noise of point
+// samples. The light taken off the brightest texels (a sun) is summed texel by texel, exactly:
+// Σ power · D(h) (N·l) / W(α), W the lobe's integral. tests/gl/EnvironmentLightTest.cpp checks
+// the levels against the integral summed over the map's texels on the CPU.
 #include "lib/bindings.glsl"
 #include "lib/environment.glsl"
 
@@ -16,6 +18,15 @@ layout(binding = ENVIRONMENT_LEVEL_IMAGE_UNIT, ENVIRONMENT_FORMAT) uniform write
 layout(location = 0) uniform float roughness;
 // The level's samples per texel, at most MAX_PREFILTER_SAMPLES (EnvironmentLight::prefilterSamples).
 layout(location = 1) uniform uint sampleCount;
+// How many bright texels there are, at most MAX_BRIGHT_TEXELS, and 1 / W(α) (ggxLobeIntegral).
+layout(location = 2) uniform uint brightTexelCount;
+layout(location = 3) uniform float inverseLobeIntegral;
+
+// std430 layout of render/environment/PrefilterSource.h: BrightTexel, pairs of direction (xyz)
+// and power (rgb: radiance above the threshold times the texel's solid angle).
+layout(std430, binding = ENVIRONMENT_BRIGHT_TEXELS_BUFFER_BINDING) readonly buffer BrightTexels {
+    vec4 brightTexels[];
+};
 
 // The i-th of `count` points of the Hammersley set on the unit square.
 vec2 hammersley(uint i, uint count)
@@ -31,11 +42,6 @@ void main()
         return;
     vec2 uv = (vec2(texel) + 0.5) / vec2(size);
     vec2 sourceSize = vec2(textureSize(environmentSource, 0));
-    if (roughness == 0.0) {
-        // The map's own texels at this level's size: its mipmap of the same width.
-        imageStore(environmentLevel, texel, textureLod(environmentSource, uv, max(log2(sourceSize.x / float(size.x)), 0.0)));
-        return;
-    }
     vec3 N = environmentDirection(uv);
     vec3 up = abs(N.y) < 0.999 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
     vec3 T = normalize(cross(up, N));
@@ -69,5 +75,16 @@ void main()
         sum += NdotL > 0.0 ? radiance * NdotL : vec3(0.0);
         weight += max(NdotL, 0.0);
     }
-    imageStore(environmentLevel, texel, vec4(sum / weight, 1.0));
+    // The bright texels, each at its centre as the CPU's brute-force sum takes it. With V = N,
+    // (N·h)² = (1 + N·l) / 2.
+    vec3 bright = vec3(0.0);
+    uint brightCount = min(brightTexelCount, uint(MAX_BRIGHT_TEXELS));  // llvmpipe's loops must be bounded
+    for (uint k = 0u; k < brightCount; ++k) {
+        vec3 l = brightTexels[2u * k].xyz;
+        float NdotL = dot(N, l);
+        float t = (0.5 + 0.5 * NdotL) * (a2 - 1.0) + 1.0;
+        float D = a2 / (kEnvironmentPi * t * t);
+        bright += NdotL > 0.0 ? brightTexels[2u * k + 1u].rgb * (D * NdotL) : vec3(0.0);
+    }
+    imageStore(environmentLevel, texel, vec4(sum / weight + bright * inverseLobeIntegral, 1.0));
 }

@@ -96,6 +96,7 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
                       .driver = options.driver.overrides,
                       .culling = culling};
     Renderer renderer(scene, lights, desc);
+    printWarnings(renderer.gpuScene().environment().warnings());
     Technique& technique = renderer.technique(techniqueName);
     // Under PassTiming::Wall each frame is rendered and waited for; otherwise frames are issued
     // back to back, as an application issues them, and their samples arrive a frame or two

@@ -398,10 +398,15 @@ std::string cameraCommandLine(const Camera& camera)
 Scene loadSceneForCommand(const std::string& path, bool strict, const CameraOptions& camera)
 {
     Scene scene = path.empty() ? makeDefaultScene() : loadSceneFile(path, {.strict = strict});
-    for (const std::string& warning : scene.warnings)
-        std::fprintf(stderr, "manylights: warning: %s\n", printableLine(warning).c_str());
+    printWarnings(scene.warnings);
     scene.camera = chooseCamera(scene, camera);
     return scene;
+}
+
+void printWarnings(const std::vector<std::string>& warnings)
+{
+    for (const std::string& warning : warnings)
+        std::fprintf(stderr, "manylights: warning: %s\n", printableLine(warning).c_str());
 }
 
 bool sameFile(const std::string& a, const std::string& b)

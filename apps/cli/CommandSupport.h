@@ -185,6 +185,9 @@ DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options)
 // camera options applied; every problem the loading forgave is printed on stderr as
 // "manylights: warning: ..." (one line).
 Scene loadSceneForCommand(const std::string& path, bool strict, const CameraOptions& camera = {});
+// Prints each of `warnings` on stderr as "manylights: warning: ..." (one line each): the
+// scene's, and what the renderer's loading forgave (EnvironmentLight::warnings).
+void printWarnings(const std::vector<std::string>& warnings);
 
 // Whether two output paths name one file (out.png and ./out.png; a link and its target).
 bool sameFile(const std::string& a, const std::string& b);

@@ -230,6 +230,7 @@ void runRender(const RenderOptions& options)
                        .supersample = options.supersample,
                        .driver = options.driver.overrides,
                        .culling = cullingTuningFromEnvironment()});
+    printWarnings(renderer.gpuScene().environment().warnings());
     renderer.setTime(options.time);
     Technique& technique = renderer.technique(options.technique);
     // The scene on the GPU (lights, meshes, textures, their upload) and the technique's programs.

@@ -105,6 +105,7 @@ Viewer::Viewer(const ViewOptions& options)
     display_ = chooseDisplay(scene_, options.display);
     adaptedExposure_ = display_.exposure;
     renderer_ = std::make_unique<Renderer>(scene_, lights_, rendererDesc());
+    printWarnings(renderer_->gpuScene().environment().warnings());
     axesProgram_ = gl::Program("axes", {{GL_VERTEX_SHADER, "axes.vert"}, {GL_FRAGMENT_SHADER, "axes.frag"}});
 
     GLFWwindow* window = window_.window();

@@ -46,24 +46,29 @@ struct StbiFree {
 
 EnvironmentImage decodeHdr(const std::string& path, int maxTextureSize)
 {
-    const std::vector<unsigned char> bytes = readInputBytes(path, "environment map");
-    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        fail(path, "environment map file too large");
-    const auto* data = bytes.data();
-    const int length = static_cast<int>(bytes.size());
-    // stb_image would read a PNG or JPEG as radiance too, through a gamma curve: only a
-    // Radiance file holds radiance.
-    if (!stbi_is_hdr_from_memory(data, length))
-        fail(path, "not a Radiance .hdr image");
+    std::unique_ptr<float, StbiFree> pixels;
     int width = 0;
     int height = 0;
-    int channels = 0;
-    if (!stbi_info_from_memory(data, length, &width, &height, &channels))
-        fail(path, std::string("not an image stb_image can read (") + stbi_failure_reason() + ")");
-    checkSize(path, width, height, maxTextureSize);
-    const std::unique_ptr<float, StbiFree> pixels(stbi_loadf_from_memory(data, length, &width, &height, &channels, 3));
-    if (!pixels)
-        fail(path, std::string("broken Radiance .hdr image (") + stbi_failure_reason() + ")");
+    {
+        // The file's bytes only while stb_image decodes them: with the decoded pixels and their
+        // copy below, a large map would otherwise hold three copies at once.
+        const std::vector<unsigned char> bytes = readInputBytes(path, "environment map");
+        if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+            fail(path, "environment map file too large");
+        const auto* data = bytes.data();
+        const int length = static_cast<int>(bytes.size());
+        // stb_image would read a PNG or JPEG as radiance too, through a gamma curve: only a
+        // Radiance file holds radiance.
+        if (!stbi_is_hdr_from_memory(data, length))
+            fail(path, "not a Radiance .hdr image");
+        int channels = 0;
+        if (!stbi_info_from_memory(data, length, &width, &height, &channels))
+            fail(path, std::string("not an image stb_image can read (") + stbi_failure_reason() + ")");
+        checkSize(path, width, height, maxTextureSize);
+        pixels.reset(stbi_loadf_from_memory(data, length, &width, &height, &channels, 3));
+        if (!pixels)
+            fail(path, std::string("broken Radiance .hdr image (") + stbi_failure_reason() + ")");
+    }
     EnvironmentImage map{.width = width, .height = height, .radiance = {}};
     map.radiance.resize(static_cast<std::size_t>(width) * height);
     // stb_image's rows run top to bottom, as the map's.

@@ -9,11 +9,11 @@
 
 namespace manylights {
 
-// The height of the built-in studio map (its width twice that): as large as the prefiltered
-// radiance's first level (render/environment/EnvironmentLight.h), which it then is texel for texel.
+// The height of the built-in studio map (its width twice that): its soft-edged lights need no
+// more.
 inline constexpr int kStudioEnvironmentHeight = 256;
-// The largest map side accepted: larger maps are downsampled by the prefiltered chain anyway,
-// and a 16384x8192 float map already takes 2 GiB to hold.
+// The largest map side accepted: a 16384x8192 float map already takes 1.5 GiB to hold, and is
+// shown at half that (EnvironmentLight::kMaxMapWidth).
 inline constexpr int kMaxEnvironmentWidth = 16384;
 
 // The map `map` names (Environment::map: a path, or a built-in's name). Throws

@@ -49,6 +49,7 @@ const int GLOBAL_LIGHT_CANDIDATES_BUFFER_BINDING = 30;  // cluster_pairs.comp, g
 const int GLOBAL_LIGHTS_BUFFER_BINDING = 31;          // lib/cluster_lists.glsl; global_light_order.comp
 // Shares PAIR_LIGHTS_OUT's number: only pair_sort.comp uses that.
 const int GLOBAL_LIGHT_RECORDS_BUFFER_BINDING = 17;   // lib/cluster_lists.glsl; global_light_order.comp
+const int ENVIRONMENT_BRIGHT_TEXELS_BUFFER_BINDING = 0;  // environment_prefilter.comp BrightTexels
 
 // Texture units. 0-4 are the G-buffer's targets (render/frame/GBuffer.h: each target's unit).
 const int GBUFFER_POSITION_UNIT = 0;  // lib/gbuffer_position.glsl gPositionShininess (seed layout)
@@ -80,11 +81,12 @@ const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO fa
 const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 // Shares RAW_OCCLUSION's number, within the 16 units GL promises: only ssao_blur.comp uses that.
 const int ENVIRONMENT_RADIANCE_UNIT = 14;  // lib/environment.glsl: the prefiltered radiance
-const int ENVIRONMENT_SOURCE_UNIT = 0;     // environment_prefilter.comp: the map with its mipmaps
+const int ENVIRONMENT_SOURCE_UNIT = 0;     // environment_prefilter.comp: the map's remainder with its mipmaps
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
 // The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/culling/LightBatches.h checks).
 const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/culling/LightBatches.h: light texels)
 const int OCCLUSION_MAP_UNIT = 17;  // lib/material.glsl: glTF occlusionTexture
+const int ENVIRONMENT_MAP_UNIT = 18;  // lib/environment.glsl: the map itself, level 0 (issue 48)
 
 // Image units.
 const int LIGHT_EVALUATIONS_IMAGE_UNIT = 0;  // lib/lighting.glsl (--count-work)

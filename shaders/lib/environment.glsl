@@ -10,13 +10,15 @@ layout(std140, binding = ENVIRONMENT_BLOCK_BINDING) uniform EnvironmentLight {
     // rgb: E(n)/π as spherical harmonics of order 2 (scene/Environment.h irradianceSh), times the
     // intensity: c0 + c1 y + c2 z + c3 x + c4 xy + c5 yz + c6 (3z² − 1) + c7 xz + c8 (x² − y²).
     vec4 irradianceSh[9];
-    // x, y: cos and sin of the rotation; z: the intensity; w: the prefiltered chain's last level.
+    // x, y: cos and sin of the rotation; z: the intensity; w: the prefiltered chain's levels, n.
     vec4 lookup;
 } environment;
 
-// The prefiltered radiance: level l holds the map convolved with the GGX lobe of roughness
-// l / last level (level 0 the map itself), each level half the one before.
-layout(binding = ENVIRONMENT_RADIANCE_UNIT) uniform sampler2D environmentRadiance;
+// Level 0: the map itself, at its own resolution up to EnvironmentLight::kMaxMapWidth (issue 48).
+layout(binding = ENVIRONMENT_MAP_UNIT) uniform sampler2D environmentMap;
+// The prefiltered radiance, apart from the map: its layer k holds the map convolved with the GGX
+// lobe of roughness (k + 1) / n, at mipmap level (k + 1) / 2 (EnvironmentLight::radianceMip).
+layout(binding = ENVIRONMENT_RADIANCE_UNIT) uniform sampler2DArray environmentRadiance;
 
 const float kEnvironmentPi = 3.14159265358979;
 
@@ -71,10 +73,28 @@ vec3 environmentIrradianceOverPi(vec3 n)
            environment.irradianceSh[8].rgb * (d.x * d.x - d.y * d.y);
 }
 
+// The map's radiance in direction d, times the intensity: what the background shows.
+vec3 environmentShown(vec3 d)
+{
+    return textureLod(environmentMap, environmentUv(environmentLookup(d)), 0.0).rgb * environment.lookup.z;
+}
+
+// Level `level` (1 to n, whole) at (u, v): the prefiltered radiance's layer level − 1, at its mipmap level.
+vec3 environmentLevelRadiance(vec2 uv, float level)
+{
+    float layer = level - 1.0;
+    float mip = min(floor((layer + 1.0) * 0.5), float(textureQueryLevels(environmentRadiance) - 1));
+    return textureLod(environmentRadiance, vec3(uv, layer), mip).rgb;
+}
+
 // The radiance prefiltered for `roughness` in direction d, times the intensity: level
-// roughness · last level of the chain, between two levels linearly.
+// roughness · n counting the map as level 0, between the two nearest levels linearly.
 vec3 environmentPrefiltered(vec3 d, float roughness)
 {
     float level = clamp(roughness, 0.0, 1.0) * environment.lookup.w;
-    return textureLod(environmentRadiance, environmentUv(environmentLookup(d)), level).rgb * environment.lookup.z;
+    vec2 uv = environmentUv(environmentLookup(d));
+    float lower = floor(level);
+    vec3 below = lower < 1.0 ? textureLod(environmentMap, uv, 0.0).rgb : environmentLevelRadiance(uv, lower);
+    vec3 above = environmentLevelRadiance(uv, clamp(lower + 1.0, 1.0, environment.lookup.w));
+    return mix(below, above, level - lower) * environment.lookup.z;
 }
