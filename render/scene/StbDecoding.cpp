@@ -95,7 +95,8 @@ bool pngEndsWhole(std::span<const unsigned char> bytes)
 
 bool isPng(std::span<const unsigned char> bytes)
 {
-    return bytes.size() >= kPngSignature.size() && std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin());
+    return bytes.size() >= kPngSignature.size() &&
+           std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin());
 }
 
 enum class DataEnd { Whole, Truncated, Broken };
@@ -199,10 +200,10 @@ StbImage decodeWithStb(const std::string& name, std::span<const unsigned char> b
     OverrunReader data(bytes);
     StbImage image;
     image.pixels.reset(samples == StbSamples::Floats
-                           ? static_cast<void*>(stbi_loadf_from_callbacks(&kOverrunCallbacks, &data, &width,
-                                                                          &height, &channels, components))
-                           : static_cast<void*>(stbi_load_from_callbacks(&kOverrunCallbacks, &data, &width,
-                                                                         &height, &channels, components)));
+                           ? static_cast<void*>(stbi_loadf_from_callbacks(&kOverrunCallbacks, &data, &width, &height,
+                                                                          &channels, components))
+                           : static_cast<void*>(stbi_load_from_callbacks(&kOverrunCallbacks, &data, &width, &height,
+                                                                         &channels, components)));
     if (data.overran())
         fail(name, "truncated " + kind + ": the file ends before its " + size + " texels do");
     if (!image.pixels)

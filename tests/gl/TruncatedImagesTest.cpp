@@ -115,8 +115,8 @@ TEST(TruncatedImages, TexturesCutAnywhereAreRefusedAsTruncated)
         EXPECT_EQ(decoded.height, kHeight) << format.name;
         for (const std::size_t cut : cutPoints(whole.size())) {
             const std::string part = whole.substr(0, cut);
-            expectTruncatedError([&] { decodeImageMemory(format.name, bytesOf(part), kMaxTextureSide); },
-                                 format.name, cut);
+            expectTruncatedError([&] { decodeImageMemory(format.name, bytesOf(part), kMaxTextureSide); }, format.name,
+                                 cut);
         }
     }
 }
