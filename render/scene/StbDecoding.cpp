@@ -38,7 +38,8 @@ public:
         const bool isRefill = data == reader.refillBuffer_;
         if (wanted > 0 && (given == 0 || (!isRefill && given < wanted)))
             reader.overran_ = true;
-        std::memcpy(data, reader.bytes_.data() + reader.position_, given);
+        if (given > 0)  // an empty file's data() may be null, which memcpy may not be given
+            std::memcpy(data, reader.bytes_.data() + reader.position_, given);
         reader.position_ += given;
         return static_cast<int>(given);
     }
