@@ -121,16 +121,25 @@ TEST(TruncatedImages, TexturesCutAnywhereAreRefusedAsTruncated)
     }
 }
 
-TEST(TruncatedImages, PngWithBytesAfterItsEndChunkIsAccepted)
+TEST(TruncatedImages, BytesAfterTheEndMarkerAreAccepted)
 {
-    // libpng and browsers ignore what follows IEND: so does the loader.
+    // libpng ignores what follows a PNG's IEND, and JPEG readers what follows the end-of-image
+    // marker (cameras append data there): so does the loader.
     const std::vector<unsigned char> rgb = textureTexels();
-    const std::string whole = encodedWithStb(
-        [&](std::string* out) { return stbi_write_png_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 0); });
-    const std::string padded = whole + "trailing bytes";
-    const DecodedImage decoded = decodeImageMemory(
-        "padded.png", std::span(reinterpret_cast<const unsigned char*>(padded.data()), padded.size()), kMaxTextureSide);
-    EXPECT_EQ(decoded.width, kWidth);
+    const std::vector<TextureFormat> formats = {
+        {"padded.png",
+         [&](std::string* out) { return stbi_write_png_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 0); }},
+        {"padded.jpg",
+         [&](std::string* out) { return stbi_write_jpg_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 90); }},
+    };
+    for (const TextureFormat& format : formats) {
+        const std::string padded = encodedWithStb(format.write) + "trailing bytes";
+        const DecodedImage decoded = decodeImageMemory(
+            format.name, std::span(reinterpret_cast<const unsigned char*>(padded.data()), padded.size()),
+            kMaxTextureSide);
+        EXPECT_EQ(decoded.width, kWidth) << format.name;
+        EXPECT_EQ(decoded.height, kHeight) << format.name;
+    }
 }
 
 class TruncatedEnvironmentMaps : public ::testing::Test {
