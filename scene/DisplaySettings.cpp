@@ -5,11 +5,12 @@
 namespace manylights {
 
 namespace {
-constexpr EnumNames<ToneCurve, 4> kToneCurves{{
+constexpr EnumNames<ToneCurve, 5> kToneCurves{{
     {ToneCurve::None, "none"},
     {ToneCurve::Reinhard, "reinhard"},
     {ToneCurve::Aces, "aces"},
     {ToneCurve::Agx, "agx"},
+    {ToneCurve::PbrNeutral, "pbr-neutral"},
 }};
 constexpr EnumNames<Antialiasing, 2> kAntialiasing{{
     {Antialiasing::None, "none"},

@@ -2,9 +2,9 @@
 // exposure, a tone curve, sRGB encoding and anti-aliasing, applied after lighting by one
 // display pass (render/effects/DisplayPass.h) that every technique shares. The scene file's
 // `display` block sets them; the command line overrides it. The defaults below are the one
-// place the default look is set: AgX, then sRGB (SPEC.md §3, since 2026-11-25), so that a PNG
-// and the window look right on a screen; `--tonemap none --no-srgb` (`--classic`) gives the
-// classic round(255 · clamp(colour, 0, 1)).
+// place the default look is set: a tone curve, then sRGB (SPEC.md §3, since 2026-11-25), so that
+// a PNG and the window look right on a screen; the curve is PBR Neutral since issue 48; `--tonemap none --no-srgb`
+// (`--classic`) gives the classic round(255 · clamp(colour, 0, 1)).
 #pragma once
 
 #include <optional>
@@ -15,10 +15,11 @@
 namespace manylights {
 
 enum class ToneCurve {
-    None,      // the colour as it is (clamped when quantised)
-    Reinhard,  // x / (1 + x) per channel (Reinhard et al., SIGGRAPH 2002)
-    Aces,      // Narkowicz's fit of the ACES filmic curve (2015)
-    Agx,       // Sobotka's AgX, as Wrensch's minimal fit (2023)
+    None,        // the colour as it is (clamped when quantised)
+    Reinhard,    // x / (1 + x) per channel (Reinhard et al., SIGGRAPH 2002)
+    Aces,        // Narkowicz's fit of the ACES filmic curve (2015)
+    Agx,         // Sobotka's AgX, as Wrensch's minimal fit (2023)
+    PbrNeutral,  // Khronos PBR Neutral (2024): base colours as authored, highlights compressed
 };
 
 enum class Antialiasing {
@@ -33,8 +34,8 @@ inline constexpr int kMaxSupersample = 8;
 
 struct DisplaySettings {
     float exposure = 0.0f;  // EV: the linear colour is multiplied by 2^exposure
-    // Blender's default view (docs/display.md: why AgX)
-    ToneCurve toneCurve = ToneCurve::Agx;
+    // Base colours as authored, hot spots unclipped, measured (docs/display.md: why PBR Neutral)
+    ToneCurve toneCurve = ToneCurve::PbrNeutral;
     bool srgb = true;  // encode 8-bit outputs with the sRGB curve (IEC 61966-2-1)
     Antialiasing antialiasing = Antialiasing::None;
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The cost of the display path (docs/display.md): the default scene at 1280x720 with
 # `clustered`, timed by bench in the classic look (`--classic`: no display pass runs), in the
-# default look (AgX and sRGB), and with FXAA as well; prints each pass's median wall time,
+# default look (PBR Neutral and sRGB), with FXAA as well, and under AgX (the default until
+# issue 48); prints each pass's median wall time,
 # its share of the frame, and both passes' share together. Prints the machine and its load
-# first; read the figures as ratios within one run. REPEAT=N runs the three N times.
+# first; read the figures as ratios within one run. REPEAT=N runs the four N times.
 #
 #   scripts/measure-display.sh                 SIZE=1920x1080 TECHNIQUE=deferred scripts/measure-display.sh
 set -euo pipefail
@@ -22,11 +23,12 @@ for ((i = 0; i < ${REPEAT:-1}; ++i)); do
 run classic --classic
 run default
 run fxaa --aa fxaa
+run agx --tonemap agx
 python3 - "$technique" "$size" <<'PY'
 import csv, sys
 print(f"\n{sys.argv[1]}, default scene, {sys.argv[2]}: median ms (share of the frame)")
-for name, label in (("classic", "--classic (no pass runs)"), ("default", "default: AgX, sRGB"),
-                    ("fxaa", "default and --aa fxaa")):
+for name, label in (("classic", "--classic (no pass runs)"), ("default", "default: PBR Neutral, sRGB"),
+                    ("fxaa", "default and --aa fxaa"), ("agx", "--tonemap agx (sRGB)")):
     row = next(csv.DictReader(open(f"out/display-{name}.csv")))
     frame = float(row["frame_ms_median"])
     passes = {p.split(":")[0]: float(p.split(":")[1]) for p in row["passes"].split(";")}

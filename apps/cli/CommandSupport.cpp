@@ -316,7 +316,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& options)
         command
             .add_option_function<std::string>(
                 "--tonemap", [&options](const std::string& name) { options.toneCurve = parseToneCurve(name); },
-                "Tone curve of 8-bit outputs and the window (default: the scene's, else agx)")
+                "Tone curve of 8-bit outputs and the window (default: the scene's, else pbr-neutral)")
             ->check(CLI::IsMember(toneCurveNames()));
     CLI::Option* srgb = command.add_flag_callback(
         "--srgb", [&options] { options.srgb = true; },

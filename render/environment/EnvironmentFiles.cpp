@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <limits>
-#include <memory>
 
 // Debian's libstb ships stb_image compiled (-lstb): no STB_IMAGE_IMPLEMENTATION here.
 #include <stb/stb_image.h>
@@ -14,6 +12,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "render/output/ExrFile.h"
+#include "render/scene/StbDecoding.h"
 
 namespace manylights {
 
@@ -40,40 +39,25 @@ void checkSize(const std::string& path, int width, int height, int maxTextureSiz
                        std::to_string(maxWidth / 2) + " supported");
 }
 
-struct StbiFree {
-    void operator()(float* pixels) const { stbi_image_free(pixels); }
-};
-
 EnvironmentImage decodeHdr(const std::string& path, int maxTextureSize)
 {
-    std::unique_ptr<float, StbiFree> pixels;
-    int width = 0;
-    int height = 0;
-    {
-        // The file's bytes only while stb_image decodes them: with the decoded pixels and their
-        // copy below, a large map would otherwise hold three copies at once.
+    // The file's bytes only while stb_image decodes them: with the decoded pixels and their
+    // copy below, a large map would otherwise hold three copies at once.
+    const StbImage pixels = [&] {
         const std::vector<unsigned char> bytes = readInputBytes(path, "environment map");
-        if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-            fail(path, "environment map file too large");
-        const auto* data = bytes.data();
-        const int length = static_cast<int>(bytes.size());
         // stb_image would read a PNG or JPEG as radiance too, through a gamma curve: only a
-        // Radiance file holds radiance.
-        if (!stbi_is_hdr_from_memory(data, length))
+        // Radiance file holds radiance. (readInputBytes refuses files beyond an int's range.)
+        if (!stbi_is_hdr_from_memory(bytes.data(), static_cast<int>(bytes.size())))
             fail(path, "not a Radiance .hdr image");
-        int channels = 0;
-        if (!stbi_info_from_memory(data, length, &width, &height, &channels))
-            fail(path, std::string("not an image stb_image can read (") + stbi_failure_reason() + ")");
-        checkSize(path, width, height, maxTextureSize);
-        pixels.reset(stbi_loadf_from_memory(data, length, &width, &height, &channels, 3));
-        if (!pixels)
-            fail(path, std::string("broken Radiance .hdr image (") + stbi_failure_reason() + ")");
-    }
-    EnvironmentImage map{.width = width, .height = height, .radiance = {}};
-    map.radiance.resize(static_cast<std::size_t>(width) * height);
+        return decodeWithStb(path, bytes, "Radiance .hdr image", StbSamples::Floats, 3,
+                             [&](int width, int height) { checkSize(path, width, height, maxTextureSize); });
+    }();
+    EnvironmentImage map{.width = pixels.width, .height = pixels.height, .radiance = {}};
+    map.radiance.resize(static_cast<std::size_t>(map.width) * map.height);
     // stb_image's rows run top to bottom, as the map's.
+    const float* rgb = pixels.floats();
     for (std::size_t i = 0; i < map.radiance.size(); ++i)
-        map.radiance[i] = glm::vec3(pixels.get()[i * 3], pixels.get()[i * 3 + 1], pixels.get()[i * 3 + 2]);
+        map.radiance[i] = glm::vec3(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]);
     return map;
 }
 

@@ -108,13 +108,23 @@ Image readExrLayer(const std::filesystem::path& path, const std::string& layer,
                            static_cast<std::ptrdiff_t>(window.min.x * kPixelBytes + window.min.y * rowBytes);
             frame.insert(name, Imf::Slice(Imf::FLOAT, origin, kPixelBytes, rowBytes));
         }
+        // A scan line whose offset is missing from the file's table (a file cut inside it,
+        // which OpenEXR reads past by rebuilding the table) would be read as nothing.
+        if (!file.isComplete())
+            throw Error(path.string() + ": truncated EXR image: some of its scan lines are missing");
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
         return image;
     } catch (const Error&) {
         throw;
     } catch (const std::exception& error) {
-        throw Error(path.string() + ": cannot read the EXR image: " + error.what());
+        // OpenEXR's words when a read runs past the end of the file (Imf::StdIFStream): the
+        // file was cut short, which is what a user needs to hear first.
+        const std::string what = error.what();
+        if (what.find("Early end of file") != std::string::npos)
+            throw Error(path.string() + ": truncated EXR image: the file ends before its data does (OpenEXR: " + what +
+                        ")");
+        throw Error(path.string() + ": cannot read the EXR image: " + what);
     }
 }
 

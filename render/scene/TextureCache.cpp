@@ -3,23 +3,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
-#include <memory>
-
-// Debian's libstb ships stb_image compiled (-lstb): no STB_IMAGE_IMPLEMENTATION here.
-#include <stb/stb_image.h>
 
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "gl/Driver.h"
+#include "render/scene/StbDecoding.h"
 
 namespace manylights {
 
 namespace {
-
-struct StbiFree {
-    void operator()(stbi_uc* pixels) const { stbi_image_free(pixels); }
-};
 
 [[noreturn]] void fail(const std::string& path, const std::string& problem) { throw Error(path + ": " + problem); }
 
@@ -40,31 +32,22 @@ DecodedImage decodeImageFile(const std::string& path, int maxSide)
 
 DecodedImage decodeImageMemory(const std::string& name, std::span<const unsigned char> bytes, int maxSide)
 {
-    // stb_image takes an int length: anything larger is no texture we would accept anyway.
-    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        fail(name, "texture file too large");
-    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-    const int length = static_cast<int>(bytes.size());
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    // The header first: an absurd size is refused before anything is allocated for it.
-    if (!stbi_info_from_memory(data, length, &width, &height, &channels))
-        fail(name, std::string("not a texture image stb_image can read (") + stbi_failure_reason() + ")");
-    if (width < 1 || height < 1 || width > maxSide || height > maxSide)
-        fail(name, "texture is " + std::to_string(width) + "x" + std::to_string(height) + ", beyond the largest " +
-                       std::to_string(maxSide) + "x" + std::to_string(maxSide) + " supported");
-    const std::unique_ptr<stbi_uc, StbiFree> pixels(stbi_load_from_memory(data, length, &width, &height, &channels, 4));
-    if (!pixels)
-        fail(name, std::string("broken texture image (") + stbi_failure_reason() + ")");
+    const StbImage pixels =
+        decodeWithStb(name, bytes, "texture image", StbSamples::Bytes, 4, [&](int width, int height) {
+            if (width < 1 || height < 1 || width > maxSide || height > maxSide)
+                fail(name, "texture is " + std::to_string(width) + "x" + std::to_string(height) +
+                               ", beyond the largest " + std::to_string(maxSide) + "x" + std::to_string(maxSide) +
+                               " supported");
+        });
     DecodedImage image;
-    image.width = width;
-    image.height = height;
-    const std::size_t row = static_cast<std::size_t>(width) * 4;
-    image.rgba.resize(row * static_cast<std::size_t>(height));
+    image.width = pixels.width;
+    image.height = pixels.height;
+    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+    image.rgba.resize(row * static_cast<std::size_t>(image.height));
     // stb_image's rows run top to bottom, GL's bottom to top.
-    for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y)
-        std::copy_n(pixels.get() + row * y, row, image.rgba.data() + row * (static_cast<std::size_t>(height) - 1 - y));
+    for (std::size_t y = 0; y < static_cast<std::size_t>(image.height); ++y)
+        std::copy_n(pixels.bytes() + row * y, row,
+                    image.rgba.data() + row * (static_cast<std::size_t>(image.height) - 1 - y));
     return image;
 }
 

@@ -1,6 +1,6 @@
 // The display transform of docs/display.md: exposure, then a tone curve, then the sRGB
 // encoding, each on linear RGB. render/effects/DisplayPass.cpp compiles shaders/display.frag with
-// TONE_CURVE (0 none, 1 reinhard, 2 aces, 3 agx: scene/DisplaySettings.h's order) and
+// TONE_CURVE (0 none, 1 reinhard, 2 aces, 3 agx, 4 pbr-neutral: scene/DisplaySettings.h's order) and
 // SRGB_ENCODE as constants, so a frame pays only for the curve it uses.
 
 // Reinhard, Stark, Shirley and Ferwerda, "Photographic Tone Reproduction for Digital
@@ -47,6 +47,32 @@ vec3 agxCurve(vec3 x)
     return pow(agxEncoded(x), vec3(2.2));
 }
 
+// Khronos PBR Neutral (github.com/KhronosGroup/ToneMapping, PBR_Neutral, 2024), as its
+// specification states it. Below a peak channel of 0.76 the colour is only lowered by a small
+// offset (0.04, Fresnel's reflection at normal incidence that lifts every dielectric; below a
+// darkest channel of 0.08 the quadratic t - 6.25 t^2, which meets it with a level slope at
+// 0.08 and keeps black black), so base colours show as authored. Above it the peak is
+// compressed towards 1 by 1 - d^2 / (peak + d - 0.76), d = 0.24 (continuous in value and
+// slope at 0.76), every channel scaled alike so the hue holds, and the colour moved towards
+// the compressed grey by g = 1 - 1 / (0.15 (peak - compressed) + 1): only light far past
+// white loses its saturation.
+vec3 pbrNeutralCurve(vec3 colour)
+{
+    const float compressionStart = 0.8 - 0.04;
+    const float desaturation = 0.15;
+    const float headroom = 1.0 - compressionStart;
+    colour = max(colour, vec3(0.0));
+    float darkest = min(colour.r, min(colour.g, colour.b));
+    colour -= darkest < 0.08 ? darkest - 6.25 * darkest * darkest : 0.04;
+    float peak = max(colour.r, max(colour.g, colour.b));
+    if (peak < compressionStart)
+        return colour;
+    float compressedPeak = 1.0 - headroom * headroom / (peak + headroom - compressionStart);
+    colour *= compressedPeak / peak;
+    float towardsWhite = 1.0 - 1.0 / (desaturation * (peak - compressedPeak) + 1.0);
+    return mix(colour, vec3(compressedPeak), towardsWhite);
+}
+
 vec3 toneCurve(vec3 x)
 {
 #if TONE_CURVE == 1
@@ -55,6 +81,8 @@ vec3 toneCurve(vec3 x)
     return acesCurve(x);
 #elif TONE_CURVE == 3
     return agxCurve(x);
+#elif TONE_CURVE == 4
+    return pbrNeutralCurve(x);
 #else
     return x;
 #endif

@@ -1,15 +1,19 @@
-// The display pass (render/effects/DisplayPass.h) on textures of known values: each tone curve and
-// the sRGB encoding against the published formulas (typed here from the papers, not from
-// shaders/lib/display.glsl), the default settings as AgX then sRGB, the box filter of
-// supersampling against the CPU's, and FXAA on flat regions (unchanged) and on an analytic
-// edge (closer to the true coverage).
+// The display pass (render/effects/DisplayPass.h) on textures of known values: each tone curve
+// and the sRGB encoding against the published formulas (typed here from the papers, not from
+// shaders/lib/display.glsl; PBR Neutral on colours worked by hand), the default settings as PBR
+// Neutral then sRGB, AgX's fused sRGB step, the box filter of supersampling against the CPU's,
+// and FXAA on flat regions (unchanged) and on an analytic edge (closer to the true coverage).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "GlContextTest.h"
 #include "render/effects/DisplayPass.h"
@@ -18,6 +22,7 @@
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
 #include "tests/support/ImageComparison.h"
+#include "tests/support/PbrNeutral.h"
 
 namespace manylights {
 namespace {
@@ -157,17 +162,88 @@ double agx(double x)
 
 TEST_F(DisplayPassTest, AgxIsWrenschsMinimalFit) { expectCurve({.toneCurve = ToneCurve::Agx, .srgb = false}, agx); }
 
-TEST_F(DisplayPassTest, DefaultSettingsAreAgxThenSrgb)
+// Khronos PBR Neutral (2024) on colours, each worked by hand from the specification
+// (github.com/KhronosGroup/ToneMapping, PBR_Neutral): offset o = t − 6.25 t² for the darkest
+// channel t below 0.08, else 0.04; below a peak of 0.76 the colour minus o is the output;
+// above, n = 1 − 0.24² / (p − 0.52), every channel times n / p, then mixed towards n by
+// g = 1 − 1 / (0.15 (p − n) + 1). In 8-bit linear values (× 255):
+struct NeutralCase {
+    glm::vec3 input;
+    glm::dvec3 output;
+};
+const NeutralCase kNeutralCases[] = {
+    // Black stays black: t = 0, o = 0.
+    {{0.0f, 0.0f, 0.0f}, {0.0, 0.0, 0.0}},
+    // A dark grey: t = 0.05, o = 0.05 − 0.015625 = 0.034375, out 0.015625 = 6.25 t².
+    {{0.05f, 0.05f, 0.05f}, {0.015625, 0.015625, 0.015625}},
+    // Below the shoulder only the offset: (0.5, 0.3, 0.2) − 0.04.
+    {{0.5f, 0.3f, 0.2f}, {0.46, 0.26, 0.16}},
+    // The darkest channel in the toe: t = 0.04, o = 0.03, so (0.77, 0.37, 0.01) with p = 0.77:
+    // n = 1 − 0.0576 / 0.25 = 0.7696, scale 0.7696 / 0.77, g = 1 − 1 / 1.00006 = 6.0e-5.
+    {{0.8f, 0.4f, 0.04f}, {0.7696, 0.369832, 0.010040}},
+    // Just over the shoulder: (0.86, 0.56, 0.26), n = 1 − 0.0576 / 0.34 = 0.830588,
+    // scale 0.965800, g = 1 − 1 / 1.004412 = 0.004392.
+    {{0.9f, 0.6f, 0.3f}, {0.830588, 0.542121, 0.253653}},
+    // Bright: (3.96, 1.96, 0.96), n = 1 − 0.0576 / 3.44 = 0.983256, scale 0.248297,
+    // g = 1 − 1 / 1.446512 = 0.308682: (0.983256, 0.486662 + g · 0.496594, 0.238365 + g · 0.744891).
+    {{4.0f, 2.0f, 1.0f}, {0.983256, 0.639951, 0.468299}},
+    // Far past white, a saturated red whitens: (15.96, 0.96, 0.21), n = 0.996269,
+    // g = 1 − 1 / 3.244560 = 0.691792.
+    {{16.0f, 1.0f, 0.25f}, {0.996269, 0.707681, 0.693251}},
+    // 1.0 is not white: (0.96, ...), n = 1 − 0.0576 / 0.44 = 0.869091.
+    {{1.0f, 1.0f, 1.0f}, {0.869091, 0.869091, 0.869091}},
+};
+
+TEST_F(DisplayPassTest, PbrNeutralIsKhronossSpecification)
 {
-    // The default look (SPEC.md §3 since 2026-11-25): every input of kInputs through AgX,
-    // then the sRGB encoding, within the same 0.75 level as each curve alone.
-    expectCurve({}, [](double x) { return srgbEncode(agx(x)); });
-    expectCurve({.exposure = -1.0f}, [](double x) { return srgbEncode(agx(0.5 * x)); });
+    Image row{static_cast<int>(std::size(kNeutralCases)), 1, {}};
+    for (const NeutralCase& c : kNeutralCases)
+        row.rgb.insert(row.rgb.end(), {c.input.r, c.input.g, c.input.b});
+    // Linear 8-bit values, then sRGB-encoded ones (finer in the darks): the formula's value
+    // quantised, within half a level plus 0.25 for the GPU's arithmetic, as expectCurve.
+    for (const bool srgb : {false, true}) {
+        const std::vector<unsigned char> out = runDisplay(row, {.toneCurve = ToneCurve::PbrNeutral, .srgb = srgb});
+        for (std::size_t i = 0; i < std::size(kNeutralCases); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double value = kNeutralCases[i].output[c];
+                EXPECT_NEAR(out[i * 3 + c], 255.0 * (srgb ? srgbEncode(value) : value), 0.75)
+                    << "case " << i << " channel " << c << (srgb ? " (sRGB)" : "");
+            }
+    }
+}
+
+TEST_F(DisplayPassTest, PbrNeutralReferenceAgreesWithTheHandWorkedValues)
+{
+    // tests/support/PbrNeutral.h, which the default-look tests use, pinned to the same values.
+    for (const NeutralCase& c : kNeutralCases) {
+        const std::array<double, 3> out = test::pbrNeutral({c.input.r, c.input.g, c.input.b});
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(out[i], c.output[i], 1e-6) << c.input.r << " " << c.input.g << " " << c.input.b;
+    }
+}
+
+double pbrNeutralGrey(double x) { return test::pbrNeutral({x, x, x})[0]; }
+
+TEST_F(DisplayPassTest, DefaultSettingsArePbrNeutralThenSrgb)
+{
+    // The default look (SPEC.md §3 since 2026-11-25; the curve PBR Neutral since issue 48,
+    // docs/display.md): every input of kInputs through PBR Neutral, then the sRGB encoding,
+    // within the same 0.75 level as each curve alone.
+    expectCurve({}, [](double x) { return srgbEncode(pbrNeutralGrey(x)); });
+    expectCurve({.exposure = -1.0f}, [](double x) { return srgbEncode(pbrNeutralGrey(0.5 * x)); });
+}
+
+TEST_F(DisplayPassTest, AgxThenSrgbIsTheFusedStep)
+{
+    // AgX with sRGB takes the pass's one-log2 path (agxSrgbEncoded): the same function as the
+    // curve, then the encoding.
+    expectCurve({.toneCurve = ToneCurve::Agx}, [](double x) { return srgbEncode(agx(x)); });
+    expectCurve({.exposure = -1.0f, .toneCurve = ToneCurve::Agx}, [](double x) { return srgbEncode(agx(0.5 * x)); });
 }
 
 TEST_F(DisplayPassTest, CurvesAreMonotonicAndKeepBlackBlack)
 {
-    for (ToneCurve curve : {ToneCurve::Reinhard, ToneCurve::Aces, ToneCurve::Agx}) {
+    for (ToneCurve curve : {ToneCurve::Reinhard, ToneCurve::Aces, ToneCurve::Agx, ToneCurve::PbrNeutral}) {
         const std::vector<unsigned char> out = runDisplay(greyRow(kInputs), {.toneCurve = curve, .srgb = true});
         EXPECT_LE(out[0], 1) << toneCurveName(curve);
         for (std::size_t i = 1; i < kInputs.size(); ++i)

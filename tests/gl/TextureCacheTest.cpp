@@ -205,7 +205,7 @@ TEST_F(TextureCacheTest, BrokenFilesAreOneLineErrorsNamingTheFile)
     huge.replace(20, 4, reinterpret_cast<const char*>(side), 4);
     const std::string cases[][2] = {
         {writeBytes("text.png", "this is not an image\n"), "not a texture image"},
-        {writeBytes("truncated.png", bytes.substr(0, bytes.size() / 2)), "broken texture image"},
+        {writeBytes("truncated.png", bytes.substr(0, bytes.size() / 2)), "truncated texture image"},
         {writeBytes("huge.png", huge), "17000x17000"},
         {(dir_ / "absent.png").string(), "cannot open"},
     };

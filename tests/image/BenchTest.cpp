@@ -141,7 +141,7 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
         EXPECT_EQ(values[0], values[1]) << lights << " lights";
     }
     // Passes are name:wall_ms:fragment_invocations, joined by ';'; deferred has two, and the
-    // display pass of the default look (AgX and sRGB) follows them.
+    // display pass of the default look (PBR Neutral and sRGB) follows them.
     EXPECT_EQ(split(split(rows[2], ',')[column("passes")], ';').size(), 3u) << rows[2];
 
     const std::string plot = readText(svg);

@@ -309,12 +309,13 @@ TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
     EXPECT_GT(median, 0.0);
     EXPECT_LE(stats["frame_ms"]["min"].get<double>(), median);
     EXPECT_GE(stats["frame_ms"]["max"].get<double>(), median);
-    // A PNG in the default look ends with the display pass (AgX and sRGB), timed as its own.
+    // A PNG in the default look ends with the display pass (PBR Neutral and sRGB since issue
+    // 48), timed as its own.
     ASSERT_EQ(stats["passes"].size(), 3u);
     EXPECT_EQ(stats["passes"][0]["name"], "geometry");
     EXPECT_EQ(stats["passes"][1]["name"], "lighting");
     EXPECT_EQ(stats["passes"][2]["name"], "display");
-    EXPECT_EQ(stats["display"]["tonemap"], "agx");
+    EXPECT_EQ(stats["display"]["tonemap"], "pbr-neutral");
     EXPECT_EQ(stats["display"]["srgb"], true);
     // --anisotropy auto: none on a software rasteriser, 8 on a GPU (within the driver's maximum).
     const double anisotropy = stats["anisotropy"];

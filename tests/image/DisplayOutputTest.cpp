@@ -1,5 +1,6 @@
 // The display path and the scene-referred outputs through the command line
-// (docs/display.md): the default PNG is AgX then sRGB of the PFM's values, and
+// (docs/display.md): the default PNG is PBR Neutral then sRGB of the PFM's values, the AgX
+// PNG AgX then sRGB of them, and
 // `--tonemap none --no-srgb` (`--classic`) the contract's plain clamp; tone mapping, sRGB
 // and FXAA change only 8-bit outputs, after lighting, so every technique still matches
 // forward there; --supersample box-filters in linear light; EXR files hold the PFM's values
@@ -27,6 +28,7 @@
 #include "render/output/Image.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
+#include "tests/support/PbrNeutral.h"
 
 namespace manylights {
 namespace {
@@ -114,26 +116,52 @@ std::array<double, 3> agxThenSrgb(const float* linear)
     return encoded;
 }
 
-TEST(DisplayOutput, DefaultPngIsAgxThenSrgbOfThePfm)
+double srgbEncoded(double display)
 {
-    // Pixel by pixel, the default PNG is the PFM's colour through AgX and the sRGB encoding:
-    // within half a level of quantisation plus a quarter for the GPU's log2 and pow (as
-    // tests/gl/DisplayPassTest.cpp, whose grey inputs pin the curve down at 15 points).
+    display = std::clamp(display, 0.0, 1.0);
+    return display <= 0.0031308 ? 12.92 * display : 1.055 * std::pow(display, 1.0 / 2.4) - 0.055;
+}
+
+// Khronos PBR Neutral (tests/support/PbrNeutral.h), then IEC 61966-2-1's sRGB encoding.
+std::array<double, 3> pbrNeutralThenSrgb(const float* linear)
+{
+    std::array<double, 3> encoded = test::pbrNeutral(
+        {std::max<double>(linear[0], 0.0), std::max<double>(linear[1], 0.0), std::max<double>(linear[2], 0.0)});
+    for (double& c : encoded)
+        c = srgbEncoded(c);
+    return encoded;
+}
+
+TEST(DisplayOutput, DefaultPngIsPbrNeutralAndAgxPngAgxThenSrgbOfThePfm)
+{
+    // Pixel by pixel, the default PNG is the PFM's colour through PBR Neutral (the default
+    // curve since issue 48) and the sRGB encoding, and the --tonemap agx PNG the same through
+    // AgX: within half a level of quantisation plus a quarter for the GPU's arithmetic (as
+    // tests/gl/DisplayPassTest.cpp, whose inputs pin each curve down).
     const auto dir = scratchDirectory();
     const Image linear = renderPfm(kScene, dir / "linear.pfm", kSmall);
     runCliOrFail(with({"render", kScene, "-o", (dir / "default.png").string()}, kSmall));
+    runCliOrFail(with({"render", kScene, "-o", (dir / "agx.png").string(), "--tonemap", "agx"}, kSmall));
     const std::vector<unsigned char> png = readPng(dir / "default.png");
+    const std::vector<unsigned char> agx = readPng(dir / "agx.png");
     ASSERT_EQ(png.size(), linear.rgb.size());
+    ASSERT_EQ(agx.size(), linear.rgb.size());
     for (std::size_t i = 0; i < png.size(); i += 3) {
-        const std::array<double, 3> expected = agxThenSrgb(&linear.rgb[i]);
-        for (std::size_t c = 0; c < 3; ++c)
+        const std::array<double, 3> expected = pbrNeutralThenSrgb(&linear.rgb[i]);
+        const std::array<double, 3> expectedAgx = agxThenSrgb(&linear.rgb[i]);
+        for (std::size_t c = 0; c < 3; ++c) {
             ASSERT_NEAR(png[i + c], 255.0 * expected[c], 0.75) << "value " << i + c;
+            ASSERT_NEAR(agx[i + c], 255.0 * expectedAgx[c], 0.75) << "value " << i + c << " (agx)";
+        }
     }
-    // An analytic pixel: middle grey, 0.18, AgX's pivot, worked by hand: log2(0.18 · 0.9999)
-    // = -2.4737 stops, 0.6061 of the way up AgX's 16.5; the polynomial gives 0.4968, the
-    // outset matrix 0.4967, the 2.2 power 0.2145 as display light, and sRGB encodes that as
-    // 0.5005: 127.62 of 255. The formula above must agree to 0.01 level.
+    // Analytic pixels. Middle grey, 0.18, under PBR Neutral: 0.18 − 0.04 = 0.14, below the
+    // shoulder, which sRGB encodes as 1.055 · 0.14^(1/2.4) − 0.055 = 0.41003: 104.56 of 255.
+    // Under AgX (AgX's pivot): log2(0.18 · 0.9999) = -2.4737 stops, 0.6061 of the way up AgX's
+    // 16.5; the polynomial gives 0.4968, the outset matrix 0.4967, the 2.2 power 0.2145 as
+    // display light, and sRGB encodes that as 0.5005: 127.62 of 255. The formulas above must
+    // agree to 0.01 level.
     const float grey[3] = {0.18f, 0.18f, 0.18f};
+    EXPECT_NEAR(255.0 * pbrNeutralThenSrgb(grey)[0], 104.56, 0.01);
     EXPECT_NEAR(255.0 * agxThenSrgb(grey)[0], 127.62, 0.01);
     // And not the classic look.
     runCliOrFail(with(with({"render", kScene, "-o", (dir / "classic.png").string()}, kSmall), kClassic));

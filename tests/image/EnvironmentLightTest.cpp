@@ -486,6 +486,26 @@ TEST(EnvironmentErrors, BadMapsAreOneLineNamingTheFileAndWriteNothing)
          [](const std::filesystem::path& dir) { test::writeFile(dir / "text.exr", "not an exr"); },
          {{"map", "text.exr"}},
          "text.exr: "},
+        // Issue 48: a sky cut to a twentieth of its bytes rendered, lit a uniform blue. Here
+        // cut to a quarter, past the header (varied texels make runs short).
+        {"cut short hdr",
+         [](const std::filesystem::path& dir) {
+             writeMap(dir / "whole.hdr", 64, [](const glm::dvec3& d) {
+                 return glm::vec3(0.3 + 0.2 * std::sin(40.0 * d.x), 0.5 + 0.2 * std::cos(40.0 * d.z), 1.0 + d.y);
+             });
+             const std::string whole = readText(dir / "whole.hdr");
+             test::writeFile(dir / "sky.hdr", whole.substr(0, whole.size() / 4));
+         },
+         {{"map", "sky.hdr"}},
+         "sky.hdr: truncated Radiance .hdr image: the file ends before its 128x64 texels do"},
+        {"cut short exr",
+         [](const std::filesystem::path& dir) {
+             Image sky{32, 16, std::vector<float>(32 * 16 * 3, 0.5f)};
+             const std::string whole = encodeExr({ExrLayer{"", {"R", "G", "B"}, sky}}, ExrPixels::Half);
+             test::writeFile(dir / "sky.exr", whole.substr(0, whole.size() * 3 / 4));
+         },
+         {{"map", "sky.exr"}},
+         "sky.exr: truncated EXR image"},
         {"negative intensity",
          [](const std::filesystem::path&) {},
          {{"map", "builtin:studio"}, {"intensity", -2}},

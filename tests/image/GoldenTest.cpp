@@ -95,11 +95,14 @@ TEST_P(Golden, MatchesStoredImage)
 INSTANTIATE_TEST_SUITE_P(
     Images, Golden,
     // The final views in the classic look (--tonemap none --no-srgb), which these goldens have
-    // held since before the default became AgX and sRGB; default_agx_deferred_320x180 is the
-    // default look itself.
+    // held since before the default became display-encoded; default_agx_deferred_320x180 is
+    // AgX and sRGB (the default look from 2026-11-25 until issue 48, now named), and
+    // default_look_deferred_320x180 the default look itself (PBR Neutral and sRGB).
     ::testing::Values(GoldenCase{"default_deferred_320x180",
                                  {"--size", "320x180", "--technique", "deferred", "--tonemap", "none", "--no-srgb"}},
-                      GoldenCase{"default_agx_deferred_320x180", {"--size", "320x180", "--technique", "deferred"}},
+                      GoldenCase{"default_agx_deferred_320x180",
+                                 {"--size", "320x180", "--technique", "deferred", "--tonemap", "agx"}},
+                      GoldenCase{"default_look_deferred_320x180", {"--size", "320x180", "--technique", "deferred"}},
                       GoldenCase{"default_normal_320x180", {"--size", "320x180", "--view", "normal"}},
                       GoldenCase{"spots_and_points_forward_240x160",
                                  {MANYLIGHTS_SOURCE_DIR "/tests/scenes/spots_and_points.json", "--size", "240x160",

@@ -7,6 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <vector>
+
+#include <stb/stb_image_write.h>
 
 #include "TestSupport.h"
 
@@ -23,10 +27,26 @@ std::string readBytes(const std::filesystem::path& path)
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// A 64x64 JPEG with detail in every block, in memory.
+std::string patternJpeg()
+{
+    std::vector<unsigned char> rgb;
+    for (int i = 0; i < 64 * 64 * 3; ++i)
+        rgb.push_back(static_cast<unsigned char>((i * 37 + (i / 192) * 11) % 256));
+    std::string bytes;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    };
+    EXPECT_NE(stbi_write_jpg_to_func(append, &bytes, 64, 64, 3, rgb.data(), 90), 0);
+    return bytes;
+}
+
 TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
 {
     const std::string brick = readBytes(MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/brick.png");
     ASSERT_GT(brick.size(), 100u);
+    const std::string jpeg = patternJpeg();
+    ASSERT_GT(jpeg.size(), 1000u);
     // A PNG header claiming 17000 x 17000 texels: beyond kMaxTextureSide (and most drivers).
     std::string huge = brick.substr(0, 33);
     const char side[4] = {0x00, 0x00, 0x42, 0x68};
@@ -35,6 +55,8 @@ TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
     const std::pair<std::string, std::string> cases[] = {
         {"not_an_image.png", "plain text, not a PNG\n"},
         {"truncated.png", brick.substr(0, brick.size() / 2)},
+        // Issue 48: stb_image decodes a cut JPEG with its missing blocks grey, and said nothing.
+        {"truncated.jpg", jpeg.substr(0, jpeg.size() * 3 / 4)},
         {"absurd_size.png", huge},
     };
     for (const auto& [name, bytes] : cases) {

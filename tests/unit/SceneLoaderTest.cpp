@@ -475,5 +475,16 @@ TEST(SceneLoader, NormalScaleDefaultsToOne)
     EXPECT_EQ(scene.materials[1].normalScale, 0.5f);
 }
 
+TEST(SceneLoader, DisplayBlockNamesEveryToneCurve)
+{
+    // Every --tonemap name is also the display block's (issue 48 added pbr-neutral to both).
+    ASSERT_NE(std::find(toneCurveNames().begin(), toneCurveNames().end(), "pbr-neutral"), toneCurveNames().end());
+    for (const std::string& name : toneCurveNames()) {
+        const Scene scene = parse(R"({"display": {"tonemap": ")" + name + R"("}})");
+        EXPECT_EQ(toneCurveName(scene.display.toneCurve), name);
+    }
+    EXPECT_EQ(parse(R"({"display": {"tonemap": "pbr-neutral"}})").display.toneCurve, ToneCurve::PbrNeutral);
+}
+
 }  // namespace
 }  // namespace manylights
