@@ -67,6 +67,7 @@ void Renderer::apply(const RendererDesc& requested)
         gpuScene_.setEnvironmentLook(desc.environmentLook.value_or(scene->look));
     profiler_.setTiming(
         desc.passTiming.value_or(gpuScene_.driverChoices().finishAroundPasses ? PassTiming::Wall : PassTiming::Gpu));
+    profiler_.setWaitHook(desc.waitHook);
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);

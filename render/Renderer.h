@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -83,6 +84,10 @@ struct RendererDesc {
     // --lighting-stage: deferred's and clustered's lighting as a fragment or a compute pass;
     // unset, the driver profile's choice (DriverChoices::computeLighting).
     std::optional<LightingStage> lightingStage{};
+    // Called between passes and every few milliseconds while the renderer waits for the GPU
+    // (PassProfiler::setWaitHook): the viewer reads its input there. It must not issue GL
+    // commands. Empty: none.
+    std::function<void()> waitHook{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -110,14 +111,16 @@ Viewer::Viewer(const ViewOptions& options)
     GLFWwindow* window = window_.window();
     glfwSetWindowUserPointer(window, this);
     // Installed before ImGui's, which chains to them. The moments of presses and releases time
-    // the held keys' moves (HeldKeys.h).
+    // the held keys' moves (HeldKeys.h). Events are also read while a frame renders (the
+    // renderer's wait hook, rendererDesc), so a press's action waits for the next frame's start
+    // rather than changing the settings of the frame being drawn.
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
         Viewer& viewer = of(w);
         if (action == GLFW_RELEASE)
             viewer.heldKeys_.release(key, glfwGetTime());
         if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard) {
             viewer.heldKeys_.press(key, glfwGetTime());
-            viewer.onKeyPressed(key);
+            viewer.pressedKeys_.push_back(key);
         }
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
@@ -170,7 +173,12 @@ RendererDesc Viewer::rendererDesc() const
             .wireframe = wireframe_,
             .driverProfile = options_.driver.profile,
             .passTiming = options_.driver.passTiming,
-            .lightingStage = options_.driver.lightingStage};
+            .lightingStage = options_.driver.lightingStage,
+            // Input read between passes and during the waits for the GPU (issue 48): a key's
+            // press and release are then timed to within PassProfiler::kWaitHookInterval and a
+            // pass, not to a whole frame, which on llvmpipe lasts up to seconds. GLFW reads
+            // events on the main thread only, which is the one that renders.
+            .waitHook = [] { glfwPollEvents(); }};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose
@@ -345,6 +353,9 @@ void Viewer::run()
     while (!quit_ && !glfwWindowShouldClose(window_.window())) {
         glfwPollEvents();
         const double now = glfwGetTime();
+        // The keys pressed since the last frame began, also those read while it rendered.
+        for (const int key : std::exchange(pressedKeys_, {}))
+            onKeyPressed(key);
         const double elapsed = now - last;
         last = now;
         frameSeconds_ = elapsed;
@@ -366,6 +377,7 @@ void Viewer::run()
 
         renderScene();
         showImage();
+        glfwPollEvents();  // after the views converted and shown on the CPU (the G-buffer views, light-count)
         drawAxes();
         if (!pendingScreenshot_.empty()) {
             writeScreenshot(pendingScreenshot_);
