@@ -156,7 +156,7 @@ Viewer::~Viewer()
     gl::setDefaultShaderReader(gl::embeddedShaderReader());
 }
 
-RendererDesc Viewer::rendererDesc() const
+RendererDesc Viewer::rendererDesc()
 {
     DisplaySettings shown = display_;
     if (autoExposure_)
@@ -178,7 +178,7 @@ RendererDesc Viewer::rendererDesc() const
             // press and release are then timed to within PassProfiler::kWaitHookInterval and a
             // pass, not to a whole frame, which on llvmpipe lasts up to seconds. GLFW reads
             // events on the main thread only, which is the one that renders.
-            .waitHook = [] { glfwPollEvents(); }};
+            .waitHook = [this] { readInput(); }};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose
@@ -347,12 +347,23 @@ void Viewer::writeScreenshot(const std::string& path)
     std::fprintf(stderr, "manylights view: wrote %s\n", path.c_str());
 }
 
+void Viewer::readInput()
+{
+    glfwPollEvents();
+    const double now = glfwGetTime();
+    inputGapSeconds_ = std::max(inputGapSeconds_, now - lastInputRead_);
+    lastInputRead_ = now;
+}
+
 void Viewer::run()
 {
     double last = glfwGetTime();
+    lastInputRead_ = last;
     while (!quit_ && !glfwWindowShouldClose(window_.window())) {
-        glfwPollEvents();
+        readInput();
         const double now = glfwGetTime();
+        // The frame that just ended: its length, and the longest it went without reading input.
+        lastFrameInput_ = {now - last, std::exchange(inputGapSeconds_, 0.0)};
         // The keys pressed since the last frame began, also those read while it rendered.
         for (const int key : std::exchange(pressedKeys_, {}))
             onKeyPressed(key);
@@ -377,7 +388,7 @@ void Viewer::run()
 
         renderScene();
         showImage();
-        glfwPollEvents();  // after the views converted and shown on the CPU (the G-buffer views, light-count)
+        readInput();  // after the views converted and shown on the CPU (the G-buffer views, light-count)
         drawAxes();
         if (!pendingScreenshot_.empty()) {
             writeScreenshot(pendingScreenshot_);

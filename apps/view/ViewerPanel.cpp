@@ -129,15 +129,16 @@ bool sliderWithValue(PanelRecord& record, const char* label, T& value, T min, T 
     const ImGuiStyle& style = ImGui::GetStyle();
     const float itemWidth = ImGui::CalcItemWidth();
     const float valueWidth = ImGui::CalcTextSize(kWidestSliderValue).x;
-    const float startX = ImGui::GetCursorPosX();
     ImGui::SetNextItemWidth(std::max(1.0f, itemWidth - valueWidth - style.ItemInnerSpacing.x));
     constexpr ImGuiDataType kType = std::is_same_v<T, int> ? ImGuiDataType_S32 : ImGuiDataType_Float;
     const bool changed = ImGui::SliderScalar((std::string("##") + label).c_str(), kType, &value, &min, &max, "");
     char text[32];
     std::snprintf(text, sizeof text, format, value);
-    ImGui::SameLine(startX + itemWidth - valueWidth);
+    // Placed after the slider, not at offsets from the line's start, which ImGui takes from a
+    // group's start inside a group (unlessUnavailable's).
+    ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
     plainText(record, text);
-    ImGui::SameLine(startX + itemWidth + style.ItemInnerSpacing.x);
+    ImGui::SameLine(0.0f, valueWidth - textWidth(text) + style.ItemInnerSpacing.x);
     plainText(record, label);
     return changed;
 }
@@ -296,11 +297,9 @@ void Viewer::drawPanel()
     std::snprintf(fullTitle, sizeof fullTitle, "manylights %.1f ms", latestMs);
     char shortTitle[32];
     std::snprintf(shortTitle, sizeof shortTitle, "%.1f ms", latestMs);
-    // Where ImGui starts the title (RenderWindowTitleBarContents): after the collapse arrow,
-    // which a window without it (ImGuiWindowFlags_NoCollapse) lacks; it ends a padding short of
-    // the right edge.
-    const float titleStart =
-        style.FramePadding.x + (expandable ? ImGui::GetFontSize() + style.ItemInnerSpacing.x : 0.0f);
+    // Where ImGui starts the title (RenderWindowTitleBarContents): after the collapse arrow; it
+    // ends a padding short of the right edge.
+    const float titleStart = style.FramePadding.x + ImGui::GetFontSize() + style.ItemInnerSpacing.x;
     const float collapsedWidth = titleStart + textWidth(kWidestTitle) + 2.0f * style.FramePadding.x;
     const float width =
         std::min(collapsed ? collapsedWidth : std::max(kPanelWidth, minimumWidth), std::max(1.0f, widthLimit));
@@ -308,7 +307,9 @@ void Viewer::drawPanel()
     const char* titleText = textWidth(fullTitle) <= titleRoom ? fullTitle : shortTitle;
     if (!panel_ || textWidth(titleText) > titleRoom || window.y < ImGui::GetFrameHeight())
         return;
-    if (collapsed != wasCollapsed || !panelRect_)
+    // Every frame where it cannot open: a click on the arrow opens it for the frame after,
+    // with no contents (below), until this closes it again.
+    if (collapsed != wasCollapsed || !panelRect_ || !expandable)
         ImGui::SetNextWindowCollapsed(collapsed, ImGuiCond_Always);
 
     // Kept inside the window, and above the light-count legend wherever the two share columns
@@ -330,7 +331,7 @@ void Viewer::drawPanel()
     ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {width, std::max(1.0f, std::min(tallest, bottom - y))});
 
     const std::string title = std::string(titleText) + "###manylights";
-    const bool open = ImGui::Begin(title.c_str(), nullptr, expandable ? 0 : ImGuiWindowFlags_NoCollapse);
+    const bool open = ImGui::Begin(title.c_str());
     const ImVec2 position = ImGui::GetWindowPos();
     const ImVec2 size = ImGui::GetWindowSize();
     panelRect_ = PanelRect{position.x, position.y, size.x, size.y, ImGui::IsWindowCollapsed()};
@@ -345,8 +346,8 @@ void Viewer::drawPanel()
     panelRecord_.texts.push_back({titleText,
                                   {position.x + titleStart, position.y, textWidth(titleText), ImGui::GetFrameHeight()},
                                   position.x + size.x - style.FramePadding.x});
-    // A click on the arrow opens the panel at the end of the frame laid out for it collapsed,
-    // too narrow: its contents wait for the next, laid out for it open.
+    // A click on the arrow opens the panel in the frame after, which was laid out for it
+    // collapsed, too narrow: its contents wait for the next frame, laid out for it open.
     if (open && !collapsed)
         drawPanelContents();
     ImGui::End();
@@ -501,9 +502,9 @@ void Viewer::drawPanelContents()
     ImGui::Separator();
     std::vector<float> history(frameMs_.begin(), frameMs_.end());
     const float latest = history.empty() ? 0.0f : history.back();
-    char frameText[64];
-    std::snprintf(frameText, sizeof frameText, "last frame %.2f ms (%.0f fps)", latest,
-                  latest > 0.0f ? 1000.0f / latest : 0.0f);
+    char frameText[128];
+    std::snprintf(frameText, sizeof frameText, "last frame %.2f ms (%.0f fps); input read at most %.0f ms apart",
+                  latest, latest > 0.0f ? 1000.0f / latest : 0.0f, 1000.0 * lastFrameInput_.longestGapSeconds);
     wrappedText(record, frameText);
     ImGui::PlotLines(kFrameMsLabel, history.data(), static_cast<int>(history.size()), 0, nullptr, 0.0f, FLT_MAX,
                      {0, 60});
@@ -544,7 +545,8 @@ void Viewer::drawPanelContents()
 
 // The first line, "X Y WIDTH HEIGHT WINDOW_WIDTH WINDOW_HEIGHT STATE", in window pixels
 // (docs/viewer.md "Scripts"): STATE is expanded, collapsed, or hidden (F1, or a window too small
-// for the title; then the rectangle is 0 0 0 0). Then the legend's rectangle where the
+// for the title; then the rectangle is 0 0 0 0). Then the last whole frame's length and the
+// longest time it went without reading input, in ms; the legend's rectangle where the
 // light-count view shows it, each text the panel drew with its rectangle, the edge it must end
 // before and whether it does, and each control drawn disabled with its reason.
 void Viewer::writePanelReport(const std::string& path) const
@@ -559,6 +561,10 @@ void Viewer::writePanelReport(const std::string& path) const
     std::snprintf(line, sizeof line, "%.0f %.0f %.0f %.0f %d %d %s\n", rect.x, rect.y, rect.width, rect.height,
                   windowWidth, windowHeight, state);
     std::string report = line;
+    // The last whole frame's length and the longest it went without reading input (issue 48).
+    std::snprintf(line, sizeof line, "input %.1f %.1f\n", 1000.0 * lastFrameInput_.frameSeconds,
+                  1000.0 * lastFrameInput_.longestGapSeconds);
+    report += line;
     if (const std::optional<WindowRect> legend = shownLegend()) {
         std::snprintf(line, sizeof line, "legend %.0f %.0f %.0f %.0f\n", legend->x, legend->y, legend->width,
                       legend->height);

@@ -78,7 +78,10 @@ private:
 
     Technique& technique();
     // The renderer's settings as the viewer's state has them (the one route they take).
-    RendererDesc rendererDesc() const;
+    RendererDesc rendererDesc();
+    // Reads the window's events (GLFW reads them on the main thread only): at the start of a
+    // frame, and while it renders, from the renderer's wait hook (issue 48).
+    void readInput();
     // A key pressed: its action in the key map (apps/view/Keymaps.h), if any.
     void onKeyPressed(int key);
     void perform(KeyAction action);
@@ -176,7 +179,17 @@ private:
     gl::Program axesProgram_;
     gl::VertexArray emptyVertexArray_{"axes (no attributes)"};
 
-    HeldKeys heldKeys_;             // the window's key presses and releases, by when they came
+    HeldKeys heldKeys_;  // the window's key presses and releases, by when they came
+    // The longest time between two reads of input in the frame so far, when the last was, and
+    // for the last whole frame, its length and that longest time (the panel and its report
+    // show them).
+    double inputGapSeconds_ = 0.0;
+    double lastInputRead_ = 0.0;
+    struct FrameInput {
+        double frameSeconds = 0.0;
+        double longestGapSeconds = 0.0;
+    };
+    FrameInput lastFrameInput_;
     std::vector<int> pressedKeys_;  // pressed since the frame began: their actions run at the next
     bool dragging_ = false;
     double dragX_ = 0.0;

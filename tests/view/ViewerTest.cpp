@@ -25,6 +25,7 @@
 
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewScript.h"
+#include "apps/view/ViewerWindow.h"
 #include "core/Error.h"
 #include "render/Views.h"
 #include "render/techniques/Technique.h"
@@ -538,17 +539,10 @@ struct LabelFit {
     std::string text;
 };
 
-struct Rect {
-    double x = 0.0;
-    double y = 0.0;
-    double width = 0.0;
-    double height = 0.0;
-};
-
 // The rest of report-panel's lines (docs/viewer.md "Scripts"): the legend's rectangle, each
 // text's rectangle and fit, and the controls drawn disabled with their reasons.
 struct PanelDetails {
-    std::optional<Rect> legend;
+    std::optional<WindowRect> legend;  // as the viewer places the panel: apps/view/ViewerWindow.h
     std::vector<LabelFit> labels;
     std::map<std::string, std::string> disabled;  // control: reason
 };
@@ -564,7 +558,7 @@ PanelDetails readPanelDetails(const fs::path& path)
         std::string kind;
         words >> kind;
         if (kind == "legend") {
-            Rect legend;
+            WindowRect legend;
             words >> legend.x >> legend.y >> legend.width >> legend.height;
             details.legend = legend;
         } else if (kind == "label") {
@@ -585,7 +579,7 @@ PanelDetails readPanelDetails(const fs::path& path)
     return details;
 }
 
-bool overlap(const PanelReport& panel, const Rect& legend)
+bool overlap(const PanelReport& panel, const WindowRect& legend)
 {
     return panel.x < legend.x + legend.width && legend.x < panel.x + panel.width &&
            panel.y < legend.y + legend.height && legend.y < panel.y + panel.height;
@@ -636,11 +630,15 @@ TEST(Viewer, PanelStaysClearOfTheLegendAndCutsNoText)
         const std::string name = std::to_string(width) + "x" + std::to_string(height);
         script += "resize " + std::to_string(width) + " " + std::to_string(height) + "\nframes 3\nreport-panel " +
                   name + ".txt\ntoggle panel-collapsed\nframes 3\nreport-panel " + name +
-                  "-toggled.txt\ntoggle panel-collapsed\n";
+                  "-toggled.txt\ntoggle panel-collapsed\nframes 1\n";
         reports.push_back(name + ".txt");
         reports.push_back(name + "-toggled.txt");
     }
-    ASSERT_EQ(runViewer(dir, script + "quit\n"), 0) << readText(dir / "viewer.log");
+    // The panel and the legend are the same over any scene: a small one keeps the large
+    // windows' frames short on llvmpipe.
+    ASSERT_EQ(runViewer(dir, script + "quit\n", "'" MANYLIGHTS_SOURCE_DIR "/tests/scenes/one_light_on_one_spot.json'"),
+              0)
+        << readText(dir / "viewer.log");
     for (const std::string& report : reports)
         expectTidyPanel(dir / report);
 
@@ -650,7 +648,7 @@ TEST(Viewer, PanelStaysClearOfTheLegendAndCutsNoText)
     EXPECT_EQ(large.state, "expanded");
     const PanelDetails largeDetails = readPanelDetails(dir / "1280x720.txt");
     ASSERT_TRUE(largeDetails.legend);
-    EXPECT_TRUE(hasLabel(largeDetails, "towards the look-at point (held)"));
+    EXPECT_TRUE(hasLabel(largeDetails, "towards the look-at point"));
     EXPECT_GT(large.height, 100.0);
     // 320x180 starts collapsed, and opens; 240x135 is too narrow for the open panel and stays
     // collapsed; 64x36 holds no title.
