@@ -26,9 +26,10 @@ public:
     // The moments the window reported the key going down and up (seconds, one clock).
     void press(int key, double time);
     void release(int key, double time);
-    // Ends the frame at `now`: each key held at some time since the previous frame ended (or,
-    // for the first, since its press), with the seconds it was held within the frame. A key
-    // pressed and released within the frame counts as at least kTapSeconds. Keys released are
+    // Ends the frame at `now`: each key held at some time since the previous frame ended, with
+    // the seconds it was held within the frame; a key first reported since then counts from its
+    // press, also where that came before the previous frame's end (its report came late). A
+    // key pressed and released since then counts as at least kTapSeconds. Keys released are
     // then forgotten.
     std::vector<HeldKey> endFrame(double now);
 
@@ -36,6 +37,7 @@ private:
     struct Hold {
         double pressed;
         std::optional<double> released;
+        bool counted = false;  // by an earlier frame, up to its end
     };
     std::map<int, Hold> holds_;
     std::optional<double> frameStart_;

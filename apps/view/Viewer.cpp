@@ -111,15 +111,20 @@ Viewer::Viewer(const ViewOptions& options)
     GLFWwindow* window = window_.window();
     glfwSetWindowUserPointer(window, this);
     // Installed before ImGui's, which chains to them. The moments of presses and releases time
-    // the held keys' moves (HeldKeys.h). Events are also read while a frame renders (the
-    // renderer's wait hook, rendererDesc), so a press's action waits for the next frame's start
-    // rather than changing the settings of the frame being drawn.
-    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    // the held keys' moves (HeldKeys.h): when the display server sent them (KeyEventTimes.h),
+    // else when they were read. Events are also read while a frame renders (the renderer's wait
+    // hook, rendererDesc), so a press's action waits for the next frame's start rather than
+    // changing the settings of the frame being drawn.
+    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int scancode, int action, int) {
+        if (action == GLFW_REPEAT)
+            return;
         Viewer& viewer = of(w);
+        const double readAt = glfwGetTime();
+        const double time = viewer.keyTimes_.take(scancode, action == GLFW_PRESS, readAt).value_or(readAt);
         if (action == GLFW_RELEASE)
-            viewer.heldKeys_.release(key, glfwGetTime());
+            viewer.heldKeys_.release(key, time);
         if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard) {
-            viewer.heldKeys_.press(key, glfwGetTime());
+            viewer.heldKeys_.press(key, time);
             viewer.pressedKeys_.push_back(key);
         }
     });

@@ -23,6 +23,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "platform/window/KeyEventTimes.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
 
@@ -119,6 +120,7 @@ private:
     const Scene scene_;
     std::vector<Light> lights_;
     WindowContext window_;
+    KeyEventTimes keyTimes_{window_.window()};  // when the server sent each key event (X11)
     std::unique_ptr<Renderer> renderer_;
     int width_ = 1;  // the window's framebuffer, which frames are rendered at
     int height_ = 1;

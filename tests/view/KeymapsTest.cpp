@@ -19,6 +19,7 @@
 #include "apps/view/CameraControls.h"
 #include "apps/view/HeldKeys.h"
 #include "apps/view/Keymaps.h"
+#include "platform/window/KeyEventTimes.h"
 #include "render/frame/PassProfiler.h"
 
 namespace manylights {
@@ -147,6 +148,64 @@ TEST(HeldKeys, APressAndReleaseWithinOneFrameIsATap)
     const std::vector<HeldKey> held = keys.endFrame(0.4);
     ASSERT_EQ(held.size(), 1u);
     EXPECT_DOUBLE_EQ(held[0].seconds, kTapSeconds);
+}
+
+TEST(HeldKeys, APressReportedAfterTheFrameItCameInCountsFromThePress)
+{
+    // The server sent the press at 1.0; GLFW reported it only after the frame that ended at 1.1
+    // (KeyEventTimes.h): the next frame counts the 0.1 s before its start too.
+    HeldKeys keys;
+    keys.endFrame(1.1);
+    keys.press(GLFW_KEY_LEFT, 1.0);
+    std::vector<HeldKey> held = keys.endFrame(1.3);
+    ASSERT_EQ(held.size(), 1u);
+    EXPECT_NEAR(held[0].seconds, 0.3, 1e-12);
+    held = keys.endFrame(1.5);
+    ASSERT_EQ(held.size(), 1u);
+    EXPECT_NEAR(held[0].seconds, 0.2, 1e-12);  // counted from the previous frame's end since
+}
+
+// --- when the server sent each key event (platform/window/KeyEventTimes.h) ------------------------
+
+constexpr int kLeftCode = 113;  // an X keycode
+constexpr int kUpCode = 111;
+
+TEST(KeyEventLog, APressAndItsReleaseAreTimedWhenTheyWereSent)
+{
+    KeyEventLog log;
+    log.note(kLeftCode, true, 1.00);
+    log.note(kUpCode, true, 1.01);
+    log.note(kLeftCode, true, 1.53);  // the server's auto-repeat
+    log.note(kLeftCode, true, 1.56);
+    log.note(kLeftCode, false, 3.00);
+    // GLFW reports them at the end of a 2 s frame: the press as sent, and the release.
+    EXPECT_EQ(log.take(kLeftCode, true, 2.0), 1.00);
+    EXPECT_EQ(log.take(kLeftCode, false, 3.2), 3.00);
+    // The other key's note is its own.
+    EXPECT_EQ(log.take(kUpCode, true, 3.2), 1.01);
+    // Nothing left of the left key: a later press not yet noted is timed by its report.
+    EXPECT_EQ(log.take(kLeftCode, true, 4.0), std::nullopt);
+}
+
+TEST(KeyEventLog, ACopyThatCameAfterTheReportIsNotTakenForALaterEvent)
+{
+    KeyEventLog log;
+    // GLFW reported the press (at 1.00) before the copy was noted (at 1.001), and so the release.
+    EXPECT_EQ(log.take(kLeftCode, true, 1.00), std::nullopt);
+    log.note(kLeftCode, true, 1.001);
+    EXPECT_EQ(log.take(kLeftCode, false, 1.05), std::nullopt);
+    log.note(kLeftCode, false, 1.051);
+    // The next press, at 5.0, is not the old copy of 1.001.
+    log.note(kLeftCode, true, 5.0);
+    EXPECT_EQ(log.take(kLeftCode, true, 5.2), 5.0);
+}
+
+TEST(KeyEventLog, NotesAreKeptTenSecondsAtMost)
+{
+    KeyEventLog log;
+    log.note(kLeftCode, true, 1.0);
+    log.note(kUpCode, true, 1.0 + KeyEventLog::kKeepSeconds + 0.5);
+    EXPECT_EQ(log.take(kLeftCode, true, 20.0), std::nullopt);
 }
 
 // --- the camera's held moves ----------------------------------------------------------------
