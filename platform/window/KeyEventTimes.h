@@ -1,9 +1,10 @@
 // When the display server delivered each key press and release (issue 48, docs/viewer.md
-// "Controls"), known to a millisecond or two however long the viewer's frames and passes take.
+// "Controls"), known to within 10 ms however long the viewer's frames and passes take
+// (measured: scripts/measure-held-keys.sh).
 //
 // GLFW reads a window's events on the main thread only, which is the one that renders: it
-// learns of a key when it next polls, which on llvmpipe can be a pass of 100-200 ms of vertex or
-// compute work later (measured: scripts/measure-held-keys.sh). So a thread of its own opens a
+// learns of a key when it next polls, which on llvmpipe can be 60-120 ms of vertex work in the
+// geometry pass later, or a second of counting in the light-count view. So a thread of its own opens a
 // second connection to the X server and asks for the same window's key events: the server sends
 // every client that asks a copy of each, at once, and the thread notes when its copy came. The
 // window's events are still GLFW's, read on the main thread; when GLFW reports a press or a
