@@ -1,6 +1,7 @@
 // The viewer's key maps and held keys without a window (issue 43): each map's one table, which
 // the key handler, the panel and `view --keymap list` read; the time a key was held in a frame;
-// and the camera's turn by the time a key was held, whatever the frame time (issue 48).
+// the camera's turn by the time a key was held, whatever the frame time; and the pairing of
+// GLFW's key reports with the times the X server sent them (issue 48).
 #include <gtest/gtest.h>
 
 #include <algorithm>

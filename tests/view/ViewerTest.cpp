@@ -1,6 +1,8 @@
 // The viewer: its camera moves and script parser without a window, and the whole viewer under
 // Xvfb driven by --script: it starts, renders, resizes, switches every technique and view,
-// and its screenshots equal the headless `render` of the same frame.
+// and its screenshots equal the headless `render` of the same frame; its panel, seen through
+// the script's report-panel, fits the window, stays clear of the light-count legend, cuts no
+// text and disables what cannot apply (issues 43 and 48).
 //
 // Screenshot tolerance: 1 level of 255 per channel. The window's framebuffer is 8-bit; GL
 // converts the renderer's float colour to it (round-to-nearest is the spec's rule, but the
