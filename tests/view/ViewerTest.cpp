@@ -664,16 +664,22 @@ TEST(Viewer, PanelStaysClearOfTheLegendAndCutsNoText)
 // The environment's section fits too (its rotation's label was cut), and the controls that
 // cannot apply are disabled with the reason: the studio has no directional light and no point
 // or spot light; in the normal view no lighting shows.
+// Runs the viewer on `scene` (from the source tree) with its panel opened in a 320x180 window,
+// where it starts collapsed, then the rest of the script.
+int runWithOpenPanel(const fs::path& dir, const std::string& scene, const std::string& rest)
+{
+    return runViewer(dir,
+                     "pause\ntechnique forward\nresize 320 180\nframes 2\ntoggle panel-collapsed\nframes 3\n" + rest,
+                     "'" MANYLIGHTS_SOURCE_DIR "/" + scene + "'");
+}
+
 TEST(Viewer, PanelDisablesWhatCannotApplyAndSaysWhy)
 {
     if (!haveXvfb())
         GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
     const fs::path dir = scratch();
-    const std::string studio = "'" MANYLIGHTS_SOURCE_DIR "/scenes/studio.json'";
-    ASSERT_EQ(runViewer(dir,
-                        "pause\ntechnique forward\nresize 320 180\nframes 2\ntoggle panel-collapsed\nframes 3\n"
-                        "report-panel studio.txt\nview normal\nframes 2\nreport-panel normal.txt\nquit\n",
-                        studio),
+    ASSERT_EQ(runWithOpenPanel(dir, "scenes/studio.json",
+                               "report-panel studio.txt\nview normal\nframes 2\nreport-panel normal.txt\nquit\n"),
               0)
         << readText(dir / "viewer.log");
     for (const char* report : {"studio.txt", "normal.txt"})
@@ -693,11 +699,8 @@ TEST(Viewer, PanelDisablesWhatCannotApplyAndSaysWhy)
         EXPECT_EQ(normal.disabled.count(control), 1u) << control;
 
     // A scene whose directional light casts shadows, with SSAO on: both apply, until SSAO is off.
-    const std::string shadows = "'" MANYLIGHTS_SOURCE_DIR "/tests/scenes/shadows_and_ssao.json'";
-    ASSERT_EQ(runViewer(dir,
-                        "pause\ntechnique forward\nresize 320 180\nframes 2\ntoggle panel-collapsed\nframes 3\n"
-                        "report-panel on.txt\ntoggle ssao\nframes 2\nreport-panel off.txt\nquit\n",
-                        shadows),
+    ASSERT_EQ(runWithOpenPanel(dir, "tests/scenes/shadows_and_ssao.json",
+                               "report-panel on.txt\ntoggle ssao\nframes 2\nreport-panel off.txt\nquit\n"),
               0)
         << readText(dir / "viewer.log");
     ASSERT_EQ(readPanelReport(dir / "on.txt").state, "expanded");  // else no control is drawn at all
