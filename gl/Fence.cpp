@@ -1,5 +1,6 @@
 #include "gl/Fence.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 
@@ -42,6 +43,15 @@ void Fence::wait() const
     while (status == GL_TIMEOUT_EXPIRED)
         status = glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, kSecond);
     ML_ASSERT(status != GL_WAIT_FAILED);
+}
+
+bool Fence::waitFor(std::chrono::nanoseconds timeout) const
+{
+    ML_ASSERT(sync_);
+    const auto nanoseconds = static_cast<GLuint64>(std::max<std::chrono::nanoseconds::rep>(0, timeout.count()));
+    const GLenum status = glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, nanoseconds);
+    ML_ASSERT(status != GL_WAIT_FAILED);
+    return status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED;
 }
 
 void Fence::reset()

@@ -4,6 +4,8 @@
 // or two late behind one).
 #pragma once
 
+#include <chrono>
+
 #include <epoxy/gl.h>
 
 namespace manylights::gl {
@@ -26,6 +28,9 @@ public:
     bool signalled() const;
     // Waits until the GPU has passed the fence.
     void wait() const;
+    // Waits until the GPU has passed the fence or `timeout` has gone by, whichever is first;
+    // whether it has passed.
+    bool waitFor(std::chrono::nanoseconds timeout) const;
 
 private:
     void reset();

@@ -69,6 +69,7 @@ void Renderer::apply(const RendererDesc& requested)
     if (const auto& scene = gpuScene_.scene().environment;
         scene && (first || desc.environmentLook != old.environmentLook))
         gpuScene_.setEnvironmentLook(desc.environmentLook.value_or(scene->look));
+    profiler_.setWaitHook(desc.waitHook);
     shadowMaps_.setLocalLightBudget(desc.shadowLights);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);

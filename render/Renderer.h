@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -80,6 +81,10 @@ struct RendererDesc {
     // The culling's tuning, for measuring and testing (render/frame/TechniqueOptions.h): the
     // techniques are made for it, as for the other options.
     CullingTuning culling{};
+    // Called between passes and every few milliseconds while the renderer waits for the GPU
+    // (PassProfiler::setWaitHook): the viewer reads its input there. It must not issue GL
+    // commands. Empty: none.
+    std::function<void()> waitHook{};
 };
 
 // The size of an image when none is asked for (docs/cli.md).

@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config ninja-build
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
-  libglfw3-dev libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev
+  libglfw3-dev libx11-dev libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev
   libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libimgui-dev xvfb xauth imagemagick ffmpeg
   libtinygltf-dev assimp-testmodels clang libclang-rt-dev clang-format

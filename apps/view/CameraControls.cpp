@@ -66,7 +66,7 @@ void lookCamera(Camera& camera, float yawDegrees, float pitchDegrees)
 
 void applyHeldAction(Camera& camera, KeyAction action, double seconds)
 {
-    const auto dt = static_cast<float>(std::clamp(seconds, 0.0, kMaxHeldSecondsPerFrame));
+    const auto dt = static_cast<float>(std::max(seconds, 0.0));
     const float turn = kOrbitDegreesPerSecond * dt;
     const float fly = kFlyFractionPerSecond * dt * glm::distance(camera.eye, camera.lookAt);
     switch (action) {

@@ -14,10 +14,6 @@ namespace manylights {
 inline constexpr float kOrbitDegreesPerSecond = 60.0f;  // orbit and look
 inline constexpr float kDollyPerSecond = 1.5f;          // distance factor per second
 inline constexpr float kFlyFractionPerSecond = 0.4f;    // of the distance to the look-at point
-// A frame moves by at most this much holding, 3 degrees of orbit (issue 43): on a machine
-// drawing a few frames a second, a tap would otherwise turn the view by 10-30 degrees at once.
-inline constexpr float kMaxStepDegrees = 3.0f;
-inline constexpr double kMaxHeldSecondsPerFrame = kMaxStepDegrees / kOrbitDegreesPerSecond;
 
 // Turns the eye about the look-at point: yaw about the camera's up, pitch towards or away from
 // it (stopping 5° short of the poles, where the view basis would degenerate).
@@ -34,8 +30,10 @@ void flyCamera(Camera& camera, const glm::vec3& offset);
 // Turns the view direction about the eye (mouse look): the look-at point moves, the eye stays.
 void lookCamera(Camera& camera, float yawDegrees, float pitchDegrees);
 
-// Moves the camera as the held action does (isHeldAction) for `seconds` of holding in one
-// frame, at most kMaxHeldSecondsPerFrame of it. Other actions leave the camera alone.
+// Moves the camera as the held action does (isHeldAction) for `seconds` of holding, however
+// long (issue 48: no cap per frame, so that a key held through slow frames moves at its rate;
+// a tap is short because its press and release are timed, HeldKeys.h). Other actions leave
+// the camera alone.
 void applyHeldAction(Camera& camera, KeyAction action, double seconds);
 
 }  // namespace manylights

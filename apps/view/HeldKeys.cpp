@@ -22,15 +22,15 @@ std::vector<HeldKey> HeldKeys::endFrame(double now)
 {
     std::vector<HeldKey> held;
     for (auto it = holds_.begin(); it != holds_.end();) {
-        const Hold& hold = it->second;
-        const double from = std::max(hold.pressed, frameStart_.value_or(hold.pressed));
+        Hold& hold = it->second;
+        const double from = hold.counted ? std::max(hold.pressed, frameStart_.value_or(hold.pressed)) : hold.pressed;
         const double to = std::min(hold.released.value_or(now), now);
         double seconds = std::max(0.0, to - from);
-        const bool tap = hold.released && (!frameStart_ || hold.pressed >= *frameStart_);
-        if (tap)
+        if (hold.released && !hold.counted)  // a tap
             seconds = std::max(seconds, kTapSeconds);
         if (seconds > 0.0)
             held.push_back({it->first, seconds});
+        hold.counted = true;
         it = hold.released ? holds_.erase(it) : std::next(it);
     }
     frameStart_ = now;

@@ -100,8 +100,9 @@ std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::s
         } else if (name == "toggle") {
             expectArgs(1, "what to toggle");
             command.kind = ScriptCommand::Kind::Toggle;
-            const std::vector<std::string> toggles{"ambient", "diffuse", "specular", "axes",         "wireframe",
-                                                   "shadows", "ssao",    "panel",    "auto-exposure"};
+            const std::vector<std::string> toggles{"ambient",       "diffuse",         "specular",  "axes",
+                                                   "wireframe",     "shadows",         "ssao",      "panel",
+                                                   "auto-exposure", "panel-collapsed", "panel-keys"};
             if (!contains(toggles, args[0]))
                 fail("cannot toggle '" + args[0] + "' (expected one of: " + join(toggles) + ")");
         } else if (name == "key") {

@@ -23,7 +23,7 @@ struct ScriptCommand {
         Pause,        // pause
         Play,         // play
         Speed,        // speed FACTOR
-        Toggle,       // toggle ambient|diffuse|specular|axes|wireframe|shadows|ssao|panel
+        Toggle,       // toggle ambient|...|panel|panel-collapsed|panel-keys (docs/viewer.md)
         Key,          // key NAME: as if the key were pressed for one frame (docs/viewer.md)
         Screenshot,   // screenshot FILE.png: the window's image of the next frame, panel hidden
         ReportPanel,  // report-panel FILE: where the next frame draws the panel (docs/viewer.md)

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -111,14 +112,21 @@ Viewer::Viewer(const ViewOptions& options)
     GLFWwindow* window = window_.window();
     glfwSetWindowUserPointer(window, this);
     // Installed before ImGui's, which chains to them. The moments of presses and releases time
-    // the held keys' moves (HeldKeys.h).
-    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    // the held keys' moves (HeldKeys.h): when the display server sent them (KeyEventTimes.h),
+    // else when they were read. Events are also read while a frame renders (the renderer's wait
+    // hook, rendererDesc), so a press's action waits for the next frame's start rather than
+    // changing the settings of the frame being drawn.
+    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int scancode, int action, int) {
+        if (action == GLFW_REPEAT)
+            return;
         Viewer& viewer = of(w);
+        const double readAt = glfwGetTime();
+        const double time = viewer.keyTimes_.take(scancode, action == GLFW_PRESS, readAt).value_or(readAt);
         if (action == GLFW_RELEASE)
-            viewer.heldKeys_.release(key, glfwGetTime());
+            viewer.heldKeys_.release(key, time);
         if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard) {
-            viewer.heldKeys_.press(key, glfwGetTime());
-            viewer.onKeyPressed(key);
+            viewer.heldKeys_.press(key, time);
+            viewer.pressedKeys_.push_back(key);
         }
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
@@ -154,7 +162,7 @@ Viewer::~Viewer()
     gl::setDefaultShaderReader(gl::embeddedShaderReader());
 }
 
-RendererDesc Viewer::rendererDesc() const
+RendererDesc Viewer::rendererDesc()
 {
     DisplaySettings shown = display_;
     if (autoExposure_)
@@ -170,7 +178,12 @@ RendererDesc Viewer::rendererDesc() const
             .display = shown,
             .wireframe = wireframe_,
             .driver = options_.driver.overrides,
-            .culling = options_.culling};
+            .culling = options_.culling,
+            // Input read between passes and during the waits for the GPU (issue 48): a key's
+            // press and release are then timed to within PassProfiler::kWaitHookInterval and a
+            // pass, not to a whole frame, which on llvmpipe lasts up to seconds. GLFW reads
+            // events on the main thread only, which is the one that renders.
+            .waitHook = [this] { readInput(); }};
 }
 
 // The technique to draw with (the renderer makes each variant once). A technique whose
@@ -339,12 +352,26 @@ void Viewer::writeScreenshot(const std::string& path)
     std::fprintf(stderr, "manylights view: wrote %s\n", path.c_str());
 }
 
+void Viewer::readInput()
+{
+    glfwPollEvents();
+    const double now = glfwGetTime();
+    inputGapSeconds_ = std::max(inputGapSeconds_, now - lastInputRead_);
+    lastInputRead_ = now;
+}
+
 void Viewer::run()
 {
     double last = glfwGetTime();
+    lastInputRead_ = last;
     while (!quit_ && !glfwWindowShouldClose(window_.window())) {
-        glfwPollEvents();
+        readInput();
         const double now = glfwGetTime();
+        // The frame that just ended: its length, and the longest it went without reading input.
+        lastFrameInput_ = {now - last, std::exchange(inputGapSeconds_, 0.0)};
+        // The keys pressed since the last frame began, also those read while it rendered.
+        for (const int key : std::exchange(pressedKeys_, {}))
+            onKeyPressed(key);
         const double elapsed = now - last;
         last = now;
         frameSeconds_ = elapsed;
@@ -366,6 +393,7 @@ void Viewer::run()
 
         renderScene();
         showImage();
+        readInput();  // after the views converted and shown on the CPU (the G-buffer views, light-count)
         drawAxes();
         if (!pendingScreenshot_.empty()) {
             writeScreenshot(pendingScreenshot_);

@@ -123,6 +123,11 @@ void Viewer::runScript()
         case ScriptCommand::Kind::Speed: speed_ = static_cast<float>(command.number); break;
         case ScriptCommand::Kind::Toggle: {
             const std::string& what = command.words[0];
+            // As a click on the panel's arrow, and on its list of keys, would do.
+            if (what == "panel-collapsed" || what == "panel-keys") {
+                (what == "panel-collapsed" ? togglePanelCollapsed_ : togglePanelKeys_) = true;
+                break;
+            }
             bool& flag = what == "ambient"         ? ambient_
                          : what == "diffuse"       ? diffuse_
                          : what == "specular"      ? specular_

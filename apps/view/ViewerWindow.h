@@ -23,10 +23,38 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "platform/window/KeyEventTimes.h"
 #include "platform/window/WindowContext.h"
 #include "render/Renderer.h"
 
 namespace manylights {
+
+// A rectangle in the window's pixels (ImGui's), rows top to bottom.
+struct WindowRect {
+    float x = 0.0f;
+    float y = 0.0f;
+    float width = 0.0f;
+    float height = 0.0f;
+};
+
+// What the panel drew in a frame, for the script's report-panel (docs/viewer.md "Scripts";
+// issue 48): every piece of text with the rectangle it takes and the right edge it must end
+// before (the panel's, a table cell's, a combo's arrow), and the controls drawn disabled with
+// the reason their tooltips give.
+struct PanelRecord {
+    struct Text {
+        std::string text;
+        WindowRect rect;
+        float limit = 0.0f;
+        bool fits() const { return rect.x + rect.width <= limit; }
+    };
+    struct Unavailable {
+        std::string control;
+        std::string reason;
+    };
+    std::vector<Text> texts;
+    std::vector<Unavailable> unavailable;
+};
 
 class Viewer {
 public:
@@ -51,7 +79,10 @@ private:
 
     Technique& technique();
     // The renderer's settings as the viewer's state has them (the one route they take).
-    RendererDesc rendererDesc() const;
+    RendererDesc rendererDesc();
+    // Reads the window's events (GLFW reads them on the main thread only): at the start of a
+    // frame, and while it renders, from the renderer's wait hook (issue 48).
+    void readInput();
     // A key pressed: its action in the key map (apps/view/Keymaps.h), if any.
     void onKeyPressed(int key);
     void perform(KeyAction action);
@@ -76,12 +107,20 @@ private:
     void writePanelReport(const std::string& path) const;
     // The panel's environment section (ViewerPanel.cpp): nothing without one.
     void drawEnvironmentPanel();
-    std::string effectiveTechnique() const { return wireframe_ ? "forward" : techniqueName_; }
+    // The panel's narrowest width at which none of its text is cut (ViewerPanel.cpp).
+    float minimumExpandedPanelWidth() const;
+    // Where the light-count legend is in the window this frame; none in other views or where
+    // the window is too small for it.
+    std::optional<WindowRect> shownLegend() const;
+    // The wireframe is drawn with forward, in the final view only (Renderer::renderFrame).
+    bool showsWireframe() const { return wireframe_ && view_ == ViewMode::Final; }
+    std::string effectiveTechnique() const { return showsWireframe() ? "forward" : techniqueName_; }
 
     ViewOptions options_;
     const Scene scene_;
     std::vector<Light> lights_;
     WindowContext window_;
+    KeyEventTimes keyTimes_{window_.window()};  // when the server sent each key event (X11)
     std::unique_ptr<Renderer> renderer_;
     int width_ = 1;  // the window's framebuffer, which frames are rendered at
     int height_ = 1;
@@ -117,9 +156,13 @@ private:
     };
     std::optional<PanelRect> panelRect_;
     std::optional<bool> smallWindow_;
-    bool rotating_ = false;           // stencil-volumes 'r': the camera orbits the look-at point
-    bool directionalShadows_ = true;  // where the scene's directional light asks for them
-    int shadowLights_ = 0;            // local lights with shadow maps (--shadow-lights)
+    bool panelDrawn_ = false;  // false where F1 hid it or the window cannot hold even its title
+    PanelRecord panelRecord_;
+    bool togglePanelCollapsed_ = false;  // the script's `toggle panel-collapsed`
+    bool togglePanelKeys_ = false;       // the script's `toggle panel-keys`
+    bool rotating_ = false;              // stencil-volumes 'r': the camera orbits the look-at point
+    bool directionalShadows_ = true;     // where the scene's directional light asks for them
+    int shadowLights_ = 0;               // local lights with shadow maps (--shadow-lights)
     bool quit_ = false;
     // The display settings (the scene's, then the command line's; the panel edits them).
     // With auto-exposure the exposure follows the lit image's log-average luminance, adapting
@@ -139,6 +182,17 @@ private:
     gl::VertexArray emptyVertexArray_{"axes (no attributes)"};
 
     HeldKeys heldKeys_;  // the window's key presses and releases, by when they came
+    // The longest time between two reads of input in the frame so far, when the last was, and
+    // for the last whole frame, its length and that longest time (the panel and its report
+    // show them).
+    double inputGapSeconds_ = 0.0;
+    double lastInputRead_ = 0.0;
+    struct FrameInput {
+        double frameSeconds = 0.0;
+        double longestGapSeconds = 0.0;
+    };
+    FrameInput lastFrameInput_;
+    std::vector<int> pressedKeys_;  // pressed since the frame began: their actions run at the next
     bool dragging_ = false;
     double dragX_ = 0.0;
     double dragY_ = 0.0;

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/Error.h"
+#include "gl/Fence.h"
 
 namespace manylights {
 
@@ -19,6 +20,17 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 PassProfiler::PassProfiler(PassTiming timing) : timing_(timing), countInvocations_(gl::hasPipelineStatistics())
 {
     current_ = freshFrame();
+}
+
+void PassProfiler::finishGpu() const
+{
+    if (!waitHook_) {
+        glFinish();
+        return;
+    }
+    const gl::Fence fence = gl::Fence::afterIssuedCommands();
+    while (!fence.waitFor(kWaitHookInterval))
+        waitHook_();
 }
 
 PassProfiler::FrameQueries PassProfiler::freshFrame()
@@ -40,7 +52,7 @@ void PassProfiler::beginFrame()
     current_.passCount = 0;
     current_.wallMs.reset();
     if (timing_ == PassTiming::Wall) {
-        glFinish();
+        finishGpu();
         current_.wallStart = std::chrono::steady_clock::now();
     } else {
         // Back to back: this frame's time runs from the end of the last one's issue.
@@ -79,7 +91,7 @@ PassProfiler::Scope::Scope(PassProfiler& profiler, std::string_view name)
     PassQueries& queries = profiler_.nextPass(name);
     const PassTiming timing = profiler_.current_.timing;
     if (timing == PassTiming::Wall)
-        glFinish();
+        profiler_.finishGpu();
     start_ = std::chrono::steady_clock::now();
     if (timing != PassTiming::Frame) {
         queries.time.begin();
@@ -98,10 +110,12 @@ PassProfiler::Scope::~Scope()
             queries.invocations.end();
     }
     if (timing == PassTiming::Wall) {
-        glFinish();
+        profiler_.finishGpu();
         queries.wallMs = millisecondsSince(start_);
     }
     profiler_.inPass_ = false;
+    if (profiler_.waitHook_)
+        profiler_.waitHook_();
 }
 
 void PassProfiler::endFrameQueued()
@@ -109,7 +123,7 @@ void PassProfiler::endFrameQueued()
     ML_ASSERT(!inPass_);
     current_.end.stamp();
     if (current_.timing == PassTiming::Wall) {
-        glFinish();
+        finishGpu();
         current_.wallMs = millisecondsSince(current_.wallStart);
         lastIssueEnd_.reset();
     } else {

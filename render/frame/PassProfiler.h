@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +66,15 @@ public:
 
     PassTiming timing() const { return timing_; }
 
+    // How often a wait for the GPU calls the wait hook.
+    static constexpr std::chrono::milliseconds kWaitHookInterval{10};
+    // Called after every pass and, while a wait for the GPU around a pass or a frame lasts
+    // (under PassTiming::Wall), every kWaitHookInterval: the viewer reads its input there, so
+    // that it knows when a key went down or up to within that much even in a frame of seconds
+    // (issue 48, docs/viewer.md "Controls"). The hook must not issue GL commands. Empty: none,
+    // and the waits are plain glFinish calls.
+    void setWaitHook(std::function<void()> hook) { waitHook_ = std::move(hook); }
+
     void beginFrame();
     // Ends the frame's queries without waiting for them: its sample comes out of
     // takeOldestFrame.
@@ -100,10 +110,14 @@ private:
         std::optional<double> wallMs;  // known at its end under Wall, or when issued back to back
     };
     PassQueries& nextPass(std::string_view name);
+    // Waits until the GPU has run every command issued: glFinish, or with a wait hook, a fence
+    // waited on in steps of kWaitHookInterval with the hook called between them.
+    void finishGpu() const;
     FrameQueries freshFrame();
     FrameSample sampleOf(const FrameQueries& frame) const;
 
     PassTiming timing_;
+    std::function<void()> waitHook_;
     bool countInvocations_;
     bool inPass_ = false;  // GL allows one active time query: passes do not nest
     FrameQueries current_;

@@ -1,6 +1,8 @@
 // The viewer: its camera moves and script parser without a window, and the whole viewer under
 // Xvfb driven by --script: it starts, renders, resizes, switches every technique and view,
-// and its screenshots equal the headless `render` of the same frame.
+// and its screenshots equal the headless `render` of the same frame; its panel, seen through
+// the script's report-panel, fits the window, stays clear of the light-count legend, cuts no
+// text and disables what cannot apply (issues 43 and 48).
 //
 // Screenshot tolerance: 1 level of 255 per channel. The window's framebuffer is 8-bit; GL
 // converts the renderer's float colour to it (round-to-nearest is the spec's rule, but the
@@ -13,14 +15,19 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <stb/stb_image.h>
 #include <sys/wait.h>
 
 #include "apps/view/CameraControls.h"
 #include "apps/view/ViewScript.h"
+#include "apps/view/ViewerWindow.h"
 #include "core/Error.h"
 #include "render/Techniques.h"
 #include "render/Views.h"
@@ -176,7 +183,7 @@ int runViewer(const fs::path& dir, const std::string& script, const std::string&
     }
     fs::remove(dir / "viewer.status");
     const std::string command = "cd '" + dir.string() +
-                                "' && xvfb-run -a -s '-screen 0 1024x768x24' sh -c "
+                                "' && xvfb-run -a -s '-screen 0 1600x900x24' sh -c "
                                 "'\"$0\" \"$@\" >viewer.log 2>&1; echo $? >viewer.status' '" MANYLIGHTS_EXE
                                 "' view --shader-dir '' --size 160x90 --script script.txt " +
                                 args;
@@ -525,6 +532,186 @@ TEST(Viewer, PanelFitsTheWindow)
     EXPECT_GT(large.height, 100.0);  // its contents, not a title bar
     expectInsideTheWindow(large, "large.txt");
     EXPECT_EQ(readPanelReport(dir / "hidden.txt").state, "hidden");
+}
+
+struct LabelFit {
+    double x = 0.0;
+    double width = 0.0;
+    double limit = 0.0;
+    bool fits = false;
+    std::string text;
+};
+
+// The rest of report-panel's lines (docs/viewer.md "Scripts"): the legend's rectangle, each
+// text's rectangle and fit, and the controls drawn disabled with their reasons.
+struct PanelDetails {
+    std::optional<WindowRect> legend;  // as the viewer places the panel: apps/view/ViewerWindow.h
+    std::vector<LabelFit> labels;
+    std::map<std::string, std::string> disabled;  // control: reason
+};
+
+PanelDetails readPanelDetails(const fs::path& path)
+{
+    PanelDetails details;
+    std::istringstream lines(readText(path));
+    std::string line;
+    std::getline(lines, line);  // the panel's line: readPanelReport
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string kind;
+        words >> kind;
+        if (kind == "legend") {
+            WindowRect legend;
+            words >> legend.x >> legend.y >> legend.width >> legend.height;
+            details.legend = legend;
+        } else if (kind == "label") {
+            LabelFit label;
+            double y = 0.0;
+            double height = 0.0;
+            std::string fit;
+            words >> label.x >> y >> label.width >> height >> label.limit >> fit;
+            label.fits = fit == "fits";
+            label.text = line.substr(line.find('\t') + 1);
+            details.labels.push_back(label);
+        } else if (kind == "disabled") {
+            const std::size_t control = line.find('\t') + 1;
+            const std::size_t reason = line.find('\t', control);
+            details.disabled[line.substr(control, reason - control)] = line.substr(reason + 1);
+        }
+    }
+    return details;
+}
+
+bool overlap(const PanelReport& panel, const WindowRect& legend)
+{
+    return panel.x < legend.x + legend.width && legend.x < panel.x + panel.width &&
+           panel.y < legend.y + legend.height && legend.y < panel.y + panel.height;
+}
+
+// Each report's panel is inside its window, clear of the legend, and cuts none of its text.
+void expectTidyPanel(const fs::path& file)
+{
+    const std::string what = file.filename().string();
+    const PanelReport panel = readPanelReport(file);
+    const PanelDetails details = readPanelDetails(file);
+    if (panel.state == "hidden")
+        return;
+    expectInsideTheWindow(panel, what);
+    if (details.legend) {
+        EXPECT_FALSE(overlap(panel, *details.legend))
+            << what << ": panel " << panel.x << "," << panel.y << " " << panel.width << "x" << panel.height
+            << ", legend " << details.legend->x << "," << details.legend->y << " " << details.legend->width << "x"
+            << details.legend->height;
+    }
+    EXPECT_FALSE(details.labels.empty()) << what;  // at least the title
+    for (const LabelFit& label : details.labels)
+        EXPECT_TRUE(label.fits) << what << ": '" << label.text << "' ends at " << label.x + label.width << ", past "
+                                << label.limit;
+}
+
+bool hasLabel(const PanelDetails& details, const std::string& text)
+{
+    return std::any_of(details.labels.begin(), details.labels.end(),
+                       [&](const LabelFit& label) { return label.text == text; });
+}
+
+// Issue 48: at 1280x720 in the light-count view the open panel hid the legend, and text was cut
+// at its edge ("towards the look-at p", "env. rotation (d"). At sizes from 1280x720 down to a
+// window too small for even the panel's title, collapsed as it starts and opened by its arrow
+// (toggle panel-collapsed), with the list of keys open: the panel stays clear of the legend and
+// inside the window, and every text it draws ends before the edge it is drawn in.
+TEST(Viewer, PanelStaysClearOfTheLegendAndCutsNoText)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    const std::vector<std::pair<int, int>> sizes{{1280, 720}, {960, 540}, {640, 360}, {400, 300},
+                                                 {320, 180},  {240, 135}, {160, 90},  {64, 36}};
+    std::string script = "pause\ntechnique forward\nview light-count\ntoggle panel-keys\n";
+    std::vector<std::string> reports;
+    for (const auto& [width, height] : sizes) {
+        const std::string name = std::to_string(width) + "x" + std::to_string(height);
+        script += "resize " + std::to_string(width) + " " + std::to_string(height) + "\nframes 3\nreport-panel " +
+                  name + ".txt\ntoggle panel-collapsed\nframes 3\nreport-panel " + name +
+                  "-toggled.txt\ntoggle panel-collapsed\nframes 1\n";
+        reports.push_back(name + ".txt");
+        reports.push_back(name + "-toggled.txt");
+    }
+    // The panel and the legend are the same over any scene: a small one keeps the large
+    // windows' frames short on llvmpipe.
+    ASSERT_EQ(runViewer(dir, script + "quit\n", "'" MANYLIGHTS_SOURCE_DIR "/tests/scenes/one_light_on_one_spot.json'"),
+              0)
+        << readText(dir / "viewer.log");
+    for (const std::string& report : reports)
+        expectTidyPanel(dir / report);
+
+    // At 1280x720 the panel is open, the legend is shown, and the keys' descriptions are there.
+    const PanelReport large = readPanelReport(dir / "1280x720.txt");
+    ASSERT_EQ(large.windowWidth, 1280);
+    EXPECT_EQ(large.state, "expanded");
+    const PanelDetails largeDetails = readPanelDetails(dir / "1280x720.txt");
+    ASSERT_TRUE(largeDetails.legend);
+    EXPECT_TRUE(hasLabel(largeDetails, "towards the look-at point"));
+    EXPECT_GT(large.height, 100.0);
+    // 320x180 starts collapsed, and opens; 240x135 is too narrow for the open panel and stays
+    // collapsed; 64x36 holds no title.
+    EXPECT_EQ(readPanelReport(dir / "320x180.txt").state, "collapsed");
+    EXPECT_EQ(readPanelReport(dir / "320x180-toggled.txt").state, "expanded");
+    EXPECT_TRUE(readPanelDetails(dir / "320x180-toggled.txt").legend);
+    EXPECT_EQ(readPanelReport(dir / "240x135-toggled.txt").state, "collapsed");
+    EXPECT_EQ(readPanelReport(dir / "64x36.txt").state, "hidden");
+}
+
+// The environment's section fits too (its rotation's label was cut), and the controls that
+// cannot apply are disabled with the reason: the studio has no directional light and no point
+// or spot light; in the normal view no lighting shows.
+// Runs the viewer on `scene` (from the source tree) with its panel opened in a 320x180 window,
+// where it starts collapsed, then the rest of the script.
+int runWithOpenPanel(const fs::path& dir, const std::string& scene, const std::string& rest)
+{
+    return runViewer(dir,
+                     "pause\ntechnique forward\nresize 320 180\nframes 2\ntoggle panel-collapsed\nframes 3\n" + rest,
+                     "'" MANYLIGHTS_SOURCE_DIR "/" + scene + "'");
+}
+
+TEST(Viewer, PanelDisablesWhatCannotApplyAndSaysWhy)
+{
+    if (!haveXvfb())
+        GTEST_SKIP() << "Xvfb is not installed (scripts/setup.sh installs the xvfb package); the viewer is not tested";
+    const fs::path dir = scratch();
+    ASSERT_EQ(runWithOpenPanel(dir, "scenes/studio.json",
+                               "report-panel studio.txt\nview normal\nframes 2\nreport-panel normal.txt\nquit\n"),
+              0)
+        << readText(dir / "viewer.log");
+    for (const char* report : {"studio.txt", "normal.txt"})
+        expectTidyPanel(dir / report);
+    // Opened in a small window (the panel's narrowest but one).
+    EXPECT_EQ(readPanelReport(dir / "studio.txt").state, "expanded");
+    const PanelDetails shown = readPanelDetails(dir / "studio.txt");
+    EXPECT_TRUE(hasLabel(shown, "env. rotation"));
+    EXPECT_EQ(shown.disabled.count("directional shadows"), 1u);
+    EXPECT_NE(shown.disabled.at("directional shadows").find("no directional light"), std::string::npos);
+    EXPECT_EQ(shown.disabled.count("shadowed lights"), 1u);
+    EXPECT_EQ(shown.disabled.count("ambient / diffuse / specular"), 0u);
+    EXPECT_EQ(shown.disabled.count("technique"), 0u);
+    const PanelDetails normal = readPanelDetails(dir / "normal.txt");
+    for (const char* control : {"ambient / diffuse / specular", "technique", "env. intensity / rotation / background",
+                                "auto exposure / exposure / tone curve / sRGB / FXAA"})
+        EXPECT_EQ(normal.disabled.count(control), 1u) << control;
+
+    // A scene whose directional light casts shadows, with SSAO on: both apply, until SSAO is off.
+    ASSERT_EQ(runWithOpenPanel(dir, "tests/scenes/shadows_and_ssao.json",
+                               "report-panel on.txt\ntoggle ssao\nframes 2\nreport-panel off.txt\nquit\n"),
+              0)
+        << readText(dir / "viewer.log");
+    ASSERT_EQ(readPanelReport(dir / "on.txt").state, "expanded");  // else no control is drawn at all
+    const PanelDetails on = readPanelDetails(dir / "on.txt");
+    EXPECT_EQ(on.disabled.count("directional shadows"), 0u);
+    EXPECT_EQ(on.disabled.count("shadowed lights"), 0u);
+    EXPECT_EQ(on.disabled.count("SSAO radius / strength"), 0u);
+    const PanelDetails off = readPanelDetails(dir / "off.txt");
+    ASSERT_EQ(off.disabled.count("SSAO radius / strength"), 1u);
+    EXPECT_EQ(off.disabled.at("SSAO radius / strength"), "SSAO is off.");
 }
 
 // The light-count view shows the legend `render` draws into its PNG, title and all.
