@@ -12,7 +12,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "render/output/ExrFile.h"
-#include "render/scene/StbDecoding.h"
+#include "render/output/StbDecoding.h"
 
 namespace manylights {
 

@@ -7,7 +7,7 @@
 #include "core/Error.h"
 #include "core/InputFile.h"
 #include "gl/Driver.h"
-#include "render/scene/StbDecoding.h"
+#include "render/output/StbDecoding.h"
 
 namespace manylights {
 

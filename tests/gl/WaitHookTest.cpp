@@ -23,8 +23,8 @@ TEST_F(WaitHookTest, RunsAfterEveryPassAndLeavesTheImageAlone)
     for (PassTiming timing : {PassTiming::Wall, PassTiming::Gpu, PassTiming::Frame}) {
         int calls = 0;
         Renderer hooked(scene, lights,
-                        {.width = 96, .height = 54, .passTiming = timing, .waitHook = [&calls] { ++calls; }});
-        Renderer plain(scene, lights, {.width = 96, .height = 54, .passTiming = timing});
+                        {.width = 96, .height = 54, .driver = {.passTiming = timing}, .waitHook = [&calls] { ++calls; }});
+        Renderer plain(scene, lights, {.width = 96, .height = 54, .driver = {.passTiming = timing}});
         for (Renderer* renderer : {&hooked, &plain})
             renderer->setTime(0.7);
         const FrameSample sample = hooked.renderFrame("clustered", ViewMode::Final);

@@ -1,4 +1,4 @@
-#include "render/scene/StbDecoding.h"
+#include "render/output/StbDecoding.h"
 
 #include <algorithm>
 #include <array>
