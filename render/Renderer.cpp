@@ -309,7 +309,6 @@ void Renderer::countWork()
     targets_->inRangeCounts.bindImage(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, GL_READ_WRITE);
     if (!inRangeProgram_) {
         gl::Defines defines = gbufferDefines(desc_.gbufferLayout);
-        addLightBatchDefines(defines);
         defines.emplace_back("LIGHTS_PER_BATCH", std::to_string(kLightsPerBatch) + "u");
         if (desc_.inRangeBruteForce)
             defines.emplace_back("BRUTE_FORCE", "1");

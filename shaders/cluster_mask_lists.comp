@@ -22,6 +22,7 @@
 // at most kMaskedListLights / 32, plus half the cluster's lights, at most kMaskedListLights / 2:
 // 8,720 for 16,384 lights, within render/culling/LightBatches.h's bound (ClusterLists.cpp checks).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"
 #include "lib/clusters.glsl"

@@ -47,6 +47,7 @@
 // of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
 // about 9,200 at most, within render/culling/LightBatches.h's bound.
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"

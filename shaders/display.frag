@@ -7,10 +7,11 @@
 // kMaxSupersample² = 64. A full-screen fragment pass rather than a compute one: llvmpipe runs
 // it faster (docs/performance.md).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #include "lib/display.glsl"
 
 layout(binding = DISPLAY_SOURCE_UNIT) uniform sampler2D litImage;
-layout(location = 0) uniform float exposureScale;  // 2^EV
+layout(location = DISPLAY_EXPOSURE_SCALE_LOCATION) uniform float exposureScale;  // 2^EV
 layout(location = 0) out vec4 displayed;
 #ifdef COPY_OUTPUT
 // With FXAA: the same picture into FXAA's output, whose non-edge pixels it keeps.

@@ -6,6 +6,7 @@
 // cluster's list is shorter than the part store nothing, the others add the part to the lit
 // image (lib/list_pixel.glsl). Built without GLOBAL_LIGHT_LIST: part 0 walks the global list.
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/light_batch.glsl"
 #include "lib/lighting.glsl"

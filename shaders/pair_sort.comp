@@ -15,6 +15,7 @@
 // lighting's per-pixel reach test then reads the lists' spheres in order instead of the
 // lights' positions scattered over the light buffer (lib/cluster_lists.glsl).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #include "lib/cluster_list_status.glsl"
 #ifdef PAIR_SORT_GATHER
 #include "lib/lights.glsl"

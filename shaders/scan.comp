@@ -9,6 +9,7 @@
 // llvmpipe runs barriers by switching between invocations, which costs more than the walk, and
 // the walk keeps the sum's order fixed. Loop iterations: SCAN_BLOCK per invocation.
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 
 layout(local_size_x = 64) in;
 layout(location = SCAN_COUNT_LOCATION) uniform uint count;  // elements of data

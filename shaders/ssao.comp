@@ -4,6 +4,7 @@
 // visible surfaces. Samples are taken in view space from a fixed kernel, rotated per pixel
 // by a 4x4 tiled noise (shaders/ssao_blur.comp averages the 4x4 pattern away).
 #include "lib/bindings.glsl"
+#include "lib/locations.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"
 #include "lib/gbuffer.glsl"
@@ -11,7 +12,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D sceneDepth;
 layout(binding = OCCLUSION_IMAGE_UNIT, r32f) uniform writeonly image2D rawOcclusion;
-layout(location = 20) uniform vec4 ssaoParams;  // x: radius, y: strength, z: depth bias (world units)
+layout(location = SSAO_PARAMS_LOCATION) uniform vec4 ssaoParams;  // x: radius, y: strength, z: depth bias (world units)
 
 const int KERNEL_SIZE = 16;
 layout(std430, binding = SSAO_SAMPLES_BUFFER_BINDING) readonly buffer SsaoSamples {

@@ -123,20 +123,13 @@ constexpr ScriptKeyName kScriptKeys[] = {
 
 const std::vector<std::string>& keymapNames()
 {
-    static const std::vector<std::string> names{"default", "deferred-course", "stencil-volumes"};
+    static const std::vector<std::string> names = namesOf(kKeymapNames);
     return names;
 }
 
-std::string_view keymapName(Keymap map) { return keymapNames()[static_cast<std::size_t>(map)]; }
+std::string_view keymapName(Keymap map) { return nameOf(kKeymapNames, map); }
 
-std::optional<Keymap> parseKeymap(std::string_view name)
-{
-    const std::vector<std::string>& all = keymapNames();
-    const auto it = std::find(all.begin(), all.end(), name);
-    if (it == all.end())
-        return std::nullopt;
-    return static_cast<Keymap>(it - all.begin());
-}
+std::optional<Keymap> parseKeymap(std::string_view name) { return parseName(kKeymapNames, name); }
 
 bool isHeldAction(KeyAction action) { return action <= KeyAction::LookDown; }
 

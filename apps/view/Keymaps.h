@@ -9,12 +9,19 @@
 #include <string_view>
 #include <vector>
 
+#include "core/EnumNames.h"
+
 namespace manylights {
 
 // Which keys do what: the viewer's own, or those of one of the seeds the viewer grew from (the
 // deferred-rendering course project, the stencil light-volume write-up), so that their users'
 // hands need not relearn.
 enum class Keymap { Default, DeferredCourse, StencilVolumes };
+inline constexpr EnumNames<Keymap, 3> kKeymapNames{{
+    {Keymap::Default, "default"},
+    {Keymap::DeferredCourse, "deferred-course"},
+    {Keymap::StencilVolumes, "stencil-volumes"},
+}};
 const std::vector<std::string>& keymapNames();  // "default", "deferred-course", "stencil-volumes"
 std::string_view keymapName(Keymap map);
 std::optional<Keymap> parseKeymap(std::string_view name);

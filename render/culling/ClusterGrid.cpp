@@ -27,7 +27,6 @@ GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupS
 
 gl::Defines clusterGridDefines(gl::Defines defines, const ClusterGridShape& shape)
 {
-    addLightBatchDefines(defines);
     ML_ASSERT(shape.tileSize >= 4 && shape.tileSize <= 32);
     defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(shape.tileSize));
     ML_ASSERT(shape.slices >= 1 && shape.slices <= 32);

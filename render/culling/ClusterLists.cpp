@@ -12,6 +12,7 @@
 #include "core/Error.h"
 #include "gl/Driver.h"
 #include "render/culling/LightTiles.h"
+#include "render/programs/Locations.h"
 #include "render/programs/LoopBudget.h"
 #include "render/scene/GpuScene.h"
 
@@ -21,15 +22,6 @@ namespace {
 
 // Uniform locations of cluster_pairs.comp and pair_sort.comp (the
 // shaders get them as defines, so the numbers live here only).
-constexpr int kPairLightCountLocation = 52;
-constexpr int kPairGlobalTilesLocation = 53;
-constexpr int kPairGlobalPlannedLocation = 60;
-constexpr int kPairCapacityLocation = 54;
-constexpr int kSortShiftLocation = 55;
-constexpr int kSortChunksLocation = 56;
-constexpr int kSortCapacityLocation = 57;
-constexpr int kMaskWordsLocation = 61;
-constexpr int kMaskClustersLocation = 62;
 constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
 // The most tiles one invocation of cluster_pairs.comp walks for a light; lights covering
 // more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64 measured alike
@@ -62,14 +54,9 @@ gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit,
     gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
     if (gridTexels)
         defines.emplace_back("CLUSTER_GRID_TEXELS", "1");
-    defines.emplace_back("CLUSTER_PAIR_LIGHT_COUNT_LOCATION", std::to_string(kPairLightCountLocation));
-    defines.emplace_back("CLUSTER_PAIR_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
     defines.emplace_back("EMIT_PAIRS", emit ? "1" : "0");
-    defines.emplace_back("CLUSTER_PAIR_GLOBAL_TILES_LOCATION", std::to_string(kPairGlobalTilesLocation));
-    defines.emplace_back("CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION", std::to_string(kPairGlobalPlannedLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
-    defines.emplace_back("CLUSTER_MASK_WORDS_LOCATION", std::to_string(kMaskWordsLocation));
     if (wide)
         defines.emplace_back("WIDE_LIGHTS", "1");
     if (masks)
@@ -81,9 +68,6 @@ gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit,
 gl::Program makeMaskListProgram(const ClusterGridShape& shape)
 {
     gl::Defines defines = clusterGridDefines({}, shape);
-    defines.emplace_back("CLUSTER_MASK_WORDS_LOCATION", std::to_string(kMaskWordsLocation));
-    defines.emplace_back("CLUSTER_MASK_CLUSTERS_LOCATION", std::to_string(kMaskClustersLocation));
-    defines.emplace_back("CLUSTER_MASK_CAPACITY_LOCATION", std::to_string(kPairCapacityLocation));
     return gl::Program("cluster mask lists", {{GL_COMPUTE_SHADER, "cluster_mask_lists.comp"}}, defines);
 }
 
@@ -91,10 +75,7 @@ enum class SortPass { Count, Scatter, ScatterGather };
 
 gl::Defines sortDefines(SortPass pass)
 {
-    gl::Defines defines = {{"PAIR_SORT_SHIFT_LOCATION", std::to_string(kSortShiftLocation)},
-                           {"PAIR_SORT_CHUNKS_LOCATION", std::to_string(kSortChunksLocation)},
-                           {"PAIR_SORT_CAPACITY_LOCATION", std::to_string(kSortCapacityLocation)},
-                           {"PAIR_SORT_CHUNK", std::to_string(kSortChunk)},
+    gl::Defines defines = {{"PAIR_SORT_CHUNK", std::to_string(kSortChunk)},
                            {"PAIR_SORT_RADIX", std::to_string(1 << kSortRadixBits)}};
     if (pass != SortPass::Count)
         defines.emplace_back("PAIR_SORT_SCATTER", "1");
@@ -135,7 +116,6 @@ void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList)
 {
     defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
-    defines.emplace_back("CLUSTER_LIST_PART_LOCATION", std::to_string(kClusterListPartLocation));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
     if (texels)
         defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
@@ -296,14 +276,15 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         passes.run(emit ? indirectPass : pairPass, [&] {
             bindAll();
             const gl::Program& narrow = pairProgram(false, run, gridTexels);
-            narrow.set(kPairLightCountLocation, lightCount);
-            narrow.set(kPairCapacityLocation, capacity_);
+            narrow.set(locations::CLUSTER_PAIR_LIGHT_COUNT_LOCATION, lightCount);
+            narrow.set(locations::CLUSTER_PAIR_CAPACITY_LOCATION, capacity_);
             if (!emit) {
-                narrow.set(kPairGlobalTilesLocation, globalLightTiles(globalLightGridFraction_, tiles));
-                narrow.set(kPairGlobalPlannedLocation, globalListPlanned_ ? 1u : 0u);
+                narrow.set(locations::CLUSTER_PAIR_GLOBAL_TILES_LOCATION,
+                           globalLightTiles(globalLightGridFraction_, tiles));
+                narrow.set(locations::CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION, globalListPlanned_ ? 1u : 0u);
             }
             if (run == PairRun::Mask)
-                narrow.set(kMaskWordsLocation, maskWords);
+                narrow.set(locations::CLUSTER_MASK_WORDS_LOCATION, maskWords);
             narrow.use();
             if (emit) {
                 statusBuffer_.bindAsDispatchIndirect();
@@ -315,10 +296,10 @@ void ClusterLists::build(const GpuScene& scene, FramePasses& passes, const Clust
         passes.run(indirectPass, [&] {
             bindAll();
             const gl::Program& wide = pairProgram(true, run, gridTexels);
-            wide.set(kPairCapacityLocation, capacity_);
-            wide.set(kRowsPerBandLocation, rowsPerBand);
+            wide.set(locations::CLUSTER_PAIR_CAPACITY_LOCATION, capacity_);
+            wide.set(locations::LIGHT_TILE_ROWS_PER_BAND_LOCATION, rowsPerBand);
             if (run == PairRun::Mask)
-                wide.set(kMaskWordsLocation, maskWords);
+                wide.set(locations::CLUSTER_MASK_WORDS_LOCATION, maskWords);
             wide.use();
             statusBuffer_.bindAsDispatchIndirect();
             glDispatchComputeIndirect(static_cast<GLintptr>(offsetof(Status, wideLightGroups)));
@@ -384,9 +365,9 @@ void ClusterLists::listMasks(FramePasses& passes, std::uint32_t clusterCount, st
         clusterCounts_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_COUNTS_BUFFER_BINDING);
         lights_[0].bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_LIGHTS_BUFFER_BINDING);
         spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_SPHERES_BUFFER_BINDING);
-        maskLists_.set(kMaskWordsLocation, words);
-        maskLists_.set(kMaskClustersLocation, clusterCount);
-        maskLists_.set(kPairCapacityLocation, capacity_);
+        maskLists_.set(locations::CLUSTER_MASK_WORDS_LOCATION, words);
+        maskLists_.set(locations::CLUSTER_MASK_CLUSTERS_LOCATION, clusterCount);
+        maskLists_.set(locations::CLUSTER_PAIR_CAPACITY_LOCATION, capacity_);
         maskLists_.use();
         dispatchComputeInRows(groupsFor(clusterCount));
     });
@@ -410,9 +391,9 @@ void ClusterLists::sortPairs(FramePasses& passes, std::uint32_t clusterCount)
         };
         const auto dispatch = [&](const gl::Program& program) {
             bindPairs();
-            program.set(kSortShiftLocation, static_cast<unsigned>(shift));
-            program.set(kSortChunksLocation, chunks);
-            program.set(kSortCapacityLocation, capacity_);
+            program.set(locations::PAIR_SORT_SHIFT_LOCATION, static_cast<unsigned>(shift));
+            program.set(locations::PAIR_SORT_CHUNKS_LOCATION, chunks);
+            program.set(locations::PAIR_SORT_CAPACITY_LOCATION, capacity_);
             program.use();
             glDispatchCompute(groupsFor(chunks), 1, 1);
         };

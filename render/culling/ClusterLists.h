@@ -79,8 +79,7 @@ namespace manylights {
 inline constexpr std::uint32_t kClusterListPart = 4096;
 // The radix sort's digit: 16 values, each chunk's counts in 16 registers' worth of a local array.
 inline constexpr int kSortRadixBits = 4;
-inline constexpr std::uint32_t kSortChunk = 64;      // pairs one invocation of pair_sort.comp walks
-inline constexpr int kClusterListPartLocation = 58;  // long_list_lighting.comp's part
+inline constexpr std::uint32_t kSortChunk = 64;  // pairs one invocation of pair_sort.comp walks
 // The most lights the global list holds. Part 0 of a list is walked after the global list, so
 // both are within the loop bound together, with the shadow filters (ClusterLists.cpp checks:
 // 4,096 did not fit beside the chunked walk of a part), and the sort's rank count walks the

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/programs/Locations.h"
 
 namespace manylights {
 
@@ -14,10 +15,7 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of scan.comp
 gl::Program scanProgram(std::string_view label, int step)
 {
     return gl::Program(label, {{GL_COMPUTE_SHADER, "scan.comp"}},
-                       {{"SCAN_STEP", std::to_string(step)},
-                        {"SCAN_BLOCK", std::to_string(kScanBlock)},
-                        {"SCAN_COUNT_LOCATION", std::to_string(kScanCountLocation)},
-                        {"SCAN_TOTAL_INDEX_LOCATION", std::to_string(kScanTotalIndexLocation)}});
+                       {{"SCAN_STEP", std::to_string(step)}, {"SCAN_BLOCK", std::to_string(kScanBlock)}});
 }
 
 std::uint32_t blocksOf(std::uint32_t count) { return (count + kScanBlock - 1) / kScanBlock; }
@@ -52,8 +50,8 @@ void GpuScan::runLevel(FramePasses& passes, std::string_view name, const gl::Buf
             bindData();
             if (total)
                 total->first->bindBase(GL_SHADER_STORAGE_BUFFER, bindings::CLUSTER_LIST_STATUS_BUFFER_BINDING);
-            top_.set(kScanCountLocation, count);
-            top_.set(kScanTotalIndexLocation, total ? total->second : ~0u);
+            top_.set(locations::SCAN_COUNT_LOCATION, count);
+            top_.set(locations::SCAN_TOTAL_INDEX_LOCATION, total ? total->second : ~0u);
             top_.use();
             glDispatchCompute(1, 1, 1);
         });
@@ -68,7 +66,7 @@ void GpuScan::runLevel(FramePasses& passes, std::string_view name, const gl::Buf
         passes.run(pass, [&] {
             bindData();
             partials.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SCAN_PARTIALS_BUFFER_BINDING);
-            program.set(kScanCountLocation, count);
+            program.set(locations::SCAN_COUNT_LOCATION, count);
             program.use();
             glDispatchCompute(groups, 1, 1);
         });

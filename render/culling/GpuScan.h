@@ -18,8 +18,6 @@
 namespace manylights {
 
 inline constexpr std::uint32_t kScanBlock = 256;
-inline constexpr int kScanCountLocation = 50;       // scan.comp's count
-inline constexpr int kScanTotalIndexLocation = 51;  // scan.comp's totalIndex
 
 class GpuScan {
 public:

@@ -3,14 +3,11 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/programs/Locations.h"
 
 namespace manylights {
 
-gl::Defines lightTileDefines()
-{
-    return {{"LIGHT_TILE_LANES", std::to_string(kLightTileLanes)},
-            {"LIGHT_TILE_ROWS_PER_BAND_LOCATION", std::to_string(kRowsPerBandLocation)}};
-}
+gl::Defines lightTileDefines() { return {{"LIGHT_TILE_LANES", std::to_string(kLightTileLanes)}}; }
 
 void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int gridWidth, int gridHeight)
 {
@@ -20,7 +17,7 @@ void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int
     const auto rowsPerBand = static_cast<std::uint32_t>(kTilesPerBand / gridWidth);
     const auto bands = (static_cast<std::uint32_t>(gridHeight) + rowsPerBand - 1) / rowsPerBand;
     setLightBatch(program, batch);
-    program.set(kRowsPerBandLocation, rowsPerBand);
+    program.set(locations::LIGHT_TILE_ROWS_PER_BAND_LOCATION, rowsPerBand);
     program.use();
     glDispatchCompute(batch.size(), bands, 1);
 }

@@ -16,7 +16,6 @@ namespace manylights {
 inline constexpr int kLightTileLanes = 8;
 // A band of tile rows has at most this many tiles, so an invocation visits at most 1,024.
 inline constexpr int kTilesPerBand = 1024 * kLightTileLanes;
-inline constexpr int kRowsPerBandLocation = 41;  // lib/light_tiles.glsl's rowsPerBand
 
 // The tiles of `tileSize` pixels across `pixels`, the last one cut at the image's edge.
 constexpr int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize - 1) / tileSize; }
@@ -24,7 +23,8 @@ constexpr int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize -
 // lightBatchMaskWords for a batch of that many); of its summary, maskWordsFor(words).
 constexpr std::size_t maskWordsFor(std::size_t lights) { return (lights + 31) / 32; }
 
-// LIGHT_TILE_LANES and LIGHT_TILE_ROWS_PER_BAND_LOCATION.
+// LIGHT_TILE_LANES (its rows per band are at shaders/lib/locations.glsl's
+// LIGHT_TILE_ROWS_PER_BAND_LOCATION).
 gl::Defines lightTileDefines();
 
 // Runs `program` for every light of `batch` over a grid of gridWidth x gridHeight tiles: a

@@ -5,13 +5,13 @@
 #include <string>
 
 #include "core/Error.h"
+#include "render/programs/Locations.h"
 #include "render/programs/PipelineState.h"
 
 namespace manylights {
 
 namespace {
 // Uniform locations of shaders/display.frag.
-constexpr GLint kExposureScaleLocation = 0;
 
 }  // namespace
 
@@ -72,7 +72,7 @@ void DisplayPass::run(FramePasses& passes, const DisplaySettings& settings, int 
                [&] {
                    const gl::Program& program =
                        transformProgram(settings.toneCurve, settings.srgb, supersample, antialiased_);
-                   program.set(kExposureScaleLocation, std::exp2(settings.exposure));
+                   program.set(locations::DISPLAY_EXPOSURE_SCALE_LOCATION, std::exp2(settings.exposure));
                    lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
                    emptyVertexArray_.bind();
                    program.use();

@@ -8,6 +8,7 @@
 
 #include "render/frame/FramePasses.h"
 #include "render/frame/TechniqueOptions.h"
+#include "render/programs/Locations.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -17,7 +18,6 @@ namespace {
 // Shared with shaders/ssao.comp and shaders/ssao_blur.comp.
 constexpr GLuint kSamplesBinding = bindings::SSAO_SAMPLES_BUFFER_BINDING;
 constexpr GLuint kOcclusionImageUnit = bindings::OCCLUSION_IMAGE_UNIT;
-constexpr GLint kParamsLocation = 20;
 constexpr int kGroupSize = 8;
 // Depth bias of the occlusion test, as a fraction of the radius: curved surfaces bend
 // away from their own tangent plane, and the occluder's plane is a pixel's, not the sample's.
@@ -91,7 +91,7 @@ void Ssao::run(const AmbientOcclusion& settings, FramePasses& passes)
         .name = "ssao", .sampled = Resource::GBuffer, .images = Resource::GBuffer, .writes = Resource::GBuffer};
     passes.run(kSsaoPass, [&] {
         samples_.bindBase(GL_SHADER_STORAGE_BUFFER, kSamplesBinding);
-        occlusionProgram_.set(kParamsLocation,
+        occlusionProgram_.set(locations::SSAO_PARAMS_LOCATION,
                               glm::vec4(settings.radius, settings.strength, kBiasFraction * settings.radius, 0.0f));
         raw_.bindImage(kOcclusionImageUnit, GL_WRITE_ONLY);
         occlusionProgram_.use();

@@ -7,7 +7,6 @@ namespace manylights {
 gl::Defines shaderDefines(const TechniqueOptions& options)
 {
     gl::Defines defines = gbufferDefines(options.gbufferLayout);
-    addLightBatchDefines(defines);
     if (options.countWork)
         defines.emplace_back("COUNT_WORK", "1");
     if (options.localShadows)

@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "gl/Driver.h"
+#include "render/programs/Locations.h"
 
 namespace manylights {
 
@@ -27,12 +28,7 @@ std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t per
 
 void setLightBatch(const gl::Program& program, const LightBatch& batch)
 {
-    program.set(kLightBatchLocation, glm::uvec2(batch.first, batch.end));
-}
-
-void addLightBatchDefines(gl::Defines& defines)
-{
-    defines.emplace_back("LIGHT_BATCH_LOCATION", std::to_string(kLightBatchLocation));
+    program.set(locations::LIGHT_BATCH_LOCATION, glm::uvec2(batch.first, batch.end));
 }
 
 bool fitsOneLightWindow(const std::vector<LightBatch>& batches)

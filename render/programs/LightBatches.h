@@ -28,10 +28,6 @@ namespace manylights {
 
 inline constexpr std::uint32_t kLightsPerBatch = 8192;  // LightBatches.cpp checks it against the bound
 
-// Location of `lightBatch` in shaders/lib/light_batch.glsl (the shaders get it as
-// LIGHT_BATCH_LOCATION, so the number lives here only).
-inline constexpr int kLightBatchLocation = 40;
-
 // Lights [first, end) of the scene's light buffer.
 struct LightBatch {
     std::uint32_t first = 0;
@@ -45,11 +41,9 @@ struct LightBatch {
 // least one, so that a scene without local lights still gets its light-independent terms.
 std::vector<LightBatch> lightBatches(std::uint32_t lightCount, std::uint32_t perBatch = kLightsPerBatch);
 
-// Makes `batch` the one `program` loops over.
+// Makes `batch` the one `program` loops over (at shaders/lib/locations.glsl's
+// LIGHT_BATCH_LOCATION).
 void setLightBatch(const gl::Program& program, const LightBatch& batch);
-
-// LIGHT_BATCH_LOCATION, for programs that include lib/light_batch.glsl.
-void addLightBatchDefines(gl::Defines& defines);
 
 // Light windows: a batch's lights as a uniform block (shaders/lib/lights.glsl, built with
 // LIGHT_WINDOW_BINDING) instead of the storage buffer, for passes where every pixel walks the

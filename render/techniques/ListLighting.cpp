@@ -1,6 +1,7 @@
 #include "render/techniques/ListLighting.h"
 
 #include "render/frame/ScreenPasses.h"
+#include "render/programs/Locations.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -65,7 +66,7 @@ void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const Clu
         passes.run(laterPass, [&] {
             grid.bind();
             lists.bind();
-            later.set(kClusterListPartLocation, part);
+            later.set(locations::CLUSTER_LIST_PART_LOCATION, part);
             later.use();
             lists.dispatchOverLongListTiles();
         });

@@ -2,6 +2,7 @@
 // why: llvmpipe silently ends a shader's loops after 65,535 iterations in all, so no pass
 // may loop over every light of a large scene). The renderer draws the pass once per batch,
 // adding to the lit image; the first batch also adds the light-independent terms.
+#include "lib/locations.glsl"
 layout(location = LIGHT_BATCH_LOCATION) uniform uvec2 lightBatch;  // first light, one past the last
 
 bool isFirstLightBatch()

@@ -10,6 +10,7 @@
 // a band has rowsPerBand rows, at most kTilesPerBand tiles (render/culling/LightTiles.h), so each
 // invocation visits at most kTilesPerBand / LIGHT_TILE_LANES = 1,024 tiles, whatever the
 // image size. Needs lib/frame.glsl and lib/culling.glsl (sphereTileRect) first.
+#include "lib/locations.glsl"
 layout(local_size_x = LIGHT_TILE_LANES) in;
 layout(location = LIGHT_TILE_ROWS_PER_BAND_LOCATION) uniform uint rowsPerBand;
 

@@ -35,3 +35,37 @@ const int TILES_X_LOCATION = 1;
 const int TILE_SIZE_LOCATION = 2;
 const int TILE_VIEWPORT_SIZE_LOCATION = 3;
 const int TILES_AS_POINTS_LOCATION = 4;
+
+// lib/light_batch.glsl, in every program that walks a batch of lights
+// (render/programs/LightBatches.cpp).
+const int LIGHT_BATCH_LOCATION = 40;
+// lib/light_tiles.glsl, in the programs that walk a wide light's tiles by bands
+// (render/culling/LightTiles.cpp, ClusterLists.cpp).
+const int LIGHT_TILE_ROWS_PER_BAND_LOCATION = 41;
+
+// display.frag (render/effects/DisplayPass.cpp).
+const int DISPLAY_EXPOSURE_SCALE_LOCATION = 0;
+
+// ssao.comp (render/effects/Ssao.cpp).
+const int SSAO_PARAMS_LOCATION = 20;
+
+// scan.comp (render/culling/GpuScan.cpp).
+const int SCAN_COUNT_LOCATION = 50;
+const int SCAN_TOTAL_INDEX_LOCATION = 51;
+
+// cluster_pairs.comp and cluster_mask_lists.comp (render/culling/ClusterLists.cpp).
+const int CLUSTER_PAIR_LIGHT_COUNT_LOCATION = 52;
+const int CLUSTER_PAIR_GLOBAL_TILES_LOCATION = 53;
+const int CLUSTER_PAIR_CAPACITY_LOCATION = 54;
+const int CLUSTER_MASK_CAPACITY_LOCATION = 54;  // cluster_mask_lists.comp's pair capacity
+const int CLUSTER_PAIR_GLOBAL_PLANNED_LOCATION = 60;
+const int CLUSTER_MASK_WORDS_LOCATION = 61;
+const int CLUSTER_MASK_CLUSTERS_LOCATION = 62;
+
+// pair_sort.comp (render/culling/ClusterLists.cpp).
+const int PAIR_SORT_SHIFT_LOCATION = 55;
+const int PAIR_SORT_CHUNKS_LOCATION = 56;
+const int PAIR_SORT_CAPACITY_LOCATION = 57;
+
+// long_list_lighting.comp (render/techniques/ListLighting.cpp).
+const int CLUSTER_LIST_PART_LOCATION = 58;

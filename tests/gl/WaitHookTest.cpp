@@ -22,8 +22,9 @@ TEST_F(WaitHookTest, RunsAfterEveryPassAndLeavesTheImageAlone)
     const std::vector<Light> lights = expandLights(scene);
     for (PassTiming timing : {PassTiming::Wall, PassTiming::Gpu, PassTiming::Frame}) {
         int calls = 0;
-        Renderer hooked(scene, lights,
-                        {.width = 96, .height = 54, .driver = {.passTiming = timing}, .waitHook = [&calls] { ++calls; }});
+        Renderer hooked(
+            scene, lights,
+            {.width = 96, .height = 54, .driver = {.passTiming = timing}, .waitHook = [&calls] { ++calls; }});
         Renderer plain(scene, lights, {.width = 96, .height = 54, .driver = {.passTiming = timing}});
         for (Renderer* renderer : {&hooked, &plain})
             renderer->setTime(0.7);
