@@ -39,7 +39,8 @@ struct BenchResult {
     FrameSummary measured;           // the measured frames
     int warmupFrames = 0;            // rendered before them
     std::optional<WorkCounts> work;  // with --count-work
-    // For --json: the stage the technique lit in, and its counters after the timed frames.
+    // For --json: the stage the technique lit in, and its counters after the timed frames (after
+    // the counting frame with --count-work).
     std::string lightingStage;
     std::vector<TechniqueCounter> counters;
 };
@@ -168,6 +169,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
         renderer.apply(desc);
         renderer.renderFrame(techniqueName, ViewMode::Final);
         result.work = renderer.lastWorkCounts();
+        // The counters the counting frame adds (cluster_list_visits) with the others of that frame.
+        result.counters = renderer.technique(techniqueName).counters();
     }
     return result;
 }

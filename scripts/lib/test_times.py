@@ -9,6 +9,9 @@
                                                  runs the tests matching REGEX in each build folder
                                                  in turn (ctest -j 1), the order rotated every
                                                  round, and prints each test's times per folder
+    test_times.py interleave-gtest FILTER PROGRAM... [--rounds R]
+                                                 the same with GoogleTest programs (--gtest_filter),
+                                                 e.g. a copy of the image_tests built before a change
 
 Each prints the machine and its load first and last (scripts/lib/bench.py's header).
 """
@@ -105,6 +108,34 @@ def interleave(regex, folders, rounds):
         print(f"  {name}: " + " | ".join(cells))
 
 
+def interleave_gtest(pattern, programs, rounds):
+    runs = {program: {} for program in programs}
+    for round_number in range(rounds):
+        shift = round_number % len(programs)
+        for program in programs[shift:] + programs[:shift]:
+            output = subprocess.run([program, f"--gtest_filter={pattern}"], capture_output=True, text=True).stdout
+            for match in re.finditer(r"^\[\s+(OK|FAILED)\s+\] (\S+) \((\d+) ms\)", output, re.MULTILINE):
+                runs[program].setdefault(match.group(2), []).append((int(match.group(3)) / 1000.0, match.group(1)))
+            print(f"round {round_number + 1}: {program} done, load average {bench.load_average()}", flush=True)
+    names = sorted({n for per_test in runs.values() for n in per_test})
+    print("test: seconds per round in " + " | ".join(programs) + " (medians)")
+    totals = {program: 0.0 for program in programs}
+    for name in names:
+        cells = []
+        for program in programs:
+            values = runs[program].get(name, [])
+            seconds = [s for s, _ in values]
+            shown = ", ".join(f"{s:.2f}" for s in seconds) or "-"
+            if seconds:
+                shown += f" ({statistics.median(seconds):.2f})"
+                totals[program] += statistics.median(seconds)
+            if any(status != "OK" for _, status in values):
+                shown += " FAILED"
+            cells.append(shown)
+        print(f"  {name}: " + " | ".join(cells))
+    print("sum of the medians: " + " | ".join(f"{totals[p]:.1f} s" for p in programs))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -119,14 +150,20 @@ def main():
     p.add_argument("regex")
     p.add_argument("folders", nargs="+")
     p.add_argument("--rounds", type=int, default=2)
+    p = commands.add_parser("interleave-gtest")
+    p.add_argument("pattern")
+    p.add_argument("programs", nargs="+")
+    p.add_argument("--rounds", type=int, default=2)
     args = parser.parse_args()
     print(header(), flush=True)
     if args.command == "sum":
         print_sum(args.log, args.top)
     elif args.command == "compare":
         compare(args.before, args.after, args.top)
-    else:
+    elif args.command == "interleave":
         interleave(args.regex, args.folders, args.rounds)
+    else:
+        interleave_gtest(args.pattern, args.programs, args.rounds)
     print(f"load average at the end: {bench.load_average()}")
 
 
