@@ -10,7 +10,9 @@
 #include <set>
 #include <type_traits>
 
+#include <epoxy/gl.h>
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "apps/cli/Progress.h"
 #include "apps/cli/SvgPlot.h"
@@ -38,6 +40,10 @@ struct BenchResult {
     FrameSummary measured;           // the measured frames
     int warmupFrames = 0;            // rendered before them
     std::optional<WorkCounts> work;  // with --count-work
+    // For --json: the stage the technique lit in, and its counters after the timed frames (after
+    // the counting frame with --count-work).
+    std::string lightingStage;
+    std::vector<TechniqueCounter> counters;
 };
 
 // --warmup auto: the warm-up ends once kSettledFrames frames in a row (the first frame, which
@@ -155,6 +161,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     result.frames = options.frames;
     result.measured = summarizeFrames(frames);
     result.warmupFrames = static_cast<int>(warmup);
+    result.lightingStage = lightingStageName(technique.options().lightingStage);
+    result.counters = technique.counters();
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.
@@ -162,6 +170,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
         renderer.apply(desc);
         renderer.renderFrame(techniqueName, ViewMode::Final);
         result.work = renderer.lastWorkCounts();
+        // The counters the counting frame adds (cluster_list_visits) with the others of that frame.
+        result.counters = renderer.technique(techniqueName).counters();
     }
     return result;
 }
@@ -255,6 +265,57 @@ std::string csvText(const std::vector<BenchResult>& results, bool header)
         text += '\n';
     }
     return text;
+}
+
+// --json (docs/cli.md, "JSON"): `header` (what ran the sweep, and on what) and one object per
+// combination, each pass with its median time on the clock the frames were timed with, named,
+// so that a script need not know which clock --pass-timing implies.
+std::string jsonText(const std::vector<BenchResult>& results, nlohmann::json header)
+{
+    const auto optionalJson = [](const auto& value) {
+        return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+    };
+    const auto statisticsJson = [](const Statistics& statistics) {
+        return nlohmann::json{
+            {"median", statistics.median}, {"p95", statistics.p95}, {"min", statistics.min}, {"max", statistics.max}};
+    };
+    nlohmann::json combinations = nlohmann::json::array();
+    for (const BenchResult& r : results) {
+        nlohmann::json passes = nlohmann::json::array();
+        for (const PassSummary& pass : r.measured.passes) {
+            // Under Wall each pass is waited for; under Gpu its GL_TIME_ELAPSED; under Frame none.
+            const std::optional<double> ms = r.measured.timing == PassTiming::Wall ? pass.wallMs : pass.gpuMs;
+            const char* clock = !ms ? nullptr : r.measured.timing == PassTiming::Wall ? "wall" : "gpu";
+            passes.push_back({{"name", pass.name},
+                              {"ms", optionalJson(ms)},
+                              {"clock", clock ? nlohmann::json(clock) : nlohmann::json(nullptr)},
+                              {"wall_ms", optionalJson(pass.wallMs)},
+                              {"gpu_ms", optionalJson(pass.gpuMs)},
+                              {"fragment_invocations", optionalJson(pass.fragmentInvocations)}});
+        }
+        nlohmann::json counters = nlohmann::json::object();
+        for (const TechniqueCounter& counter : r.counters)
+            counters[counter.name] = counter.value;
+        nlohmann::json combination = {{"technique", r.technique},
+                                      {"lights", r.lights},
+                                      {"width", r.size.width},
+                                      {"height", r.size.height},
+                                      {"frames", r.frames},
+                                      {"warmup_frames", r.warmupFrames},
+                                      {"pass_timing", std::string(passTimingName(r.measured.timing))},
+                                      {"lighting_stage", r.lightingStage},
+                                      {"frame_ms", statisticsJson(r.measured.wallMs)},
+                                      {"frame_gpu_ms", statisticsJson(r.measured.gpuMs)},
+                                      {"passes", passes},
+                                      {"counters", counters}};
+        if (r.work)
+            combination["work"] = {{"light_evaluations", r.work->lightEvaluations},
+                                   {"in_range_pairs", r.work->inRangePairs},
+                                   {"transparent_light_evaluations", r.work->transparentLightEvaluations}};
+        combinations.push_back(std::move(combination));
+    }
+    header["results"] = std::move(combinations);
+    return header.dump(2) + "\n";
 }
 
 // Columns padded to their widest cell; text columns left-aligned, numbers right-aligned.
@@ -452,6 +513,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
                      "Animate: frame k at scene time k/F, its posing timed with it (default: all at time 0)")
         ->check(numberIn(0.001, 1000.0));
     bench->add_option("--csv", options.csvPath, "Write one row per combination as CSV");
+    bench->add_option("--json", options.jsonPath,
+                      "Write the sweep as JSON, each pass with the clock it was timed on (- for stdout; the table "
+                      "then goes to stderr)");
     bench
         ->add_option("--budget-ms", options.budgetMs,
                      "Skip a technique's larger light counts once its median frame exceeds this")
@@ -494,6 +558,9 @@ void runBench(const BenchOptions& options)
         checkWritable(options.csvPath, "CSV");
     if (!options.plotPath.empty())
         checkWritable(options.plotPath, "plot");
+    const bool jsonToStdout = options.jsonPath == "-";
+    if (!options.jsonPath.empty() && !jsonToStdout)
+        checkWritable(options.jsonPath, "JSON");
 
     const std::vector<std::string> techniques = options.techniques.empty() ? techniqueNames() : options.techniques;
     std::vector<std::optional<int>> lightCounts(options.lightCounts.begin(), options.lightCounts.end());
@@ -545,18 +612,41 @@ void runBench(const BenchOptions& options)
     char warmup[64] = "Warm-up until the frame time settled (auto)";
     if (options.warmup)
         std::snprintf(warmup, sizeof warmup, "%d warm-up frame%s", *options.warmup, *options.warmup == 1 ? "" : "s");
-    std::printf("%s on %s, driver profile %.*s\n%s\n%s", scene.source.c_str(), context.description().c_str(),
-                int(profile.size()), profile.data(), clocksText(driver.passTiming, warmup, options.frames).c_str(),
-                tableText(results, options.countWork, driver.passTiming).c_str());
-    std::fflush(stdout);
+    // With the JSON on stdout, the table goes to stderr, so that stdout is one JSON document.
+    std::FILE* table = jsonToStdout ? stderr : stdout;
+    std::fprintf(table, "%s on %s, driver profile %.*s\n%s\n%s", scene.source.c_str(), context.description().c_str(),
+                 int(profile.size()), profile.data(), clocksText(driver.passTiming, warmup, options.frames).c_str(),
+                 tableText(results, options.countWork, driver.passTiming).c_str());
+    std::fflush(table);
     // Both outputs or neither.
     AtomicFileSet outputs;
     if (!options.csvPath.empty())
         outputs.stage(options.csvPath, "CSV", csvText(results, options.shard.index == 1));
+    std::string json;
+    if (!options.jsonPath.empty()) {
+        const auto glText = [](GLenum name) { return std::string(reinterpret_cast<const char*>(glGetString(name))); };
+        json = jsonText(results,
+                        {{"scene", scene.source},
+                         {"device", context.description()},
+                         {"gl_renderer", glText(GL_RENDERER)},
+                         {"gl_version", glText(GL_VERSION)},
+                         {"driver_profile", std::string(profile)},
+                         {"pass_timing", std::string(passTimingName(driver.passTiming))},
+                         {"warmup", options.warmup ? nlohmann::json(*options.warmup) : nlohmann::json("auto")},
+                         {"frames", options.frames},
+                         {"fps", options.fps ? nlohmann::json(*options.fps) : nlohmann::json(nullptr)},
+                         {"shard", std::to_string(options.shard.index) + "/" + std::to_string(options.shard.count)}});
+        if (!jsonToStdout)
+            outputs.stage(options.jsonPath, "JSON", json);
+    }
     if (!options.plotPath.empty())
         outputs.stage(options.plotPath, "plot",
                       plotText(results, options, techniques, std::filesystem::path(scene.source).filename().string()));
     outputs.commit();
+    if (jsonToStdout) {
+        std::fputs(json.c_str(), stdout);
+        std::fflush(stdout);
+    }
 }
 
 }  // namespace manylights

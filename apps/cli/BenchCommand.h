@@ -1,5 +1,5 @@
 // `manylights bench` (docs/cli.md): sweeps techniques × light counts × image sizes over one
-// scene and reports frame times and work counts as a table, a CSV and an SVG plot.
+// scene and reports frame times and work counts as a table, a CSV, JSON and an SVG plot.
 #pragma once
 
 #include <optional>
@@ -33,6 +33,9 @@ struct BenchOptions {
     std::optional<double> fps;
     std::string csvPath;   // empty: no CSV
     std::string plotPath;  // empty: no plot
+    // --json FILE: the sweep for scripts (scripts/lib/bench.py); "-" writes it to stdout, and the
+    // table then goes to stderr. Empty: no JSON.
+    std::string jsonPath;
     bool countWork = false;
     bool strict = false;     // --strict: model files' forgiven problems are errors
     CameraOptions camera;    // --camera, --eye, --look-at, --up, --fov-y
@@ -55,7 +58,7 @@ struct BenchOptions {
 // (a size, a light count, an unknown technique, a repeated entry) are CLI11 parse errors.
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 
-// Runs the sweep: progress on stderr, the table on stdout, then the CSV and the plot.
+// Runs the sweep: progress on stderr, the table on stdout, then the CSV, the JSON and the plot.
 // Throws manylights::Error on failure (the files are written only after the whole sweep).
 void runBench(const BenchOptions& options);
 

@@ -2,8 +2,10 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <new>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -103,8 +105,14 @@ int runCli(int argc, const char* const* argv)
     if (devicesCommand->parsed())
         return reportingErrors([] { printDevices(); }, "listing the EGL devices");
     if (benchCommand->parsed()) {
-        if (!bench.csvPath.empty() && !bench.plotPath.empty() && sameFile(bench.csvPath, bench.plotPath))
-            return usageError("--csv and --plot name the same file '" + bench.csvPath + "'");
+        const std::pair<const char*, const std::string*> outputs[] = {
+            {"--csv", &bench.csvPath}, {"--plot", &bench.plotPath}, {"--json", &bench.jsonPath}};
+        for (std::size_t i = 0; i < std::size(outputs); ++i)
+            for (std::size_t j = i + 1; j < std::size(outputs); ++j)
+                if (!outputs[i].second->empty() && !outputs[j].second->empty() &&
+                    sameFile(*outputs[i].second, *outputs[j].second))
+                    return usageError(std::string(outputs[i].first) + " and " + outputs[j].first +
+                                      " name the same file '" + *outputs[i].second + "'");
         // A budget skips a technique's later cases from its earlier ones, which another shard
         // may time; a plot of one shard's cases is a fraction of the sweep.
         if (!bench.shard.isWhole() && (bench.budgetMs > 0.0 || !bench.plotPath.empty()))

@@ -1,11 +1,14 @@
 // `manylights bench` as scripts meet it: a tiny real sweep through the executable (exit
-// status, the CSV's rows and values, the SVG plot), its usage errors, and the plot's axes.
+// status, the CSV's rows and values, the JSON's shape, the SVG plot), its usage errors, and the
+// plot's axes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
 #include "apps/cli/SvgPlot.h"
@@ -211,6 +214,105 @@ TEST(Bench, GpuPassTimingIssuesFramesBackToBackAndSaysSo)
         EXPECT_NE(pass.find("::"), std::string::npos) << pass;
     for (const std::string& pass : split(column("pass_gpu_ms"), ';'))
         EXPECT_GE(std::stod(pass.substr(pass.rfind(':') + 1)), 0.0) << pass;
+}
+
+// --json (docs/cli.md, "JSON"), what scripts/lib/bench.py reads: the sweep's header (the GL
+// renderer, the driver profile, the pass timing) and one object per combination in sweep order,
+// each pass with its median on the clock the frames were timed with, named: under wall the
+// pass's wall time, under gpu its GL_TIME_ELAPSED, under frame none. `--json -` writes it to
+// stdout alone, the table then on stderr.
+TEST(Bench, JsonNamesEachPassClock)
+{
+    const auto dir = scratchDirectory();
+    const std::string timing = test::testDriverProfile() == "gpu" ? "gpu" : "wall";
+    for (const std::string& passTiming : {timing, std::string("frame")}) {
+        SCOPED_TRACE(passTiming);
+        const bool toStdout = passTiming != "frame";
+        const auto file = dir / (passTiming + ".json");
+        std::vector<std::string> args = {"bench",
+                                         "--techniques",
+                                         "forward,clustered",
+                                         "--lights",
+                                         "16",
+                                         "--size",
+                                         "64x36",
+                                         "--frames",
+                                         "1",
+                                         "--warmup",
+                                         "0",
+                                         "--count-work",
+                                         "--json",
+                                         toStdout ? "-" : file.string()};
+        if (!toStdout)
+            args.insert(args.end(), {"--pass-timing", "frame"});
+        const test::ProcessResult result = runExecutable(args);
+        ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+        const std::string& tableStream = toStdout ? result.stderrText : result.stdoutText;
+        EXPECT_NE(tableStream.find("technique  lights"), std::string::npos) << tableStream;
+        const std::string text = toStdout ? result.stdoutText : readText(file);
+        ASSERT_FALSE(text.empty());
+        const nlohmann::json json = nlohmann::json::parse(text);  // throws, and fails the test, unless it is JSON
+
+        EXPECT_EQ(json.at("pass_timing"), passTiming);
+        EXPECT_EQ(json.at("driver_profile"), test::testDriverProfile() == "gpu" ? "gpu" : "software");
+        EXPECT_EQ(json.at("frames"), 1);
+        EXPECT_EQ(json.at("warmup"), 0);
+        const std::string renderer = json.at("gl_renderer");
+        EXPECT_FALSE(renderer.empty());
+        EXPECT_EQ(json.at("device").get<std::string>().rfind(renderer, 0), 0u) << "device names the GL renderer first";
+        const nlohmann::json& results = json.at("results");
+        ASSERT_EQ(results.size(), 2u);
+        EXPECT_EQ(results[0].at("technique"), "forward");
+        EXPECT_EQ(results[1].at("technique"), "clustered");
+        for (const nlohmann::json& r : results) {
+            EXPECT_EQ(r.at("lights"), 16);
+            EXPECT_EQ(r.at("width"), 64);
+            EXPECT_EQ(r.at("height"), 36);
+            EXPECT_EQ(r.at("frames"), 1);
+            EXPECT_EQ(r.at("warmup_frames"), 0);
+            EXPECT_EQ(r.at("pass_timing"), passTiming);
+            EXPECT_TRUE(r.at("lighting_stage") == "fragment" || r.at("lighting_stage") == "compute") << r;
+            // One frame: its time is the median, p95, min and max.
+            const nlohmann::json& frame = r.at("frame_ms");
+            EXPECT_GT(frame.at("median").get<double>(), 0.0);
+            for (const char* statistic : {"p95", "min", "max"})
+                EXPECT_EQ(frame.at(statistic), frame.at("median")) << statistic;
+            EXPECT_TRUE(r.at("frame_gpu_ms").at("median").is_number());
+            ASSERT_FALSE(r.at("passes").empty());
+            for (const nlohmann::json& pass : r.at("passes")) {
+                EXPECT_FALSE(pass.at("name").get<std::string>().empty());
+                if (passTiming == "frame") {
+                    EXPECT_TRUE(pass.at("clock").is_null()) << pass;
+                    EXPECT_TRUE(pass.at("ms").is_null()) << pass;
+                    continue;
+                }
+                EXPECT_EQ(pass.at("clock"), passTiming) << pass;
+                EXPECT_GE(pass.at("ms").get<double>(), 0.0) << pass;
+                EXPECT_EQ(pass.at("ms"), pass.at(passTiming + "_ms")) << pass;
+            }
+            EXPECT_TRUE(r.at("counters").is_object());
+            const nlohmann::json& work = r.at("work");
+            EXPECT_GT(work.at("in_range_pairs").get<std::uint64_t>(), 0u);
+            EXPECT_GE(work.at("light_evaluations").get<std::uint64_t>(),
+                      work.at("in_range_pairs").get<std::uint64_t>());
+        }
+        // The pairs in range are the scene's, whichever technique counts them.
+        EXPECT_EQ(results[0].at("work").at("in_range_pairs"), results[1].at("work").at("in_range_pairs"));
+        // clustered reports what its lists held (render --stats' counters).
+        EXPECT_TRUE(results[1].at("counters").contains("cluster_pairs")) << results[1].at("counters");
+    }
+}
+
+// --json and --csv naming one file would write one over the other.
+TEST(Bench, JsonAndCsvNamingOneFileIsAUsageError)
+{
+    const auto dir = scratchDirectory();
+    const std::string path = (dir / "out.txt").string();
+    const test::ProcessResult result =
+        runExecutable({"bench", "--size", "16x16", "--frames", "1", "--csv", path, "--json", path});
+    EXPECT_EQ(result.exitCode, 2) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("--csv and --json name the same file"), std::string::npos) << result.stderrText;
+    expectEmpty(dir);
 }
 
 // A job array's tasks (docs/cli.md, "On a cluster"): three shards of a four-case sweep, each

@@ -31,10 +31,38 @@ const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
 
 class ManyLightsOnOneSpot : public ::testing::TestWithParam<std::string> {};
 
+// The spot scenes at a quarter of 1280x720 through a camera of 11.25° (tan 5.625° is a quarter of
+// tan 22.5° within 5%): the square and each light's sphere cover the pixels (and the 16-pixel
+// tiles) they cover at 1280x720 through the scenes' 45°, within 5%, so every technique meets the
+// same lights per pixel and per tile, at a sixteenth of the pixels that the techniques walking
+// every light at every pixel pay for.
+const std::vector<std::string> kSpotView = {"--size", "320x180", "--fov-y", "11.25"};
+constexpr double kSpotViewHalfHeight = 90.0;
+constexpr double kSpotViewHalfFovDegrees = 11.25 / 2.0;
+
+// `scene` of tests/scenes/ written to `dir` with every light's range `range`.
+std::string withRange(const std::filesystem::path& dir, const std::string& scene, double range)
+{
+    nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + scene));
+    if (json.contains("light_sets"))
+        for (auto& set : json["light_sets"])
+            set["range"] = {range, range};
+    if (json.contains("lights"))
+        for (auto& light : json["lights"])
+            light["range"] = range;
+    const auto path = dir / ("range-" + std::to_string(range) + "-" + scene);
+    test::writeFile(path, json.dump());
+    return path.string();
+}
+
 // tests/scenes/lights_on_one_spot.json: a 2 cm square facing the camera 10 m away (a few
-// pixels at 1280x720) under 131,072 point lights at one position 5 cm in front of it, with
-// one range (a light set whose box is a point) and random hues. Nothing else is in the
-// scene, so the techniques that evaluate every light at every covered pixel stay fast.
+// pixels at 1280x720, and through kSpotView) under 131,072 point lights at one position 5 cm
+// in front of it, with one range (a light set whose box is a point) and random hues. Nothing
+// else is in the scene, so the techniques that evaluate every light at every covered pixel stay
+// fast. The test shortens the range from 0.2 to 0.07 m, which still reaches every point of the
+// square and of the pane below (at most 5.2 cm from the lights), so that the volume techniques,
+// which draw each light's sphere (lights on one spot take a stencil batch each), fill a ninth of
+// the pixels.
 // one_light_on_one_spot.json: the same with one white light of intensity 1.
 TEST_P(ManyLightsOnOneSpot, SumsEveryLight)
 {
@@ -45,7 +73,8 @@ TEST_P(ManyLightsOnOneSpot, SumsEveryLight)
     const auto dir = scratchDirectory();
     // Each light adds its intensity times what a unit light adds there, so the image is the
     // one-light image times the lights' summed intensity, per channel.
-    const std::vector<Light> lights = expandLights(loadSceneFile(kScenes + "lights_on_one_spot.json"));
+    constexpr double kRange = 0.07;
+    const std::vector<Light> lights = expandLights(loadSceneFile(withRange(dir, "lights_on_one_spot.json", kRange)));
     ASSERT_EQ(lights.size(), static_cast<std::size_t>(kLights));
     double total[3] = {0.0, 0.0, 0.0};
     for (const Light& light : lights)
@@ -64,7 +93,7 @@ TEST_P(ManyLightsOnOneSpot, SumsEveryLight)
     // 16 batches of its grid (or of every light, under forward). The pixel is 0.5 · pane +
     // 0.5 · square, each a sum over the lights, so the one-light rule still holds.
     const auto withPane = [&](const std::string& scene) {
-        nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + scene));
+        nlohmann::json json = nlohmann::json::parse(std::ifstream(withRange(dir, scene, kRange)));
         json["objects"].push_back({{"mesh", {{"primitive", "plane"}, {"size", {0.02, 0.02}}}},
                                    {"transform", {{"translate", {0, 0, 0.1}}, {"rotate", {-90, 0, 0}}}},
                                    {"material", {{"diffuse", {0.3, 0.5, 0.9}}, {"opacity", 0.5}}}});
@@ -72,11 +101,12 @@ TEST_P(ManyLightsOnOneSpot, SumsEveryLight)
         test::writeFile(path, json.dump());
         return path.string();
     };
-    const std::vector<std::string> args = {"--size", "1280x720", "--gbuffer", "seed", "--technique", technique};
+    std::vector<std::string> args = kSpotView;
+    args.insert(args.end(), {"--gbuffer", "seed", "--technique", technique});
     Image squareAlone;
     for (const auto& [label, one, many] :
-         {std::tuple{std::string("square"), kScenes + "one_light_on_one_spot.json",
-                     kScenes + "lights_on_one_spot.json"},
+         {std::tuple{std::string("square"), withRange(dir, "one_light_on_one_spot.json", kRange),
+                     withRange(dir, "lights_on_one_spot.json", kRange)},
           std::tuple{std::string("square behind a pane"), withPane("one_light_on_one_spot.json"),
                      withPane("lights_on_one_spot.json")}}) {
         const Image oneImage = renderPfm(one, dir / "one.pfm", args);
@@ -186,8 +216,8 @@ TEST(SmallLights262144, ClusteredAndTiledEqualDeferredAndEachOtherRunToRun)
     EXPECT_GT(work["cluster_list_visits"].get<double>(), work["light_evaluations"].get<double>());
 }
 
-// The lights on one spot again, each with a range of 0.8 m: at 10 m and 1280x720 its sphere is
-// about 140 pixels across on screen, over 64 tiles of 16 pixels, so every one of the 131,072
+// The lights on one spot again, each with a range of 0.8 m: at 10 m and 1280x720 (and through
+// kSpotView) its sphere is about 140 pixels across on screen, over 64 tiles of 16 pixels, so every one of the 131,072
 // is a wide light of the light lists (render/culling/ClusterLists.h), a workgroup each. That is
 // more workgroups than a dispatch may have along x (65,535 is all GL promises), so the list of
 // wide lights goes on into the dispatch's z. The image is still the one-light image times the
@@ -201,29 +231,18 @@ TEST_P(WideLightsOnOneSpot, SumsEveryLight)
     constexpr double kRange = 0.8;
     // The sphere's radius on screen, in pixels: range / distance over tan(fov_y / 2), times
     // half the image height.
-    const double radiusPixels = kRange / 10.0 / std::tan(22.5 * M_PI / 180.0) * 360.0;
+    const double radiusPixels = kRange / 10.0 / std::tan(kSpotViewHalfFovDegrees * M_PI / 180.0) * kSpotViewHalfHeight;
     ASSERT_GT((2.0 * radiusPixels / 16.0) * (2.0 * radiusPixels / 16.0), 64.0);
-    const auto withRange = [&](const std::string& scene) {
-        nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + scene));
-        if (json.contains("light_sets"))
-            for (auto& set : json["light_sets"])
-                set["range"] = {kRange, kRange};
-        if (json.contains("lights"))
-            for (auto& light : json["lights"])
-                light["range"] = kRange;
-        const auto path = dir / ("wide-" + scene);
-        test::writeFile(path, json.dump());
-        return path.string();
-    };
-    const std::vector<Light> lights = expandLights(loadSceneFile(withRange("lights_on_one_spot.json")));
+    const std::vector<Light> lights = expandLights(loadSceneFile(withRange(dir, "lights_on_one_spot.json", kRange)));
     ASSERT_GT(lights.size(), 2u * 65535u);
     double total[3] = {0.0, 0.0, 0.0};
     for (const Light& light : lights)
         for (int c = 0; c < 3; ++c)
             total[c] += light.intensity[c];
-    const std::vector<std::string> args = {"--size", "1280x720", "--gbuffer", "seed", "--technique", technique};
-    const Image one = renderPfm(withRange("one_light_on_one_spot.json"), dir / "one.pfm", args);
-    const Image many = renderPfm(withRange("lights_on_one_spot.json"), dir / "many.pfm", args);
+    std::vector<std::string> args = kSpotView;
+    args.insert(args.end(), {"--gbuffer", "seed", "--technique", technique});
+    const Image one = renderPfm(withRange(dir, "one_light_on_one_spot.json", kRange), dir / "one.pfm", args);
+    const Image many = renderPfm(withRange(dir, "lights_on_one_spot.json", kRange), dir / "many.pfm", args);
     Image expected = one;
     int lit = 0;
     for (std::size_t i = 0; i < expected.rgb.size(); ++i) {
