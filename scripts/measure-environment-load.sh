@@ -12,7 +12,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 widths=${WIDTHS:-"1024 4096 8192"}
 reps=${REPS:-2}
-source scripts/measure-common.sh
+ML=${ML:-$(scripts/lib/bench.py --binary)}
+scripts/lib/bench.py --machine
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 for width in $widths; do

@@ -11,7 +11,8 @@
 #   SIZES=1920x1080 VIEWS=light-count scripts/measure-held-keys.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-source scripts/measure-common.sh
+ML=${ML:-$(scripts/lib/bench.py --binary)}
+scripts/lib/bench.py --machine
 sizes=${SIZES:-320x180 1280x720 1920x1080}
 views=${VIEWS:-final light-count}
 out=out/held-keys

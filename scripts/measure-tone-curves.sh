@@ -9,7 +9,7 @@
 #   - the default scene at 256 lights (the default) and 4096: the share of pixels with a channel
 #     at 255 (clipped: the curve's top, where gradations end), and the linear peak (the PFM's
 #     largest channel).
-# Prints the machine and its load first (scripts/measure-common.sh). Writes its images to
+# Prints the machine and its load first (scripts/lib/bench.py --machine). Writes its images to
 # out/tone-curves/. SIZE=WxH (default 640x360) for every render.
 #
 #   scripts/measure-tone-curves.sh            CURVES="agx pbr-neutral" scripts/measure-tone-curves.sh
@@ -19,7 +19,8 @@ size=${SIZE:-640x360}
 curves=${CURVES:-agx pbr-neutral aces reinhard}
 dir=out/tone-curves
 mkdir -p "$dir"
-source scripts/measure-common.sh
+ML=${ML:-$(scripts/lib/bench.py --binary)}
+scripts/lib/bench.py --machine
 
 looks=(classic)
 for curve in $curves; do looks+=("$curve"); done

@@ -550,8 +550,14 @@ class Measurement:
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--case", action="append", required=True, metavar="'LABEL: ARGUMENTS'",
+    parser.add_argument("--case", action="append", metavar="'LABEL: ARGUMENTS'",
                         help="a command line to measure (repeat)")
+    parser.add_argument("--binary", action="store_true",
+                        help="print the binary to measure (ML, or build/manylights built) and stop: for scripts "
+                             "that measure outside bench")
+    parser.add_argument("--machine", action="store_true",
+                        help="print the machine header (of ML's binary) and stop: for scripts that measure "
+                             "outside bench")
     parser.add_argument("--rounds", type=int, default=int(os.environ.get("ROUNDS", 1)),
                         help="times every case runs, interleaved (default ROUNDS or 1)")
     parser.add_argument("--frames", type=int, help="timed frames per combination (--frames of bench and render)")
@@ -566,6 +572,14 @@ def main(argv=None):
     parser.add_argument("--digits", type=int, default=1, help="decimals of the times (default 1)")
     parser.add_argument("--quiet-rounds", action="store_true", help="no line per run, the summary only")
     args = parser.parse_args(argv)
+    if args.binary:
+        print(ensure_binary())
+        return
+    if args.machine:
+        print(machine_header([ensure_binary()]), flush=True)
+        return
+    if not args.case:
+        parser.error("at least one --case is needed")
     if args.rounds < 1:
         parser.error("--rounds must be at least 1")
 

@@ -4,6 +4,7 @@ writes bench --json and render --stats documents whose times follow from the com
 its environment, so that every figure the harness prints can be checked exactly, and it logs
 each call, so that the order of the rounds can be too."""
 
+import contextlib
 import io
 import json
 import os
@@ -186,6 +187,18 @@ class BenchHarnessTest(unittest.TestCase):
         self.assertRegex(header, r"machine: .+, \d+ cores, load average [\d.]+ [\d.]+ [\d.]+ at the start")
         self.assertIn("commit: ", header)
         self.assertIn(f"binary: {self.binary}", header)
+
+    def test_machine_and_binary_serve_the_scripts_that_measure_outside_bench(self):
+        os.environ["ML"] = self.binary
+        try:
+            for flag, expected in (("--binary", self.binary + "\n"), ("--machine", f"binary: {self.binary}\n")):
+                out = io.StringIO()
+                with contextlib.redirect_stdout(out):
+                    bench.main([flag])
+                self.assertTrue(out.getvalue().endswith(expected), out.getvalue())
+            self.assertEqual(self.calls() if os.path.exists(self.log) else [], [])  # nothing was run
+        finally:
+            del os.environ["ML"]
 
 
 if __name__ == "__main__":
