@@ -5,7 +5,7 @@
 // its tiles, the occupied slices within the sphere's depth span whose box the sphere (and a
 // spot's cone) reaches. Loop iterations per invocation: at most 1,024 tiles (the bands of
 // lib/light_tiles.glsl) times CLUSTER_SLICES + 1, about 9,200, within the bound of
-// render/culling/LightBatches.h.
+// render/programs/LightBatches.h.
 #include "lib/falloff.glsl"
 #include "lib/frame.glsl"
 #include "lib/lights.glsl"

@@ -20,7 +20,7 @@
 //
 // Loop iterations: the summary's words, at most kMaskedListLights / 1,024, plus the words,
 // at most kMaskedListLights / 32, plus half the cluster's lights, at most kMaskedListLights / 2:
-// 8,720 for 16,384 lights, within render/culling/LightBatches.h's bound (ClusterLists.cpp checks).
+// 8,720 for 16,384 lights, within render/programs/LightBatches.h's bound (ClusterLists.cpp checks).
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
 #include "lib/frame.glsl"

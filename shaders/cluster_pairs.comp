@@ -45,7 +45,7 @@
 //
 // Loop iterations per invocation: CLUSTER_PAIR_NARROW_TILES tiles, or at most 1,024 (the bands
 // of lib/light_tiles.glsl), each with at most CLUSTER_SLICES slices (lib/cluster_culling.glsl):
-// about 9,200 at most, within render/culling/LightBatches.h's bound.
+// about 9,200 at most, within render/programs/LightBatches.h's bound.
 #include "lib/bindings.glsl"
 #include "lib/locations.glsl"
 #include "lib/falloff.glsl"

@@ -8,7 +8,7 @@
 // than the list holds, globalLightCount() is 0 and nothing is written: they are wide lights.
 // The list's length goes after its last possible entry, where the lighting reads it with the
 // entries (a texel for all lanes on llvmpipe, not the status buffer lane by lane).
-// Loop iterations: GLOBAL_LIGHT_CAPACITY at most, within render/culling/LightBatches.h's bound.
+// Loop iterations: GLOBAL_LIGHT_CAPACITY at most, within render/programs/LightBatches.h's bound.
 #include "lib/bindings.glsl"
 #include "lib/lights.glsl"
 #include "lib/cluster_list_status.glsl"

@@ -9,7 +9,7 @@
 // that reach it with the lighting function's own test. BRUTE_FORCE marks every light, for
 // the test that checks the culling against counting every pair. One dispatch per light
 // batch, adding to the counts. Loop iterations: ≤ 2 to clear the mask, ≤ 33 to cull, and
-// ≤ 2 · 257 + one batch to count: under the bound of render/culling/LightBatches.h.
+// ≤ 2 · 257 + one batch to count: under the bound of render/programs/LightBatches.h.
 #include "lib/bindings.glsl"
 #define LIGHTING_IN_COMPUTE 1
 #include "lib/lighting.glsl"

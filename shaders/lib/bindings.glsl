@@ -8,7 +8,7 @@
 // Uniform blocks.
 const int FRAME_BLOCK_BINDING = 0;         // lib/frame.glsl Frame
 const int SHADOWING_BLOCK_BINDING = 1;     // lib/shadows.glsl Shadowing
-const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/culling/LightBatches.h)
+const int LIGHT_WINDOW_BLOCK_BINDING = 2;  // lib/lights.glsl LightWindow (render/programs/LightBatches.h)
 const int ENVIRONMENT_BLOCK_BINDING = 3;   // lib/environment.glsl EnvironmentLight
 
 // Shader storage buffers.
@@ -83,8 +83,8 @@ const int RAW_OCCLUSION_UNIT = 14;      // ssao_blur.comp: the unblurred factor
 const int ENVIRONMENT_RADIANCE_UNIT = 14;  // lib/environment.glsl: the prefiltered radiance
 const int ENVIRONMENT_SOURCE_UNIT = 0;     // environment_prefilter.comp: the map's remainder with its mipmaps
 const int EMISSIVE_MAP_UNIT = 15;       // lib/material.glsl
-// The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/culling/LightBatches.h checks).
-const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/culling/LightBatches.h: light texels)
+// The 17th and 18th units: GL promises 16 per stage, drivers have 32 (render/programs/LightBatches.h checks).
+const int LIGHT_TEXELS_UNIT = 16;  // lib/lights.glsl lightTexels (render/programs/LightBatches.h: light texels)
 const int OCCLUSION_MAP_UNIT = 17;  // lib/material.glsl: glTF occlusionTexture
 const int ENVIRONMENT_MAP_UNIT = 18;  // lib/environment.glsl: the map itself, level 0 (issue 48)
 

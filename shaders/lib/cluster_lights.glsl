@@ -14,7 +14,7 @@
 // (ARB_shader_ballot and _group_vote) kept the worse of both: llvmpipe runs both branches.
 //
 // Loop iterations: at most 8 summary words plus one, and per summary word one per light of
-// the batch in it plus one: at most 8,192 + 17, under the bound of render/culling/LightBatches.h.
+// the batch in it plus one: at most 8,192 + 17, under the bound of render/programs/LightBatches.h.
 // Needs lib/lighting.glsl and lib/clusters.glsl first.
 vec3 shadeClusterLights(uint cluster, Surface s, vec3 V, inout uint evaluated)
 {

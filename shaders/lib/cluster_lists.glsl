@@ -1,7 +1,7 @@
 // The clustered technique's light lists (render/culling/ClusterLists.h), read by its lighting passes:
 // per cluster of lib/clusters.glsl's grid, the lights that may reach it, in the order of the
 // lights (sorted by cluster, stably). A list is walked in parts of CLUSTER_LIST_PART lights,
-// the most one invocation may walk within render/culling/LightBatches.h's bound: part 0 by the
+// the most one invocation may walk within render/programs/LightBatches.h's bound: part 0 by the
 // lighting pass over the whole image, the later parts of long lists by passes over their
 // tiles only (long_list_lighting.comp).
 //

@@ -1,4 +1,4 @@
-// The lights a pass loops over: one batch of the light buffer (render/culling/LightBatches.h says
+// The lights a pass loops over: one batch of the light buffer (render/programs/LightBatches.h says
 // why: llvmpipe silently ends a shader's loops after 65,535 iterations in all, so no pass
 // may loop over every light of a large scene). The renderer draws the pass once per batch,
 // adding to the lit image; the first batch also adds the light-independent terms.

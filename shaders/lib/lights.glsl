@@ -26,7 +26,7 @@ GpuLight lightFromTexels(samplerBuffer texels, int first, vec4 positionRadius)
 
 #ifdef LIGHT_WINDOW_BINDING
 // The batch's lights as a uniform block bound to their range of the same buffer
-// (render/culling/LightBatches.h: light windows), for passes where every pixel walks the batch in
+// (render/programs/LightBatches.h: light windows), for passes where every pixel walks the batch in
 // order; light i of the scene is element i − lightBatch.x. Such a shader includes
 // lib/light_batch.glsl before this file (an #include here would count as done even where this
 // block is compiled out, and leave other shaders without it).
@@ -49,7 +49,7 @@ GpuLight lightWithPositionRadius(uint lightIndex, vec4 positionRadius)
     return windowLights[lightIndex - lightBatch.x];
 }
 #elif defined(LIGHT_TEXELS)
-// The same buffer as four RGBA32F texels per light (render/culling/LightBatches.h: light texels), for
+// The same buffer as four RGBA32F texels per light (render/programs/LightBatches.h: light texels), for
 // passes whose pixels read different lights, and for every pass on a software rasteriser:
 // llvmpipe fetches a texel for all lanes at once, loads from a storage buffer lane by lane
 // and gathers from a uniform block per component.

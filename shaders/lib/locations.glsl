@@ -5,7 +5,7 @@
 // no program has both (each line says which shaders use it).
 
 // lib/material.glsl (render/scene/DrawList.cpp binds a material's maps). The transforms are mat3x2,
-// two locations each, after the light batch's location 40 (render/culling/LightBatches.h).
+// two locations each, after the light batch's location 40 (render/programs/LightBatches.h).
 const int MATERIAL_NORMAL_SCALE_LOCATION = 15;
 const int MATERIAL_METALLIC_ROUGHNESS_LOCATION = 16;
 const int DIFFUSE_UV_TRANSFORM_LOCATION = 50;  // also shadow_depth.frag's

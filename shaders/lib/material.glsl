@@ -38,7 +38,7 @@ layout(location = MATERIAL_NORMAL_SCALE_LOCATION) uniform float materialNormalSc
 // glTF metallicFactor and roughnessFactor, for the metallic-roughness map's per-texel mapping.
 layout(location = MATERIAL_METALLIC_ROUGHNESS_LOCATION) uniform vec2 materialMetallicRoughness;
 // Each map's uv transform (glTF KHR_texture_transform; scene/Scene.h Material::uvTransforms),
-// after the light batch's location 40 (render/culling/LightBatches.h):
+// after the light batch's location 40 (render/programs/LightBatches.h):
 // uv' = M · (u, v, 1). Set per draw for the maps the draw binds.
 layout(location = DIFFUSE_UV_TRANSFORM_LOCATION) uniform mat3x2 diffuseUvTransform;
 layout(location = SPECULAR_UV_TRANSFORM_LOCATION) uniform mat3x2 specularUvTransform;  // also the metallic-roughness map's
