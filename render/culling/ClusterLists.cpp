@@ -113,14 +113,10 @@ void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 
 }  // namespace
 
-gl::Defines clusterListDefines(gl::Defines defines, bool texels, bool globalList)
+gl::Defines clusterListDefines(gl::Defines defines)
 {
     defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
     defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
-    if (texels)
-        defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
-    if (globalList)
-        defines.emplace_back("GLOBAL_LIGHT_LIST", "1");
     return defines;
 }
 

@@ -90,10 +90,10 @@ inline constexpr std::uint32_t kGlobalLightCapacity = 2048;
 // (docs/techniques.md has the measurements).
 inline constexpr double kGlobalLightGridFraction = 0.5;
 
-// CLUSTER_LIST_PART and GLOBAL_LIGHT_CAPACITY, for programs that include lib/cluster_lists.glsl; with `texels`, they
-// read the lists as texels (ClusterLists::readsTexels); with `globalList`, part 0's programs walk
-// the global list (ClusterLists::hasGlobalList).
-gl::Defines clusterListDefines(gl::Defines defines, bool texels = false, bool globalList = false);
+// CLUSTER_LIST_PART and GLOBAL_LIGHT_CAPACITY, for programs that include lib/cluster_lists.glsl.
+// Whether they read the lists as texels and walk the global list is their ShaderVariant's
+// (render/programs/LightingPrograms.h: listTexels, globalLightList).
+gl::Defines clusterListDefines(gl::Defines defines);
 
 // The most lights whose lists are built from bit masks (above) rather than sorted, where the
 // masks of every cluster take at most kMaskedListBudgetBytes (a frame of 16,384 lights at
@@ -121,11 +121,11 @@ public:
     // Binds what the lighting programs read: the lists and the long lists' tiles.
     void bind() const;
     // Whether the lighting reads the lists as R32UI texels, and so needs programs built with
-    // clusterListDefines(.., true): where the scene reads its lights from texels too
+    // ShaderVariant::listTexels: where the scene reads its lights from texels too
     // (RendererDesc::lightTexels) and the driver's texture buffers hold the planned storage.
     bool readsTexels() const { return texels_ && sceneTexels_; }
     // Whether the frame built last has a global list, which part 0's lighting must walk (with
-    // programs built with clusterListDefines(.., .., true)). Planned from the frame before: a
+    // programs of ShaderVariant::globalLightList). Planned from the frame before: a
     // frame has one where that frame found candidates, and no more of them than the list
     // holds, so that the lighting of a scene without any does not carry the walk of an empty
     // list (on the courtyard the difference measured within the spread). A frame without one

@@ -95,21 +95,27 @@ std::uint32_t lightsPerBatch(LightSource source)
     return source == LightSource::UniformWindow ? kLightsPerWindow : kLightsPerBatch;
 }
 
-const gl::Program& LightingProgram::variant(const LightingFeatures& features, LightSource source,
-                                            std::optional<MaterialVariant> material) const
+gl::Defines ShaderVariant::toDefines(gl::Defines defines) const
 {
-    const auto key = std::make_tuple(features, source, material);
+    defines = lightingFeatureDefines(lighting, std::move(defines));
+    if (lights == LightSource::UniformWindow)
+        addLightWindowDefines(defines);
+    if (lights == LightSource::TexelBuffer)
+        addLightTexelsDefines(defines);
+    if (material)
+        defines = materialVariantDefines(*material, std::move(defines));
+    if (listTexels)
+        defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
+    if (globalLightList)
+        defines.emplace_back("GLOBAL_LIGHT_LIST", "1");
+    return defines;
+}
+
+const gl::Program& LightingProgram::variant(const ShaderVariant& key) const
+{
     auto found = variants_.find(key);
-    if (found == variants_.end()) {
-        gl::Defines defines = lightingFeatureDefines(features, defines_);
-        if (source == LightSource::UniformWindow)
-            addLightWindowDefines(defines);
-        if (source == LightSource::TexelBuffer)
-            addLightTexelsDefines(defines);
-        if (material)
-            defines = materialVariantDefines(*material, std::move(defines));
-        found = variants_.emplace(key, gl::Program(label_, stages_, defines)).first;
-    }
+    if (found == variants_.end())
+        found = variants_.emplace(key, gl::Program(label_, stages_, key.toDefines(defines_))).first;
     return found->second;
 }
 

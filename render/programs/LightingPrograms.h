@@ -19,7 +19,6 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -164,6 +163,29 @@ inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
 // `defines` plus MATERIAL_VARIANT = `variant`.
 gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines);
 
+// One typed key for what a lighting program varies in from draw to draw and frame to frame
+// (issue 46): the scene's features under the driver's policy, where the lights are read from,
+// the material of a mesh program, and how the light lists are read. LightingProgram caches its
+// programs by it and compiles each from its toDefines(); what a program is made with once (the
+// technique's options, a grid's shape) stays in the program's own defines.
+struct ShaderVariant {
+    LightingFeatures lighting{};
+    LightSource lights = LightSource::StorageBuffer;
+    // A mesh program's material (MATERIAL_VARIANT); none for the full-screen and compute passes.
+    std::optional<MaterialVariant> material{};
+    // The light lists as R32UI texels (CLUSTER_LIST_TEXELS, render/culling/ClusterLists.h
+    // readsTexels), and part 0 walking the global list (GLOBAL_LIGHT_LIST, hasGlobalList).
+    bool listTexels = false;
+    bool globalLightList = false;
+
+    auto operator<=>(const ShaderVariant&) const = default;
+
+    // `defines` (the program's own) plus this variant's: lightingFeatureDefines, the light
+    // source's (light windows or texels), MATERIAL_VARIANT, CLUSTER_LIST_TEXELS and
+    // GLOBAL_LIGHT_LIST.
+    gl::Defines toDefines(gl::Defines defines) const;
+};
+
 class LightingProgram {
 public:
     LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
@@ -171,17 +193,21 @@ public:
     {
     }
 
-    // The variant for `features` reading the lights from `source`, for a mesh program also for
-    // the material's variant, compiled the first time it is asked for (throws manylights::Error
+    // The program of `key`, compiled the first time it is asked for (throws manylights::Error
     // as gl::Program does).
+    const gl::Program& variant(const ShaderVariant& key) const;
+    // The same for the key of these parts.
     const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer,
-                               std::optional<MaterialVariant> material = std::nullopt) const;
+                               std::optional<MaterialVariant> material = std::nullopt) const
+    {
+        return variant(ShaderVariant{.lighting = features, .lights = source, .material = material});
+    }
 
 private:
     std::string label_;
     std::vector<gl::ShaderStage> stages_;
     gl::Defines defines_;
-    mutable std::map<std::tuple<LightingFeatures, LightSource, std::optional<MaterialVariant>>, gl::Program> variants_;
+    mutable std::map<ShaderVariant, gl::Program> variants_;
 };
 
 }  // namespace manylights

@@ -9,20 +9,19 @@ namespace manylights {
 namespace {
 
 LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
-                                 const ClusterGridShape& shape, LightingStage stage, bool texels, bool globalList)
+                                 const ClusterGridShape& shape, LightingStage stage)
 {
-    const gl::Defines defines =
-        clusterListDefines(clusterGridDefines(shaderDefines(options), shape), texels, globalList);
+    const gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), shape));
     if (stage == LightingStage::Compute)
         return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, defines);
     return LightingProgram(label, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
                            defines);
 }
 
-LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape, bool texels)
+LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape)
 {
     return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}},
-                           clusterListDefines(clusterGridDefines(shaderDefines(options), shape), texels));
+                           clusterListDefines(clusterGridDefines(shaderDefines(options), shape)));
 }
 
 }  // namespace
@@ -30,11 +29,8 @@ LightingProgram laterPartsProgram(const TechniqueOptions& options, const Cluster
 ListLighting::ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
                            LightingStage stage)
     : stage_(stage),
-      firstPart_{{firstPartProgram(label, options, shape, stage, false, false),
-                  firstPartProgram(label, options, shape, stage, false, true)},
-                 {firstPartProgram(label, options, shape, stage, true, false),
-                  firstPartProgram(label, options, shape, stage, true, true)}},
-      laterParts_{laterPartsProgram(options, shape, false), laterPartsProgram(options, shape, true)}
+      firstPart_(firstPartProgram(label, options, shape, stage)),
+      laterParts_(laterPartsProgram(options, shape))
 {
 }
 
@@ -43,9 +39,11 @@ void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const Clu
 {
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();
-    const int texels = lists.readsTexels() ? 1 : 0;
-    const gl::Program& first =
-        firstPart_[texels][lists.hasGlobalList() ? 1 : 0].variant(scene.lightingFeatures(), source);
+    const ShaderVariant key{.lighting = scene.lightingFeatures(),
+                            .lights = source,
+                            .listTexels = lists.readsTexels(),
+                            .globalLightList = lists.hasGlobalList()};
+    const gl::Program& first = firstPart_.variant(key);
     const LightBatch allLights{0, static_cast<std::uint32_t>(scene.lightCount())};
     Pass pass = lightBatchPass(allLights, Resource::LightGrid);
     // The lists may be read as texels (GL_TEXTURE_FETCH_BARRIER_BIT after the list passes'
@@ -59,7 +57,8 @@ void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const Clu
                     });
     if (lists.laterParts() == 0)
         return;
-    const gl::Program& later = laterParts_[texels].variant(scene.lightingFeatures(), source);
+    const gl::Program& later = laterParts_.variant(ShaderVariant{
+        .lighting = key.lighting, .lights = source, .listTexels = key.listTexels, .globalLightList = false});
     Pass laterPass = computeLightingPass(pass);
     laterPass.indirect = Resource::LightGrid;
     for (std::uint32_t part = 1; part <= lists.laterParts(); ++part)

@@ -27,11 +27,10 @@ public:
 
 private:
     LightingStage stage_;
-    // Part 0 in the stage: [texels][global list], reading the lists from the storage buffer or
-    // from texels, walking the global list or not (ClusterLists::readsTexels, hasGlobalList).
-    LightingProgram firstPart_[2][2];
-    // The later parts: [texels]. The global list is part 0's.
-    LightingProgram laterParts_[2];
+    // Part 0 in the stage, and the later parts (without the global list, which is part 0's); each
+    // in the variants of ShaderVariant::listTexels and globalLightList the lists ask for.
+    LightingProgram firstPart_;
+    LightingProgram laterParts_;
 };
 
 }  // namespace manylights
