@@ -445,7 +445,7 @@ bool ClusterLists::oldestFrameFitted()
 {
     if (statusCopies_.pending() == 0)
         return true;
-    const Plan built = statusCopies_.readOldest(&status_);
+    const Plan built = statusCopies_.readOldest(status_);
     const std::uint32_t builtCapacity = built.capacity;
     const std::uint32_t builtLaterParts = built.laterParts;
     const bool builtWithGlobalList = built.globalList;

@@ -248,7 +248,7 @@ private:
         bool globalList = false;
     };
     // Each frame's status, copied after its commands and read behind a fence (frameIssued).
-    ReadbackRing<Plan> statusCopies_{"cluster list status copy", sizeof(Status)};
+    ReadbackRing<Status, Plan> statusCopies_{"cluster list status copy"};
     // Each cluster's bit mask over the frame's lights and its summary (a bit per mask word
     // holding a light), where the frame is masked. All zero between frames:
     // cluster_mask_lists.comp clears what it reads.

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <deque>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -18,11 +19,15 @@
 
 namespace manylights {
 
-template <typename Record>
+// Copies of a `Contents` (the first sizeof(Contents) bytes of the source buffer, as plain bytes),
+// each with a `Record`.
+template <typename Contents, typename Record>
 class ReadbackRing {
+    static_assert(std::is_trivially_copyable_v<Contents>, "read back as bytes");
+
 public:
-    // Copies of `bytes` bytes, their buffers labelled `label`.
-    ReadbackRing(std::string label, std::size_t bytes) : label_(std::move(label)), bytes_(bytes) {}
+    // The copies' buffers are labelled `label`.
+    explicit ReadbackRing(std::string label) : label_(std::move(label)) {}
 
     // After the commands that write `source` (shader writes included: a barrier orders the copy
     // after them): copies its first bytes, fenced, with `record`.
@@ -33,12 +38,12 @@ public:
             copy = std::move(spare_.back());
             spare_.pop_back();
         } else {
-            copy.buffer =
-                gl::Buffer(label_, bytes_, nullptr, GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
+            copy.buffer = gl::Buffer(label_, sizeof(Contents), nullptr,
+                                     GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
             copy.mapped = copy.buffer.mapForReading();
         }
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        source.copyTo(copy.buffer, bytes_);
+        source.copyTo(copy.buffer, sizeof(Contents));
         copy.fence = gl::Fence::afterIssuedCommands();
         copy.record = record;
         pending_.push_back(std::move(copy));
@@ -47,20 +52,18 @@ public:
     // Copies pushed and not yet read.
     std::size_t pending() const { return pending_.size(); }
 
-    // The oldest copy's bytes into `out` (bytes() of them) and its record, after waiting for its
-    // fence; pending() must not be 0.
-    Record readOldest(void* out)
+    // The oldest copy into `out` and its record, after waiting for its fence; pending() must not
+    // be 0.
+    Record readOldest(Contents& out)
     {
         Copy& copy = pending_.front();
         copy.fence.wait();
-        std::memcpy(out, copy.mapped, bytes_);
+        std::memcpy(&out, copy.mapped, sizeof(Contents));
         Record record = std::move(copy.record);
         spare_.push_back(std::move(copy));
         pending_.pop_front();
         return record;
     }
-
-    std::size_t bytes() const { return bytes_; }
 
 private:
     struct Copy {
@@ -70,7 +73,6 @@ private:
         Record record{};
     };
     std::string label_;
-    std::size_t bytes_;
     std::deque<Copy> pending_;  // oldest first
     std::vector<Copy> spare_;   // read, for reuse
 };

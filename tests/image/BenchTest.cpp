@@ -419,6 +419,25 @@ TEST(Bench, BadSceneIsOneLineExitOne)
     expectEmpty(out);
 }
 
+// The culling's settings from the environment are read and checked by bench as by render
+// (apps/cli/CommandSupport.h cullingTuningFromEnvironment; render's cases: GlobalLightsTest.cpp):
+// one line naming the variable, exit 1, and neither output written.
+TEST(Bench, ABadCullingSettingIsOneLineExitOneBeforeAnyOutput)
+{
+    const auto out = scratchDirectory() / "out";
+    std::filesystem::create_directory(out);
+    const std::vector<std::string> args = {
+        "bench", "--techniques", "tiled-quads", "--size", "16x16", "--frames", "1", "--csv", (out / "b.csv").string()};
+    const test::ProcessResult result = runExecutable(args, "MANYLIGHTS_CULLING_THREADS=0");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(std::count(result.stderrText.begin(), result.stderrText.end(), '\n'), 1) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("MANYLIGHTS_CULLING_THREADS: expected a whole number of threads"),
+              std::string::npos)
+        << result.stderrText;
+    expectEmpty(out);
+    EXPECT_EQ(runExecutable(args, "MANYLIGHTS_CULLING_THREADS=2").exitCode, 0);
+}
+
 TEST(Bench, LightsNeedLightSets)
 {
     const auto dir = scratchDirectory();
