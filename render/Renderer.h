@@ -46,9 +46,13 @@ struct RendererDesc {
     // in_range_pairs counted over every light instead of the lights a per-tile cull keeps
     // (shaders/in_range.comp): the reference the tests check the culled count against.
     bool inRangeBruteForce = false;
-    // --shadow-lights: how many local lights get shadow maps (ShadowMaps); above 0, techniques
-    // are made in their variants that look the maps up (TechniqueOptions::localShadows).
+    // --shadow-lights: how many local lights cast shadows, the ones ranked highest each frame
+    // (kAllShadowLights: every light that does not opt out); above 0, techniques are made in
+    // their variants that look the shadow pages up (TechniqueOptions::localShadows).
     int shadowLights = 0;
+    // --shadow-pool-mib: the shadow-page pool's size, a multiple of kShadowPoolGrainMiB from
+    // kMinShadowPoolMiB to kMaxShadowPoolMiB (scene/ShadowSelection.h); 0: kDefaultShadowPoolMiB.
+    int shadowPoolMiB = 0;
     bool directionalShadows = true;         // the viewer's switch (ShadowMaps::setDirectionalShadows)
     bool rebuildShadowsEveryFrame = false;  // --rebuild-shadows
     // The scene's `ssao` settings when not set (the viewer edits them).

@@ -83,6 +83,8 @@ struct Light {
     float exponent = 0.0f;
     // Motion over time around `position` (scene/Animation.h); none: the light stands still.
     std::optional<LightAnimation> animation{};
+    // "castsShadows": false opts the light out of --shadow-lights (all or a cap).
+    bool castsShadows = true;
 };
 
 // A closed interval [lo, hi] from which a light set draws a value uniformly.
@@ -254,6 +256,9 @@ struct Scene {
     glm::vec3 ambient{0.0f};
     std::optional<DirectionalLight> directional;
     AmbientOcclusion ssao;
+    // "shadowLights" in the scene file: N or "all" (kAllShadowLights, scene/ShadowSelection.h);
+    // --shadow-lights overrides it. None: 0, only a directional light casts shadows.
+    std::optional<int> shadowLights;
     // `environment` in the scene file: image-based light (docs/lighting.md, "The environment").
     std::optional<Environment> environment;
     DisplaySettings display;  // `display` in the scene file: how 8-bit outputs and the window show it

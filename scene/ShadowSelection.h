@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -10,6 +11,18 @@
 #include "scene/Scene.h"
 
 namespace manylights {
+
+// --shadow-lights all (and a scene's "shadowLights": "all"): a cap no light count reaches, so
+// every local light that does not opt out ("castsShadows": false) casts shadows.
+inline constexpr int kAllShadowLights = std::numeric_limits<int>::max();
+
+// The shadow-page pool (render/shadows/, docs/shadows.md), in MiB (--shadow-pool-mib): the
+// depth atlas and the page tables together. Whole multiples of kShadowPoolGrainMiB (one
+// 1024² block of 32-bit depth); the default holds the arithmetic's 65,536 lights.
+inline constexpr int kDefaultShadowPoolMiB = 256;
+inline constexpr int kShadowPoolGrainMiB = 4;
+inline constexpr int kMinShadowPoolMiB = kShadowPoolGrainMiB;
+inline constexpr int kMaxShadowPoolMiB = 1024;
 
 // The axis-aligned box around `local` under an affine transform (its transformed corners'
 // box: affine maps keep convex hulls, so it bounds the transformed contents).
