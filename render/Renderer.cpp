@@ -70,7 +70,7 @@ void Renderer::apply(const RendererDesc& requested)
         scene && (first || desc.environmentLook != old.environmentLook))
         gpuScene_.setEnvironmentLook(desc.environmentLook.value_or(scene->look));
     profiler_.setWaitHook(desc.waitHook);
-    shadowMaps_.setLocalLightBudget(desc.shadowLights);
+    shadowPool_.configure(desc.shadowLights, desc.shadowPoolMiB, desc.rebuildShadowsEveryFrame);
     shadowMaps_.setDirectionalShadows(desc.directionalShadows);
     shadowMaps_.setRebuildEveryFrame(desc.rebuildShadowsEveryFrame);
 }
@@ -247,6 +247,7 @@ const gl::Program& Renderer::gbufferViewProgram(ViewMode view)
 void Renderer::prepareShadowing(ViewMode view, FramePasses& passes)
 {
     shadowMaps_.update(passes);
+    shadowPool_.update(gpuScene_, *targets_, passes, techniqueOptions());
     // The ssao view shows the occlusion the scene's settings would give, even where the scene
     // leaves it off.
     const AmbientOcclusion& occlusion = ambientOcclusion();
@@ -255,7 +256,8 @@ void Renderer::prepareShadowing(ViewMode view, FramePasses& passes)
             ssao_ = std::make_unique<Ssao>(desc_.gbufferLayout);
         ssao_->run(occlusion, passes);
     }
-    shadowMaps_.bind(occlusion.enabled);
+    shadowPool_.bind();
+    shadowMaps_.bind(occlusion.enabled, shadowPool_.lookupParams());
     gpuScene_.setFrameShadowing(shadowMaps_.directionalActive(), occlusion.enabled);
 }
 

@@ -21,6 +21,7 @@
 #include "render/output/Image.h"
 #include "render/scene/GpuScene.h"
 #include "render/scene/TextureCache.h"
+#include "render/shadows/ShadowPool.h"
 #include "render/techniques/Technique.h"
 #include "render/volumes/VolumeDrawer.h"
 
@@ -171,10 +172,16 @@ public:
     // displayed frame.
     const gl::Framebuffer* displayedFramebuffer() const;
 
-    // The shadow maps as the settings made them (what they rendered, which lights they chose).
+    // The directional light's shadow map and the local lights' shadow-page pool as the
+    // settings made them (what they drew, which lights have faces).
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
-    // Renders every shadow map again in the next frame, as after a change to the scene.
-    void invalidateShadowMaps() { shadowMaps_.invalidate(); }
+    const ShadowPool& shadowPool() const { return shadowPool_; }
+    // Renders every shadow map and page again in the next frame, as after a change to the scene.
+    void invalidateShadowMaps()
+    {
+        shadowMaps_.invalidate();
+        shadowPool_.invalidate();
+    }
     // The ambient occlusion frames use: desc().ambientOcclusion, or the scene's.
     const AmbientOcclusion& ambientOcclusion() const
     {
@@ -219,6 +226,7 @@ private:
     TransparencyPass* transparency_ = nullptr;
     PassProfiler profiler_;
     ShadowMaps shadowMaps_;
+    ShadowPool shadowPool_;
     DisplayPass displayPass_;
 
     // The debug and counting programs are made on first use: most runs render the final image

@@ -26,7 +26,7 @@ allowed_for() {
 
 # render/'s rooms from the bottom up, as CODE_STYLE.md tables them: a room may include from the
 # rooms before it in this list.
-render_rooms=(driver programs output environment scene frame culling effects techniques volumes)
+render_rooms=(driver programs output environment scene frame culling effects techniques shadows volumes)
 
 room_rank() {
   local i

@@ -163,6 +163,8 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     result.warmupFrames = static_cast<int>(warmup);
     result.lightingStage = lightingStageName(technique.options().lightingStage);
     result.counters = technique.counters();
+    for (const TechniqueCounter& counter : renderer.shadowPool().counters())
+        result.counters.push_back(counter);
 
     if (options.countWork) {
         // A separate frame with the counting variant: its atomics would distort the timings.

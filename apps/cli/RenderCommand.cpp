@@ -276,6 +276,9 @@ void runRender(const RenderOptions& options)
                             {"aa", std::string(antialiasingName(display.antialiasing))},
                             {"supersample", options.supersample},
                             {"applied", options.output.eightBit()}};
+        // The shadow-page pool's figures of the last frame (docs/shadows.md).
+        for (const TechniqueCounter& counter : renderer.shadowPool().counters())
+            stats[counter.name] = counter.value;
         stats["load_ms"] = loadMs;
         stats["lights_ms"] = lightsMs;
         stats["renderer_ms"] = rendererMs;

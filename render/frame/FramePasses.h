@@ -31,9 +31,10 @@ enum class Resource : std::uint8_t {
     GBuffer = 2,
     // a cluster grid's buffers (render/culling/ClusterGrid.h) and its light lists (render/culling/ClusterLists.h)
     LightGrid = 4,
-    WorkCounts = 8,  // the work-counting images and counters (--count-work)
+    WorkCounts = 8,    // the work-counting images and counters (--count-work)
+    ShadowPages = 16,  // the shadow-page pool's marks and tables (render/shadows/ShadowPool.h)
 };
-inline constexpr int kResourceKinds = 4;
+inline constexpr int kResourceKinds = 5;
 
 constexpr Resource operator|(Resource a, Resource b)
 {

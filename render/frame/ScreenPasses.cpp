@@ -23,7 +23,7 @@ Pass computeLightingPass(const Pass& fragment)
             .sampled = fragment.sampled,
             .images = Resource::LitImage,
             .storage = fragment.storage,
-            .writes = Resource::LitImage};
+            .writes = fragment.writes | Resource::LitImage};
 }
 
 }  // namespace manylights

@@ -12,9 +12,8 @@
 // The rule for every shader in this project: no invocation iterates more than
 // kMaxLoopIterations (render/programs/LoopBudget.h) times in all, whatever the scene, size or light count. A batch's
 // loops stay under it with room for the iterations around them: word walks of bit masks and per-tile culling, which
-// each shader's comment counts, and the 3x3 shadow filters of shaders/lib/shadows.glsl (at most 13 iterations each,
-// should a compiler not unroll them) for the shadowed lights, at most kMaxShadowLights (kShadowLookupBudget;
-// LightBatches.cpp checks the sum).
+// each shader's comment counts, and the directional light's 3x3 shadow filter of shaders/lib/shadows.glsl
+// (kShadowLookupBudget; a local light's shadow is one tap with no loop; LightBatches.cpp checks the sum).
 #pragma once
 
 #include <cstdint>

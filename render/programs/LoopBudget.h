@@ -14,16 +14,18 @@ namespace manylights {
 // around a light walk that a comment cannot count exactly.
 inline constexpr std::uint32_t kMaxLoopIterations = 16384;
 
-// The most local lights --shadow-lights (and the viewer) may give shadow maps: a cube map of
-// 512² faces is 4.5 MiB of depth, so 256 of them already take over a GiB (render/effects/ShadowMaps.h).
+// The most local lights --shadow-lights took before the shadow-page pool (issue 47); the
+// command line no longer bounds the option by it, and nothing in the shaders' budget does.
 inline constexpr int kMaxShadowLights = 256;
 
-// The iterations of one shadow lookup, should a compiler not unroll its loops: the 3x3 filter
-// of shaders/lib/shadows.glsl runs 3 + 1 outer and 3 · (3 + 1) inner iterations.
+// The iterations of the directional light's shadow lookup, should a compiler not unroll its
+// loops: the 3x3 filter of shaders/lib/shadows.glsl runs 3 + 1 outer and 3 · (3 + 1) inner
+// iterations, once per pixel. A local light's lookup (shaders/lib/shadow_pages.glsl) is one
+// tap and no loop, whatever the number of shadowed lights: it adds nothing to a light walk's
+// iterations.
 inline constexpr std::uint32_t kShadowLookupIterations = 16;
 
-// The most iterations a pixel spends on shadow lookups: the directional light and every
-// shadowed local light, once each.
-inline constexpr std::uint32_t kShadowLookupBudget = kShadowLookupIterations * (kMaxShadowLights + 1);
+// The most iterations a pixel spends on shadow lookups: the directional light's, once.
+inline constexpr std::uint32_t kShadowLookupBudget = kShadowLookupIterations;
 
 }  // namespace manylights

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/Error.h"
+#include "gl/CallTally.h"
 #include "render/programs/Bindings.h"
 #include "render/programs/Locations.h"
 #include "render/scene/SceneLights.h"
@@ -573,6 +574,48 @@ std::size_t DrawList::drawObjectsDepthOnly(const MeshProgramFor& programFor,
         }
     }
     return drawn;
+}
+
+std::vector<DrawList::Caster> DrawList::casters() const
+{
+    std::vector<Caster> result;
+    for (std::size_t batch = 0; batch < batches_.size(); ++batch) {
+        const DrawBatch& run = batches_[batch];
+        for (std::size_t i = run.firstItem; i < run.firstItem + run.itemCount; ++i) {
+            const DrawItem& item = draws_[i];
+            // Transparent surfaces cast no shadows (docs/transparency.md); light markers have no bounds.
+            if (!item.worldBounds.empty() && !isTransparent(*item.material))
+                result.push_back({i, batch, item.groupedIndex, item.worldBounds});
+        }
+    }
+    return result;
+}
+
+void DrawList::drawCasterRuns(const MeshProgramFor& programFor, const std::vector<CasterRun>& runs,
+                              GLint baseLocation) const
+{
+    instanceBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding);
+    const gl::Program* current = nullptr;
+    for (const CasterRun& run : runs) {
+        const DrawItem& first = draws_[batches_[run.batch].firstItem];
+        const MaterialVariant variant = depthOnlyVariant(first.variant);
+        const gl::Program& program = programFor(variant);
+        if (&program != current) {
+            program.use();
+            current = &program;
+        }
+        setObjectUniforms(program, first);
+        if ((variant & kDiffuseMapBit) != 0) {
+            MaterialMaps diffuseOnly;
+            diffuseOnly.diffuse = first.maps->diffuse;
+            bindMaterial(program, *first.material, diffuseOnly);
+        }
+        program.set(baseLocation, static_cast<int>(run.first));
+        const MeshRange& range = first.range;
+        gl::counted(glDrawElementsInstancedBaseVertex, GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                    reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)),
+                    static_cast<GLsizei>(run.count), range.baseVertex);
+    }
 }
 
 }  // namespace manylights

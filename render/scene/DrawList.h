@@ -87,6 +87,27 @@ public:
     std::size_t drawObjectsDepthOnly(const MeshProgramFor& programFor,
                                      const std::function<bool(const Bounds&)>& keep) const;
 
+    // A shadow caster (opaque, with bounds; render/shadows/ShadowPool.h): its item's index (its
+    // instance record's, valid until the next order()), its batch, an identity that stays
+    // with it from frame to frame, and its world bounds.
+    struct Caster {
+        std::size_t item;
+        std::size_t batch;
+        std::size_t identity;
+        Bounds worldBounds;
+    };
+    std::vector<Caster> casters() const;
+    // Instances of one batch's mesh whose (item, face part) pairs are `count` from `first` of
+    // the pairs buffer shaders/shadow_page.vert reads, its base set at `baseLocation`.
+    struct CasterRun {
+        std::size_t batch;
+        std::size_t first;
+        std::size_t count;
+    };
+    // Draws each run as one instanced draw with programFor(depthOnlyVariant(...)), as
+    // drawObjectsDepthOnly draws a batch.
+    void drawCasterRuns(const MeshProgramFor& programFor, const std::vector<CasterRun>& runs, GLint baseLocation) const;
+
     // The draw calls drawObjects makes (it makes them nearest first); their item counts sum to
     // itemCount().
     const std::vector<DrawBatch>& batches() const { return batches_; }

@@ -79,6 +79,13 @@ public:
     {
         return draws_.drawObjectsDepthOnly(programFor, keep);
     }
+    // The shadow casters and their draws into the shadow pages (DrawList::casters, drawCasterRuns).
+    std::vector<DrawList::Caster> casters() const { return draws_.casters(); }
+    void drawCasterRuns(const DrawList::MeshProgramFor& programFor, const std::vector<DrawList::CasterRun>& runs,
+                        GLint baseLocation) const
+    {
+        draws_.drawCasterRuns(programFor, runs, baseLocation);
+    }
     void setViewport(int width, int height);
     // The camera the frame uniforms are made for; the scene's own until set (the viewer moves it).
     void setCamera(const Camera& camera);
@@ -106,6 +113,8 @@ public:
     static Mesh lightMarkerMesh() { return DrawList::lightMarkerMesh(); }
 
     std::size_t lightCount() const { return lights_.count(); }
+    // Whether a new time() moves some light (SceneLights::hasAnimatedLights).
+    bool hasAnimatedLights() const { return lights_.hasAnimatedLights(); }
     // The GPU memory the lights hold (SceneLights::memoryBytes).
     std::size_t lightMemoryBytes() const { return lights_.memoryBytes(); }
     // The kinds of light the scene has and what the frame's shadowing reads, under the driver's

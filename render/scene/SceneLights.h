@@ -67,6 +67,8 @@ public:
     void pose(double t);
     // Whether a pose() has moved lights that the buffer does not have yet.
     bool posePending() const { return gpuPosedAt_ != posedAt_; }
+    // Whether any light has an animation: only then does a new time move a light.
+    bool hasAnimatedLights() const { return !animated_.empty(); }
     // Writes the animated lights' positions at the last pose() into the buffer, on the GPU (one
     // dispatch), and makes them visible to every later read of the lights; nothing when
     // !posePending(). Renderer runs it as the frame's first pass.

@@ -8,34 +8,43 @@ namespace manylights {
 
 namespace {
 
-LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
-                                 const ClusterGridShape& shape, LightingStage stage)
+gl::Defines walkDefines(const TechniqueOptions& options, const ClusterGridShape& shape, ListWalk walk)
 {
-    const gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), shape));
+    gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), shape));
+    if (walk == ListWalk::MarkShadowPages)
+        defines.push_back({"SHADOW_PAGE_MARKING", "1"});
+    return defines;
+}
+
+LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
+                                 const ClusterGridShape& shape, LightingStage stage, ListWalk walk)
+{
+    const gl::Defines defines = walkDefines(options, shape, walk);
     if (stage == LightingStage::Compute)
         return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, defines);
     return LightingProgram(label, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
                            defines);
 }
 
-LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape)
+LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape, ListWalk walk)
 {
     return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}},
-                           clusterListDefines(clusterGridDefines(shaderDefines(options), shape)));
+                           walkDefines(options, shape, walk));
 }
 
 }  // namespace
 
 ListLighting::ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
-                           LightingStage stage)
+                           LightingStage stage, ListWalk walk)
     : stage_(stage),
-      firstPart_(firstPartProgram(label, options, shape, stage)),
-      laterParts_(laterPartsProgram(options, shape))
+      passName_(walk == ListWalk::MarkShadowPages ? "shadow marks" : "lighting"),
+      firstPart_(firstPartProgram(label, options, shape, stage, walk)),
+      laterParts_(laterPartsProgram(options, shape, walk))
 {
 }
 
-void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists,
-                       FramePasses& passes) const
+void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes,
+                       Resource alsoWrites) const
 {
     // Lists name lights by index, so the lights are read by index.
     const LightSource source = scene.indexedLightSource();
@@ -49,6 +58,8 @@ void ListLighting::run(const GpuScene& scene, const ClusterGrid& grid, const Clu
     // The lists may be read as texels (GL_TEXTURE_FETCH_BARRIER_BIT after the list passes'
     // storage writes, not only GL_SHADER_STORAGE_BARRIER_BIT).
     pass.sampled = pass.sampled | Resource::LightGrid;
+    pass.writes = pass.writes | alsoWrites;
+    pass.name = passName_;
     runLightingPass(passes, stage_, pass, first, static_cast<GLuint>(grid.gridWidth()),
                     static_cast<GLuint>(grid.gridHeight()), [&] {
                         scene.bindLightSource(source, allLights);

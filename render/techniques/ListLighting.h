@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
@@ -16,17 +17,25 @@
 
 namespace manylights {
 
+// What the walk of the lists does with each (pixel, light) pair: shades it into the lit
+// image, or marks the shadow page its lookup would read (render/shadows/ShadowPool.h: the
+// programs built with SHADOW_PAGE_MARKING, which store nothing in the lit image).
+enum class ListWalk { Shade, MarkShadowPages };
+
 class ListLighting {
 public:
     // For lists over grids of `shape`, with programs made for `options` (whose lighting stage
-    // is `stage`: tiled lights in compute whatever its options say).
+    // is `stage`: tiled lights in compute whatever its options say) to do `walk`.
     ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
-                 LightingStage stage);
-    // After ClusterLists::build over `grid`.
-    void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes) const;
+                 LightingStage stage, ListWalk walk = ListWalk::Shade);
+    // After ClusterLists::build over `grid`. `alsoWrites`: what the walk writes besides the lit
+    // image (the shadow pool's marks), for the passes' barriers.
+    void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes,
+             Resource alsoWrites = Resource::None) const;
 
 private:
     LightingStage stage_;
+    std::string_view passName_;  // "lighting", or the marking's "shadow marks"
     // Part 0 in the stage, and the later parts (without the global list, which is part 0's); each
     // in the variants of ShaderVariant::listTexels and globalLightList the lists ask for.
     LightingProgram firstPart_;

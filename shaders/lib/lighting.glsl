@@ -161,6 +161,9 @@ vec3 environmentReflected(Surface s, vec3 V)
 // colour is then the same to the bit as before there were environments.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
+#ifdef SHADOW_PAGE_MARKING  // the shadow pool's marking pass shades nothing (shadeLocalLight)
+    return vec3(0.0);
+#endif
     vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * ambientReflectance(s, V) * ambientOcclusion(s.position);
 #ifndef NO_ENVIRONMENT
     color += frame.terms.x * environmentReflected(s, V) * ambientOcclusion(s.position);
@@ -233,9 +236,16 @@ vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
     if (reach.w == 0.0)
         return vec3(0.0);
 #endif
+#ifdef SHADOW_PAGE_MARKING
+    // The shadow pool's marking pass (lib/shadow_pages.glsl): the pairs that would look a page
+    // up below mark it instead, and nothing is shaded.
+    if (reach.w != 0.0)
+        markShadowPages(lightIndex, light, s.position);
+    return vec3(0.0);
+#endif
     // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
-    // skips its texture taps for the pairs out of reach.
-    float shadow = reach.w != 0.0 ? localShadow(lightIndex, light.positionRadius.xyz, s.position) : 0.0;
+    // skips its texture tap for the pairs out of reach.
+    float shadow = reach.w != 0.0 ? localShadow(lightIndex, light, s.position, s.normal) : 0.0;
     vec3 color = light.intensityExponent.rgb * surfaceBrdf(s, reach.xyz, V) * reach.w * shadow;
     return reach.w != 0.0 ? color : vec3(0.0);
 }

@@ -21,6 +21,9 @@ bool isLitPixel(ivec2 pixel)
 // or part stored, as the blend unit adds the fragment stage's colour to the stored one.
 void storeLitPixel(ivec2 pixel, vec3 color, bool addToStored)
 {
+#ifdef SHADOW_PAGE_MARKING  // the shadow pool's marking pass (lib/shadow_pages.glsl) lights nothing
+    return;
+#endif
     if (addToStored)
         color = color + imageLoad(litImage, pixel).rgb;
     imageStore(litImage, pixel, vec4(color, 1.0));

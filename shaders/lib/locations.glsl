@@ -24,6 +24,8 @@ const int INSTANCE_BASE_LOCATION = 33;
 
 // shadow_depth.vert (render/effects/ShadowMaps.cpp).
 const int LIGHT_VIEW_PROJECTION_LOCATION = 20;
+// shadow_page.vert (render/shadows/ShadowPool.cpp): the first (caster, face) pair of a draw.
+const int SHADOW_CASTER_FACE_BASE_LOCATION = 63;
 
 // pose_lights.comp (render/scene/SceneLights.cpp).
 const int POSE_TIME_LOCATION = 0;

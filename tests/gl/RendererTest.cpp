@@ -10,6 +10,7 @@
 #include "render/Techniques.h"
 #include "scene/LightSets.h"
 #include "scene/SceneLoader.h"
+#include "scene/ShadowSelection.h"
 #include "tests/support/ImageComparison.h"
 
 namespace manylights {
@@ -33,7 +34,8 @@ TEST_F(RendererTest, ZerosInTheDescStandForTheDefaults)
     EXPECT_EQ(renderer.height(), kDefaultImageHeight);
     EXPECT_EQ(renderer.desc().supersample, 1);
     EXPECT_FALSE(renderer.desc().countWork);
-    EXPECT_EQ(renderer.shadowMaps().localLightBudget(), 0);
+    EXPECT_EQ(renderer.desc().shadowLights, 0);
+    EXPECT_EQ(renderer.shadowPool().poolMiB(), kDefaultShadowPoolMiB);
 }
 
 TEST_F(RendererTest, TechniqueVariantsFollowTheSettingsAndAreMadeOnce)
@@ -58,7 +60,7 @@ TEST_F(RendererTest, TechniqueVariantsFollowTheSettingsAndAreMadeOnce)
     renderer.apply(desc);
     Technique& shadowed = renderer.technique("deferred");
     EXPECT_TRUE(shadowed.options().localShadows);
-    EXPECT_EQ(renderer.shadowMaps().localLightBudget(), 2);
+    EXPECT_EQ(renderer.desc().shadowLights, 2);
 
     // Back to the first settings: the first variant again, not a new one.
     desc.shadowLights = 0;

@@ -1,0 +1,144 @@
+// Local lights' shadows from the shadow-page pool (render/shadows/ShadowPool.h, docs/shadows.md):
+// every local light may cast a shadow, each of its faces drawn into pages of one depth atlas
+// at a resolution its receivers chose. Two users:
+// - the marking pass (SHADOW_PAGE_MARKING: the clustered lists' walk of lib/list_pixel.glsl
+//   over every visible pixel, render/shadows/ShadowPool.cpp) marks, for each pair the lighting
+//   will shade, which cell of which face of the light the pixel falls in and the level it
+//   needs there (markShadowPages);
+// - the lighting of every technique reads one bilinear depth-comparison tap of the page
+//   there (localShadow, called by lib/lighting.glsl's shadeLocalLight for pairs in reach).
+// A face's geometry is render/shadows/ShadowFaces.cpp's, which draws the pages.
+#include "lib/shadow_page_layout.glsl"
+
+// A face of a light seen from a receiver at offset v from the light.
+struct ShadowFaceFrame {
+    uint face;     // 0 for a spot's one face; 0-5 for a cube's (+X, −X, +Y, −Y, +Z, −Z)
+    vec3 axis;     // the face's view direction
+    vec3 across;   // its image's x
+    vec3 up;       // its image's y
+    float tanHalf; // tangent of its half field of view
+};
+
+// The up vector each cube face's view is built with (ShadowFaces.cpp: kCubeFaceUp).
+vec3 shadowCubeFaceUp(uint face)
+{
+    return face == 2u ? vec3(0.0, 0.0, 1.0) : (face == 3u ? vec3(0.0, 0.0, -1.0) : vec3(0.0, -1.0, 0.0));
+}
+
+ShadowFaceFrame shadowFaceFrame(GpuLight light, vec3 v)
+{
+    ShadowFaceFrame f;
+    vec3 upHint;
+    float c = light.spotAxisCosCutoff.w;
+    if (c >= SHADOW_SPOT_FACE_MIN_COS) {
+        f.face = 0u;
+        f.axis = light.spotAxisCosCutoff.xyz;
+        upHint = abs(f.axis.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        f.tanHalf = sqrt(max(1.0 - c * c, 0.0)) / c * SHADOW_SPOT_FACE_SCALE;
+    } else {
+        vec3 a = abs(v);
+        uint axisIndex = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
+        bool negative = v[axisIndex] < 0.0;
+        f.face = axisIndex * 2u + (negative ? 1u : 0u);
+        f.axis = vec3(0.0);
+        f.axis[axisIndex] = negative ? -1.0 : 1.0;
+        upHint = shadowCubeFaceUp(f.face);
+        f.tanHalf = 1.0;
+    }
+    f.across = normalize(cross(f.axis, upHint));
+    f.up = cross(f.across, f.axis);
+    return f;
+}
+
+// The receiver's place on its face: x and y from 0 to 1 across it.
+vec2 shadowFaceUv(ShadowFaceFrame f, vec3 v, float depth)
+{
+    return vec2(dot(f.across, v), dot(f.up, v)) / (depth * f.tanHalf) * 0.5 + 0.5;
+}
+
+#ifdef SHADOW_PAGE_MARKING
+// One word per (light, face): render/shadows/ShadowPool.cpp clears the words of the lights that
+// cast shadows and sets every bit of the others', so that this pass marks only the former.
+layout(std430, binding = SHADOW_PAGE_MARKS_BUFFER_BINDING) coherent buffer ShadowPageMarks {
+    uint shadowPageMarks[];
+};
+
+// Marks the cell and level that the receiver at `position` needs of light `lightIndex`'s face:
+// the level whose texel is about the size of the pixel there (render/shadows/ShadowPool.cpp
+// clamps and, when the pool is short, lowers it).
+void markShadowPages(uint lightIndex, GpuLight light, vec3 position)
+{
+    vec3 v = position - light.positionRadius.xyz;
+    ShadowFaceFrame f = shadowFaceFrame(light, v);
+    float depth = dot(f.axis, v);
+    if (depth <= 0.0)
+        return;
+    ivec2 cell = clamp(ivec2(floor(shadowFaceUv(f, v, depth) * float(SHADOW_MARK_CELLS))), ivec2(0),
+                       ivec2(SHADOW_MARK_CELLS - 1));
+    // A pixel at view depth z is 2 z tan(fov_y / 2) / height across; a texel of a face of R
+    // texels at depth d along its axis is 2 d tanHalf / R: equal where R is this.
+    float texelsAcross = depth * f.tanHalf * frame.viewport.y / (max(viewDepth(position), 1e-6) * frame.projection.y);
+    float pages = (texelsAcross + float(2 * SHADOW_GUARD_TEXELS)) / float(SHADOW_PAGE_TEXELS);
+    int level = clamp(int(ceil(log2(max(pages, 1.0)))), 0, SHADOW_MAX_LEVEL);
+    uint bits = (1u << uint(cell.y * SHADOW_MARK_CELLS + cell.x)) | (1u << uint(SHADOW_MARK_LEVEL_SHIFT + level));
+    uint word = lightIndex * uint(SHADOW_CUBE_FACES) + f.face;
+    // Most pairs find their bits set already: the atomic only where one is missing.
+    if ((shadowPageMarks[word] & bits) != bits)
+        atomicOr(shadowPageMarks[word], bits);
+}
+#endif
+
+// Each light's first face record (its faces follow in order), or SHADOW_NO_FACES.
+const uint SHADOW_NO_FACES = 0xffffffffu;
+layout(std430, binding = SHADOW_FACE_OF_LIGHT_BUFFER_BINDING) readonly buffer ShadowFaceOfLight {
+    uint shadowFaceOfLight[];
+};
+// std430 layout of render/shadows/ShadowPool.h: GpuShadowFace.
+struct ShadowFace {
+    vec4 fine;    // xy: atlas texel minus face texel of the resident part; z: face resolution R; w: 1 if resident
+    vec4 region;  // the face texels the tap may read in the resident part: x0, y0, x1, y1
+    vec4 coarse;  // xy: atlas texel minus face texel of the coarse page; z: its resolution; w: 1 if there
+    vec4 depthRange;  // x: near, y: far
+};
+layout(std430, binding = SHADOW_FACES_BUFFER_BINDING) readonly buffer ShadowFaces {
+    ShadowFace shadowFaces[];
+};
+// 32-bit depth with hardware comparison (GL_LEQUAL) and bilinear filtering: one tap is a 2x2
+// percentage-closer filter.
+layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
+
+// The fraction of local light `light` (index `lightIndex`) that reaches `position`, a surface
+// of normal `normal`: one tap of its face's resident part, or of the face's coarse page where
+// the part does not hold the receiver. No loop. `atlasTexelSize`: 1 / the atlas' width, height.
+float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 normal, vec2 atlasTexelSize)
+{
+    uint first = shadowFaceOfLight[lightIndex];
+    // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
+    if (first == SHADOW_NO_FACES)
+        return 1.0;
+    vec3 v = position - light.positionRadius.xyz;
+    ShadowFaceFrame f = shadowFaceFrame(light, v);
+    ShadowFace face = shadowFaces[first + f.face];
+    float depth = dot(f.axis, v);
+    vec2 uv = shadowFaceUv(f, v, depth);
+    vec2 fineTexel = uv * face.fine.z;
+    bool fine = face.fine.w != 0.0 && all(greaterThanEqual(fineTexel, face.region.xy)) &&
+                all(lessThanEqual(fineTexel, face.region.zw));
+    if (!fine && face.coarse.w == 0.0)
+        return 1.0;
+    float resolution = fine ? face.fine.z : face.coarse.z;
+    vec2 atlasTexel = fine ? fineTexel + face.fine.xy : uv * face.coarse.z + face.coarse.xy;
+    // The receiver's depth is pulled towards the light by texels of the level read: one, and one
+    // more per unit of its slope to the light (the tap's 2x2 texels span that much of a tilted
+    // surface's depth), at most SHADOW_MAX_BIAS_WORLD world units (a thin wall still shadows).
+    float texelWorld = 2.0 * depth * f.tanHalf / resolution;
+    float cosine = clamp(dot(normal, -v) / max(length(v), 1e-20), 0.1, 1.0);
+    float slope = sqrt(1.0 - cosine * cosine) / cosine;
+    float bias = min(texelWorld * (SHADOW_BIAS_TEXELS + SHADOW_SLOPE_BIAS_TEXELS * slope), SHADOW_MAX_BIAS_WORLD);
+    float near = face.depthRange.x;
+    float far = face.depthRange.y;
+    float biased = clamp(depth - bias, near, far);
+    // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
+    float reference = (far + near) / (far - near) * 0.5 + 0.5 - far * near / ((far - near) * biased);
+    return texture(shadowAtlas, vec3(atlasTexel * atlasTexelSize, reference));
+}
