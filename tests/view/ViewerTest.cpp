@@ -745,6 +745,9 @@ TEST(Viewer, BadCommandLineIsExitTwo)
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --keymap emacs 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --technique fastest 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --size 0x10 2>/dev/null"), 2);
+    // The shadow options as render checks them (issue 47).
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --shadow-lights some 2>/dev/null"), 2);
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --shadow-pool-mib 2048 2>/dev/null"), 2);
 }
 
 TEST(Viewer, BadScriptIsOneLineExitOne)
