@@ -66,6 +66,7 @@ void generateSet(const LightSet& set, std::size_t setIndex, int count, std::vect
         light.type = set.type;
         light.name = prefix + std::to_string(i) + "]";
         light.falloff = Falloff::Range;
+        light.castsShadows = set.castsShadows;
         light.position.x = random.in({set.boxMin.x, set.boxMax.x});
         light.position.y = random.in({set.boxMin.y, set.boxMax.y});
         light.position.z = random.in({set.boxMin.z, set.boxMax.z});

@@ -110,6 +110,8 @@ struct LightSet {
     std::optional<int> rangeReferenceCount;
     // Given to every generated light, light i's phase advanced by i times the golden angle.
     std::optional<LightAnimation> animation{};
+    // "castsShadows": false: every generated light opts out of --shadow-lights (Light::castsShadows).
+    bool castsShadows = true;
 };
 
 // The texture slots of a material, in the order of Material::uvTransforms and of the shaders'

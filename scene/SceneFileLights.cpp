@@ -32,10 +32,10 @@ Light Loader::readLight(const Node& node, std::size_t index) const
     light.type = lightType(required(node, "type"), "light");
     if (light.type == LightType::Point) {
         rejectSpotKeys(node, {"direction", "cutoff", "exponent"}, "lights");
-        expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "animation"});
+        expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "animation", "castsShadows"});
     } else {
         expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "direction", "cutoff", "exponent",
-                          "animation"});
+                          "animation", "castsShadows"});
     }
     if (const auto animation = member(node, "animation"))
         light.animation = readLightAnimation(*animation);
@@ -45,6 +45,8 @@ Light Loader::readLight(const Node& node, std::size_t index) const
         light.name = "lights[" + std::to_string(index) + "]";
     light.position = vec3(required(node, "pos"));
     light.intensity = colour(required(node, "intensity"));
+    if (const auto castsShadows = member(node, "castsShadows"))
+        light.castsShadows = boolean(*castsShadows);
 
     const auto attenuation = member(node, "attenuation");
     const auto range = member(node, "range");
@@ -107,11 +109,11 @@ LightSet Loader::readLightSet(const Node& node) const
         set.type = lightType(*type, "light set");
     if (set.type == LightType::Point) {
         rejectSpotKeys(node, {"cutoff", "exponent"}, "light sets");
-        expectKeys(node,
-                   {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity", "animation"});
+        expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
+                          "animation", "castsShadows"});
     } else {
         expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
-                          "cutoff", "exponent", "animation"});
+                          "cutoff", "exponent", "animation", "castsShadows"});
     }
     if (const auto animation = member(node, "animation"))
         set.animation = readLightAnimation(*animation);
@@ -133,6 +135,8 @@ LightSet Loader::readLightSet(const Node& node) const
     if (const auto reference = member(node, "range_reference_count"))
         set.rangeReferenceCount = static_cast<int>(integer(*reference, 1, kMaxSetLights));
     set.intensity = interval(required(node, "intensity"), &Reader::nonNegative);
+    if (const auto castsShadows = member(node, "castsShadows"))
+        set.castsShadows = boolean(*castsShadows);
     if (set.type == LightType::Spot) {
         if (const auto cutoffNode = member(node, "cutoff"))
             set.cutoffDegrees = numberOrInterval(*cutoffNode, &Reader::cutoff);

@@ -1,7 +1,7 @@
 // The scene file's loader (docs/scene-format.md), one class whose sections live in files of
 // their own. Index (declarations in this order; each file's definitions in the same order):
-//   scene/SceneLoader.cpp          the top level, camera, directional, display, ssao,
-//                                  environment;
+//   scene/SceneLoader.cpp          the top level, camera, directional, shadowLights, display,
+//                                  ssao, environment;
 //                                  parseScene and loadSceneFile (scene/SceneLoader.h)
 //   scene/SceneFileLights.cpp      lights, their attenuation and animation, light_sets
 //   scene/SceneFileMaterials.cpp   materials, their texture paths, an object's material
@@ -60,6 +60,7 @@ private:
     // --- SceneLoader.cpp ---------------------------------------------------------
     void readCamera(const Node& node);
     DirectionalLight readDirectional(const Node& node) const;
+    int readShadowLights(const Node& node) const;
     DisplaySettings readDisplay(const Node& node) const;
     AmbientOcclusion readAmbientOcclusion(const Node& node) const;
     Environment readEnvironment(const Node& node) const;

@@ -9,6 +9,7 @@
 
 #include "core/InputFile.h"
 #include "scene/SceneFileLoader.h"
+#include "scene/ShadowSelection.h"
 
 namespace manylights {
 
@@ -22,7 +23,8 @@ Scene Loader::load(const Json& root)
     if (!root.is_object())
         fail(top, "the top level must be a JSON object, got " + describeType(root));
     expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights", "light_sets",
-                     "materials", "objects", "light_markers", "ssao", "display", "model_materials", "environment"});
+                     "materials", "objects", "light_markers", "ssao", "display", "model_materials", "environment",
+                     "shadowLights"});
     // Before the objects, which load the model files it applies to.
     if (const auto node = member(top, "model_materials"))
         modelMaterialsAsBlinnPhong_ = oneOf(*node, {"metallic-roughness", "blinn-phong"}) == "blinn-phong";
@@ -34,6 +36,8 @@ Scene Loader::load(const Json& root)
         scene_.ambient = colour(*node);
     if (const auto node = member(top, "directional"))
         scene_.directional = readDirectional(*node);
+    if (const auto node = member(top, "shadowLights"))
+        scene_.shadowLights = readShadowLights(*node);
     if (const auto node = member(top, "ssao"))
         scene_.ssao = readAmbientOcclusion(*node);
     if (const auto node = member(top, "display"))
@@ -109,6 +113,20 @@ DirectionalLight Loader::readDirectional(const Node& node) const
     if (const auto shadows = member(node, "shadows"))
         light.shadows = boolean(*shadows);
     return light;
+}
+
+// "shadowLights": a whole number of lights, or "all" (kAllShadowLights): --shadow-lights's values.
+int Loader::readShadowLights(const Node& node) const
+{
+    const std::string expected = "expected a whole number of lights or " + quote("all") + ", got ";
+    if (node.json->is_string()) {
+        if (const std::string text = string(node); text != "all")
+            fail(node, expected + quote(text));
+        return kAllShadowLights;
+    }
+    if (!node.json->is_number())
+        fail(node, expected + describeType(*node.json));
+    return static_cast<int>(integer(node, 0, kAllShadowLights));
 }
 
 DisplaySettings Loader::readDisplay(const Node& node) const

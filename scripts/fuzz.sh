@@ -46,7 +46,9 @@ printf '\0%s' 2.5 > "$seeds/FuzzCommandLine/number"
 printf '\1%s' 1280x720 > "$seeds/FuzzCommandLine/size"
 printf '\2%s' '0:4 30' > "$seeds/FuzzCommandLine/time-range"
 printf '\3%s' 'frames/%04d.png' > "$seeds/FuzzCommandLine/pattern"
-printf '\4%s' "$(printf 'frames 2\nresize 640 360\ntime 1.5\nspeed 2\nscreenshot a.png\nquit')" \
+printf '\4%s' all > "$seeds/FuzzCommandLine/shadow-lights"
+printf '\5%s' 256 > "$seeds/FuzzCommandLine/shadow-pool"
+printf '\6%s' "$(printf 'frames 2\nresize 640 360\ntime 1.5\nspeed 2\nscreenshot a.png\nquit')" \
   > "$seeds/FuzzCommandLine/script"
 
 for target in FuzzSceneJson FuzzObj FuzzGltf FuzzCommandLine; do

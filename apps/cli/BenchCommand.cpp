@@ -96,7 +96,9 @@ BenchResult measure(const Scene& scene, const std::vector<Light>& lights, const 
     RendererDesc desc{.width = size.width,
                       .height = size.height,
                       .gbufferLayout = options.gbufferLayout,
-                      .shadowLights = options.shadowLights,
+                      .shadowLights = chooseShadowLights(scene, options.shadows),
+                      .shadowPoolMiB = options.shadows.poolMiB,
+                      .rebuildShadowsEveryFrame = options.rebuildShadows,
                       .anisotropy = options.anisotropy,
                       .display = chooseDisplay(scene, options.display),
                       .driver = options.driver.overrides,
@@ -529,9 +531,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     addGBufferOption(*bench, options.gbufferLayout);
     addAnisotropyOption(*bench, options.anisotropy);
     addDriverOptions(*bench, options.driver);
-    bench->add_option("--shadow-lights", options.shadowLights, "Local lights that cast shadows")
-        ->check(CLI::Range(0, kMaxShadowLights))
-        ->capture_default_str();
+    addShadowOptions(*bench, options.shadows);
+    addRebuildShadowsOption(*bench, options.rebuildShadows);
     bench->add_flag("--strict", options.strict, "Treat what model files get forgiven (warnings) as errors");
     addCameraOptions(*bench, options.camera);
     addDisplayOptions(*bench, options.display);
@@ -637,6 +638,9 @@ void runBench(const BenchOptions& options)
                          {"warmup", options.warmup ? nlohmann::json(*options.warmup) : nlohmann::json("auto")},
                          {"frames", options.frames},
                          {"fps", options.fps ? nlohmann::json(*options.fps) : nlohmann::json(nullptr)},
+                         {"shadow_lights", shadowLightsJson(chooseShadowLights(scene, options.shadows))},
+                         {"shadow_pool_mib", options.shadows.poolMiB},
+                         {"rebuild_shadows", options.rebuildShadows},
                          {"shard", std::to_string(options.shard.index) + "/" + std::to_string(options.shard.count)}});
         if (!jsonToStdout)
             outputs.stage(options.jsonPath, "JSON", json);

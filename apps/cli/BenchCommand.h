@@ -46,8 +46,9 @@ struct BenchOptions {
     // counts at that size are skipped: a sweep to a million lights need not wait hours for
     // forward. 0: no budget.
     double budgetMs = 0.0;
-    int shadowLights = 0;  // local lights with shadow maps (--shadow-lights)
-    DriverOptions driver;  // --driver-profile, --device
+    ShadowOptions shadows;        // --shadow-lights, --shadow-pool-mib
+    bool rebuildShadows = false;  // draw every shadow page every frame (--rebuild-shadows)
+    DriverOptions driver;         // --driver-profile, --device
     // --shard I/N: only the cases (size, count, technique), numbered in the sweep's order, with
     // number mod N = I − 1. Only shard 1's CSV has the header line, so the shards' CSVs
     // concatenate into the whole sweep's (in another row order).

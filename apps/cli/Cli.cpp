@@ -65,13 +65,8 @@ int runCli(int argc, const char* const* argv)
     addGBufferOption(*renderCommand, render.gbufferLayout);
     addAnisotropyOption(*renderCommand, render.anisotropy);
     addDriverOptions(*renderCommand, render.driver);
-    renderCommand
-        ->add_option("--shadow-lights", render.shadowLights,
-                     "Local lights that cast shadows (chosen by screen coverage x intensity)")
-        ->check(CLI::Range(0, kMaxShadowLights))
-        ->capture_default_str();
-    renderCommand->add_flag("--rebuild-shadows", render.rebuildShadows,
-                            "Render every shadow map every frame instead of reusing unchanged ones (to time them)");
+    addShadowOptions(*renderCommand, render.shadows);
+    addRebuildShadowsOption(*renderCommand, render.rebuildShadows);
     addCameraOptions(*renderCommand, render.camera);
     renderCommand->add_flag("--strict", render.strict, "Treat what model files get forgiven (warnings) as errors");
     addDisplayOptions(*renderCommand, render.display);

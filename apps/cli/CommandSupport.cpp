@@ -11,6 +11,7 @@
 #include <regex>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
@@ -167,13 +168,15 @@ void addDriverOptions(CLI::App& command, DriverOptions& options)
 
 namespace {
 
-// A whole number from `low` to `high`, all of `text`; none for anything else.
-std::optional<unsigned long> wholeNumberIn(const char* text, unsigned long low, unsigned long high)
+// A whole number from `low` to `high`, all of `text` in decimal digits (no sign, no spaces,
+// which strtoul would take); none for anything else.
+std::optional<unsigned long> wholeNumberIn(const std::string& text, unsigned long low, unsigned long high)
 {
-    char* end = nullptr;
+    if (text.empty() || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+        return std::nullopt;
     errno = 0;
-    const unsigned long value = std::strtoul(text, &end, 10);
-    if (end == text || *end != '\0' || text[0] == '-' || errno == ERANGE || value < low || value > high)
+    const unsigned long value = std::strtoul(text.c_str(), nullptr, 10);
+    if (errno == ERANGE || value < low || value > high)
         return std::nullopt;
     return value;
 }
@@ -337,6 +340,75 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& options)
             "--aa", [&options](const std::string& name) { options.antialiasing = parseAntialiasing(name); },
             "Anti-aliasing of 8-bit outputs and the window (default: the scene's, else none)")
         ->check(CLI::IsMember(antialiasingNames()));
+}
+
+std::string parseShadowLights(const std::string& text, int& lights)
+{
+    if (text == "all") {
+        lights = kAllShadowLights;
+        return {};
+    }
+    const std::optional<unsigned long> count = wholeNumberIn(text, 0, kAllShadowLights);
+    if (!count)
+        return "must be all or a whole number of lights from 0 to " + std::to_string(kAllShadowLights) + ", got '" +
+               text + "'";
+    lights = static_cast<int>(*count);
+    return {};
+}
+
+std::string parseShadowPoolMiB(const std::string& text, int& mib)
+{
+    const std::optional<unsigned long> value = wholeNumberIn(text, kMinShadowPoolMiB, kMaxShadowPoolMiB);
+    if (!value || *value % kShadowPoolGrainMiB != 0)
+        return "must be a multiple of " + std::to_string(kShadowPoolGrainMiB) + " from " +
+               std::to_string(kMinShadowPoolMiB) + " to " + std::to_string(kMaxShadowPoolMiB) + " (MiB), got '" + text +
+               "'";
+    mib = static_cast<int>(*value);
+    return {};
+}
+
+void addShadowOptions(CLI::App& command, ShadowOptions& options)
+{
+    command
+        .add_option_function<std::string>(
+            "--shadow-lights",
+            [&options](const std::string& text) { parseShadowLights(text, options.lights.emplace()); },
+            "Local lights that cast shadows, all or the N with the largest screen coverage x intensity (default: the "
+            "scene's shadowLights, else 0)")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                int ignored = 0;
+                return parseShadowLights(text, ignored);
+            },
+            "N|all"));
+    command
+        .add_option_function<std::string>(
+            "--shadow-pool-mib", [&options](const std::string& text) { parseShadowPoolMiB(text, options.poolMiB); },
+            "Size of the shadow-page pool in MiB, a multiple of " + std::to_string(kShadowPoolGrainMiB) + " from " +
+                std::to_string(kMinShadowPoolMiB) + " to " + std::to_string(kMaxShadowPoolMiB))
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                int ignored = 0;
+                return parseShadowPoolMiB(text, ignored);
+            },
+            "MIB"))
+        ->default_str(std::to_string(kDefaultShadowPoolMiB));
+}
+
+void addRebuildShadowsOption(CLI::App& command, bool& rebuild)
+{
+    command.add_flag("--rebuild-shadows", rebuild,
+                     "Draw every shadow page every frame instead of reusing unchanged ones (to time them)");
+}
+
+int chooseShadowLights(const Scene& scene, const ShadowOptions& options)
+{
+    return options.lights.value_or(scene.shadowLights.value_or(0));
+}
+
+nlohmann::json shadowLightsJson(int lights)
+{
+    return lights == kAllShadowLights ? nlohmann::json("all") : nlohmann::json(lights);
 }
 
 DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options)

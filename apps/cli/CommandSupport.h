@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/Error.h"
 
@@ -22,9 +23,9 @@
 #include "render/driver/DriverProfile.h"
 #include "render/frame/GBuffer.h"
 #include "render/frame/PassProfiler.h"
-#include "render/programs/LoopBudget.h"  // kMaxShadowLights
 #include "scene/DisplaySettings.h"
 #include "scene/Scene.h"
+#include "scene/ShadowSelection.h"
 
 namespace CLI {
 class App;
@@ -180,6 +181,29 @@ struct DisplayOptions {
 void addDisplayOptions(CLI::App& command, DisplayOptions& options);
 // The scene's display settings with `options` applied.
 DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options);
+
+// The shadow options of render, bench and view (docs/cli.md, docs/shadows.md): every local
+// light may cast a shadow through the shadow-page pool, which has no budget of lights.
+struct ShadowOptions {
+    // --shadow-lights N|all: how many local lights cast shadows, kAllShadowLights for all;
+    // none: the scene's "shadowLights", else 0 (chooseShadowLights).
+    std::optional<int> lights;
+    int poolMiB = kDefaultShadowPoolMiB;  // --shadow-pool-mib N: the shadow-page pool's size
+};
+// --shadow-lights and --shadow-pool-mib.
+void addShadowOptions(CLI::App& command, ShadowOptions& options);
+// --rebuild-shadows of render and bench (RendererDesc::rebuildShadowsEveryFrame).
+void addRebuildShadowsOption(CLI::App& command, bool& rebuild);
+// "all" (kAllShadowLights) or a whole number of lights from 0 to INT_MAX. Returns the problem as
+// one line, without the option's name (CLI11 puts it in front), or an empty string when `text`
+// is one; then `lights` holds it.
+std::string parseShadowLights(const std::string& text, int& lights);
+// A multiple of kShadowPoolGrainMiB from kMinShadowPoolMiB to kMaxShadowPoolMiB, the same way.
+std::string parseShadowPoolMiB(const std::string& text, int& mib);
+// RendererDesc::shadowLights: --shadow-lights, else the scene's "shadowLights", else 0.
+int chooseShadowLights(const Scene& scene, const ShadowOptions& options);
+// A shadowLights value as render's --stats and bench's --json write it: "all", or the count.
+nlohmann::json shadowLightsJson(int lights);
 
 // The scene at `path` (the built-in default scene when empty), with --strict passed on and the
 // camera options applied; every problem the loading forgave is printed on stderr as

@@ -43,9 +43,12 @@ nlohmann::json timesJson(PassTiming timing)
     return times;
 }
 
-nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, std::size_t lightCount,
-                              const std::vector<FrameSample>& frames, const std::string& device, float anisotropy,
-                              const DriverChoices& driver, const Technique& technique, const WorkCounts* work)
+// `desc`: what the renderer was made with (the settings the command resolved from its options
+// and the scene).
+nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, const RendererDesc& desc,
+                              std::size_t lightCount, const std::vector<FrameSample>& frames, const std::string& device,
+                              float anisotropy, const DriverChoices& driver, const Technique& technique,
+                              const WorkCounts* work)
 {
     nlohmann::json stats;
     stats["technique"] = options.technique;
@@ -57,7 +60,8 @@ nlohmann::json statisticsJson(const RenderOptions& options, const Scene& scene, 
     stats["height"] = options.size.height;
     stats["lights"] = lightCount;
     stats["frames"] = frames.size();
-    stats["shadow_lights"] = options.shadowLights;
+    stats["shadow_lights"] = shadowLightsJson(desc.shadowLights);
+    stats["shadow_pool_mib"] = desc.shadowPoolMiB;
     stats["anisotropy"] = anisotropy;
     stats["driver_profile"] = std::string(driverProfileName(driver.profile));
     stats["lighting_stage"] = std::string(lightingStageName(technique.options().lightingStage));
@@ -223,7 +227,8 @@ void runRender(const RenderOptions& options)
                        .height = options.size.height * options.supersample,
                        .gbufferLayout = options.gbufferLayout,
                        .countWork = countWork,
-                       .shadowLights = options.shadowLights,
+                       .shadowLights = chooseShadowLights(scene, options.shadows),
+                       .shadowPoolMiB = options.shadows.poolMiB,
                        .rebuildShadowsEveryFrame = options.rebuildShadows,
                        .anisotropy = options.anisotropy,
                        .display = options.output.eightBit() ? std::optional(display) : std::nullopt,
@@ -268,8 +273,8 @@ void runRender(const RenderOptions& options)
     outputs.stage(options.output.path, "image", encodeLastFrame(renderer, technique, options));
     if (measuring) {
         nlohmann::json stats =
-            statisticsJson(options, scene, lights.size(), frames, context.description(), renderer.anisotropy(),
-                           renderer.driverChoices(), technique, countWork ? &work : nullptr);
+            statisticsJson(options, scene, renderer.desc(), lights.size(), frames, context.description(),
+                           renderer.anisotropy(), renderer.driverChoices(), technique, countWork ? &work : nullptr);
         stats["display"] = {{"exposure", display.exposure},
                             {"tonemap", std::string(toneCurveName(display.toneCurve))},
                             {"srgb", display.srgb},

@@ -33,8 +33,8 @@ struct RenderOptions {
     double fps = 30.0;
     Shard shard;                  // --shard I/N: only the frames k with k mod N = I − 1
     bool skipExisting = false;    // --skip-existing: only the frames whose files are missing
-    int shadowLights = 0;         // local lights with shadow maps (--shadow-lights)
-    bool rebuildShadows = false;  // render every shadow map every frame (--rebuild-shadows)
+    ShadowOptions shadows;        // --shadow-lights, --shadow-pool-mib
+    bool rebuildShadows = false;  // draw every shadow page every frame (--rebuild-shadows)
     bool strict = false;          // model files' forgiven problems are errors (--strict)
     CameraOptions camera;         // --camera, --eye, --look-at, --up, --fov-y
     DisplayOptions display;       // --exposure, --tonemap, --srgb, --aa (8-bit outputs)

@@ -49,6 +49,7 @@ int runViewCommand(int argc, const char* const* argv)
     addCameraOptions(app, options.camera);
     addDisplayOptions(app, options.display);
     addDriverOptions(app, options.driver);
+    addShadowOptions(app, options.shadows);
     app.add_option("--shader-dir", options.shaderDirectory,
                    "Compile shaders from this directory and reload them when they change ('' for the embedded ones)")
         ->capture_default_str();

@@ -32,6 +32,7 @@
 #include "render/HeatMapLegend.h"
 #include "render/Renderer.h"
 #include "scene/LightSets.h"
+#include "scene/ShadowSelection.h"
 
 namespace manylights {
 
@@ -81,6 +82,11 @@ Viewer::Viewer(const ViewOptions& options)
       time_(options.time)
 {
     lights_ = lightsForCommand(scene_, options.lights);
+    const int shadowLights = chooseShadowLights(scene_, options.shadows);
+    allLightsShadowed_ = shadowLights == kAllShadowLights;
+    const int lightCount = static_cast<int>(std::min<std::size_t>(lights_.size(), kAllShadowLights));
+    shadowLightCount_ = allLightsShadowed_ ? lightCount : shadowLights;
+    shadowLightLimit_ = std::max({1, lightCount, shadowLightCount_});
     if (!options.scriptPath.empty())
         script_ = parseViewScript(readTextFile(options.scriptPath, "script"), options.scriptPath);
 
@@ -170,7 +176,8 @@ RendererDesc Viewer::rendererDesc()
     return {.width = width_,
             .height = height_,
             .countWork = view_ == ViewMode::LightCount,
-            .shadowLights = shadowLights_,
+            .shadowLights = allLightsShadowed_ ? kAllShadowLights : shadowLightCount_,
+            .shadowPoolMiB = options_.shadows.poolMiB,
             .directionalShadows = directionalShadows_,
             .ambientOcclusion = ambientOcclusion_,
             .environmentLook = environmentLook_,

@@ -23,6 +23,7 @@ struct ViewOptions {
     bool strict = false;              // --strict: model files' forgiven problems are errors
     CameraOptions camera;             // --camera, --eye, --look-at, --up, --fov-y: the starting view
     DisplayOptions display;           // --exposure, --tonemap, --srgb, --aa: the starting display settings
+    ShadowOptions shadows;            // --shadow-lights, --shadow-pool-mib: the starting shadowed lights
     // Shader sources to compile and watch for changes; empty: the embedded shaders, no reload.
     std::string shaderDirectory;
     // --driver-profile, and --device: the window's context is the display server's, so the

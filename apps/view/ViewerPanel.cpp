@@ -18,8 +18,8 @@
 #include "render/HeatMapLegend.h"
 #include "render/Techniques.h"
 #include "render/Views.h"
-#include "render/effects/ShadowMaps.h"
 #include "render/techniques/Technique.h"
+#include "scene/ShadowSelection.h"
 
 namespace manylights {
 
@@ -47,8 +47,11 @@ constexpr const char* kLabelledWidgets[] = {kTechniqueLabel,
                                             kToneCurveLabel,
                                             kSpeedLabel,
                                             kFrameMsLabel};
-// The widest value a slider shows beside it ("+8.00", "4.00x", "256", "+180°").
+// The widest value a slider shows beside it ("+8.00", "4.00x", "+180°"), but for the shadowed
+// lights' count, which is as wide as the lights' (Viewer::widestShadowLightCount).
 constexpr const char* kWidestSliderValue = "+0.00x";
+// Beside the shadowed lights' slider: every light that does not opt out casts shadows.
+constexpr const char* kAllLightsLabel = "all lights cast shadows";
 // The narrowest slider beside its value: this many frame heights (room for the handle to move).
 constexpr float kMinimumSliderFrames = 2.0f;
 // The widest time a pass table cell shows ("%.3f" below 1000 ms, "%.0f" above).
@@ -124,12 +127,14 @@ bool beginCombo(PanelRecord& record, const char* label, const std::string& previ
 // A slider with its value beside it, not on it: ImGui centres a slider's value over its frame,
 // where the handle hides a digit or the decimal point ("1|00"). The slider and its value share
 // the item width; the label follows in the labels' column, as for the other widgets.
+// `widestValue`: the widest text the value may show, which the slider leaves room for.
 template <typename T>
-bool sliderWithValue(PanelRecord& record, const char* label, T& value, T min, T max, const char* format)
+bool sliderWithValue(PanelRecord& record, const char* label, T& value, T min, T max, const char* format,
+                     const std::string& widestValue = kWidestSliderValue)
 {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float itemWidth = ImGui::CalcItemWidth();
-    const float valueWidth = ImGui::CalcTextSize(kWidestSliderValue).x;
+    const float valueWidth = textWidth(widestValue);
     ImGui::SetNextItemWidth(std::max(1.0f, itemWidth - valueWidth - style.ItemInnerSpacing.x));
     constexpr ImGuiDataType kType = std::is_same_v<T, int> ? ImGuiDataType_S32 : ImGuiDataType_Float;
     const bool changed = ImGui::SliderScalar((std::string("##") + label).c_str(), kType, &value, &min, &max, "");
@@ -208,6 +213,12 @@ std::string Viewer::keyedLabel(const char* label, KeyAction action) const
     return std::string(label) + (keys.empty() ? "" : " (" + keys + ")") + "###" + label;
 }
 
+std::string Viewer::widestShadowLightCount() const
+{
+    const std::string count = std::to_string(shadowLightLimit_);
+    return textWidth(count) > textWidth("all") ? count : "all";
+}
+
 std::optional<WindowRect> Viewer::shownLegend() const
 {
     if (view_ != ViewMode::LightCount)
@@ -239,7 +250,8 @@ float Viewer::minimumExpandedPanelWidth() const
         for (const std::string& name : *names)
             widestName = std::max(widestName, textWidth(name));
     const float combo = widestName + 2.0f * style.FramePadding.x + frame;
-    const float slider = kMinimumSliderFrames * frame + style.ItemInnerSpacing.x + textWidth(kWidestSliderValue);
+    const float slider = kMinimumSliderFrames * frame + style.ItemInnerSpacing.x +
+                         std::max(textWidth(kWidestSliderValue), textWidth(widestShadowLightCount()));
     float content = widestLabel + style.ItemInnerSpacing.x + std::max(combo, slider);
 
     const std::string checkboxes[] = {keyedLabel("ambient", KeyAction::ToggleAmbient),
@@ -249,6 +261,7 @@ float Viewer::minimumExpandedPanelWidth() const
                                       keyedLabel("wireframe", KeyAction::ToggleWireframe),
                                       keyedLabel("pause", KeyAction::TogglePause),
                                       "directional shadows",
+                                      kAllLightsLabel,
                                       "environment as background",
                                       "auto exposure"};
     for (const std::string& label : checkboxes)
@@ -448,9 +461,8 @@ void Viewer::drawPanelContents()
         bool shown = directionalShadows_ && !unavailable;
         checkbox(record, "directional shadows", unavailable ? &shown : &directionalShadows_);
     });
-    unlessUnavailable(
-        record, kShadowedLightsLabel, lights_.empty() ? "The scene has no point or spot lights." : unlit,
-        [&](bool) { sliderWithValue(record, kShadowedLightsLabel, shadowLights_, 0, kMaxShadowLights, "%d"); });
+    unlessUnavailable(record, kShadowedLightsLabel, lights_.empty() ? "The scene has no point or spot lights." : unlit,
+                      [&](bool) { drawShadowedLights(); });
     AmbientOcclusion& occlusion = ambientOcclusion_;
     const bool ssaoView = view_ == ViewMode::Ssao;
     unlessUnavailable(record, "SSAO", ssaoView ? "The ssao view shows the occlusion whether SSAO is on or off." : unlit,
@@ -581,6 +593,24 @@ void Viewer::writePanelReport(const std::string& path) const
             report += "disabled\t" + control.control + "\t" + control.reason + "\n";
     }
     writeFileAtomically(path, "panel report", report);
+}
+
+// The shadowed lights (issue 47, docs/viewer.md): a count up to the lights there are, or all of
+// them. With "all lights cast shadows" ticked the count does not apply: its slider shows "all",
+// disabled, and keeps the count for when the box is unticked.
+void Viewer::drawShadowedLights()
+{
+    PanelRecord& record = panelRecord_;
+    if (allLightsShadowed_) {
+        ImGui::BeginDisabled();
+        int shown = shadowLightLimit_;
+        sliderWithValue(record, kShadowedLightsLabel, shown, 0, shadowLightLimit_, "all", widestShadowLightCount());
+        ImGui::EndDisabled();
+    } else {
+        sliderWithValue(record, kShadowedLightsLabel, shadowLightCount_, 0, shadowLightLimit_, "%d",
+                        widestShadowLightCount());
+    }
+    checkbox(record, kAllLightsLabel, &allLightsShadowed_);
 }
 
 // The environment's section (issue 42, docs/viewer.md): the scene's environment's intensity and

@@ -107,8 +107,12 @@ private:
     void writePanelReport(const std::string& path) const;
     // The panel's environment section (ViewerPanel.cpp): nothing without one.
     void drawEnvironmentPanel();
+    // The panel's shadowed lights: their count's slider and the "all lights" box (ViewerPanel.cpp).
+    void drawShadowedLights();
     // The panel's narrowest width at which none of its text is cut (ViewerPanel.cpp).
     float minimumExpandedPanelWidth() const;
+    // The widest value the shadowed lights' slider shows: its largest count, or "all".
+    std::string widestShadowLightCount() const;
     // Where the light-count legend is in the window this frame; none in other views or where
     // the window is too small for it.
     std::optional<WindowRect> shownLegend() const;
@@ -162,7 +166,13 @@ private:
     bool togglePanelKeys_ = false;       // the script's `toggle panel-keys`
     bool rotating_ = false;              // stencil-volumes 'r': the camera orbits the look-at point
     bool directionalShadows_ = true;     // where the scene's directional light asks for them
-    int shadowLights_ = 0;               // local lights with shadow maps (--shadow-lights)
+    // The shadowed lights (--shadow-lights, else the scene's "shadowLights"; the panel edits them):
+    // every light that does not opt out where `allLightsShadowed_`, else the `shadowLightCount_`
+    // ranked highest. The slider goes up to `shadowLightLimit_`, the lights there are (or the
+    // count asked for, where larger).
+    bool allLightsShadowed_ = false;
+    int shadowLightCount_ = 0;
+    int shadowLightLimit_ = 1;
     bool quit_ = false;
     // The display settings (the scene's, then the command line's; the panel edits them).
     // With auto-exposure the exposure follows the lit image's log-average luminance, adapting

@@ -1,8 +1,8 @@
 // libFuzzer target: what a user types besides scene files. The first byte picks the parser,
 // the rest is its text: the check of every numeric option (core/Numbers.h), --size, a
-// --time-range with the frame count it gives at a --fps, a recording pattern, and the
-// viewer's script (apps/view/ViewScript.h). Each must either accept or explain (an empty
-// problem or a manylights::Error), never crash, overflow or hang.
+// --time-range with the frame count it gives at a --fps, a recording pattern, --shadow-lights,
+// --shadow-pool-mib, and the viewer's script (apps/view/ViewScript.h). Each must either accept
+// or explain (an empty problem or a manylights::Error), never crash, overflow or hang.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
     using namespace manylights;
-    switch (data[0] % 5) {
+    switch (data[0] % 7) {
     case 0: {
         double value = 0.0;
         checkNumber(text, 0.001, 1000.0, value);
@@ -47,6 +47,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (checkFramePattern(text).empty())
             formatFramePath(text, 1234567);
         break;
+    case 4: {
+        int lights = 0;
+        parseShadowLights(text, lights);
+        break;
+    }
+    case 5: {
+        int mib = 0;
+        parseShadowPoolMiB(text, mib);
+        break;
+    }
     default: {
         try {
             parseViewScript(text, "fuzz.txt");

@@ -303,6 +303,50 @@ TEST(Bench, JsonNamesEachPassClock)
     }
 }
 
+// Issue 47: bench takes --shadow-lights N|all (the scene's "shadowLights" where not given),
+// --shadow-pool-mib and --rebuild-shadows as render does, and its JSON says what it ran with.
+// --rebuild-shadows reaches the renderer: the timed frame after the warm-up draws shadows only
+// with it, since without it a still scene's second frame reuses what the first drew (issue 47
+// item 4). One light at 32x18, one frame.
+TEST(Bench, ShadowOptionsReachTheRendererAndTheJson)
+{
+    const auto dir = scratchDirectory();
+    const auto scene = dir / "scene.json";
+    test::writeFile(scene, R"({"shadowLights": 2,
+        "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 3}],
+        "objects": [{"mesh": {"primitive": "plane", "size": [2, 2]}}]})");
+    const auto bench = [&](const std::vector<std::string>& options) {
+        std::vector<std::string> args{"bench",        scene.string(),
+                                      "--techniques", "forward",
+                                      "--size",       "32x18",
+                                      "--frames",     "1",
+                                      "--warmup",     "1",
+                                      "--json",       "-"};
+        args.insert(args.end(), options.begin(), options.end());
+        const test::ProcessResult result = runExecutable(args);
+        EXPECT_EQ(result.exitCode, 0) << result.stderrText;
+        return nlohmann::json::parse(result.stdoutText);
+    };
+    const auto drawsShadows = [](const nlohmann::json& sweep) {
+        const nlohmann::json& passes = sweep.at("results").at(0).at("passes");
+        return std::any_of(passes.begin(), passes.end(), [](const nlohmann::json& pass) {
+            return pass.at("name").get<std::string>().rfind("shadow", 0) == 0;
+        });
+    };
+    const nlohmann::json scenes = bench({});
+    EXPECT_EQ(scenes.at("shadow_lights"), 2);
+    EXPECT_EQ(scenes.at("shadow_pool_mib"), 256);
+    EXPECT_EQ(scenes.at("rebuild_shadows"), false);
+    EXPECT_FALSE(drawsShadows(scenes)) << scenes.at("results");
+
+    const nlohmann::json rebuilt = bench({"--shadow-lights", "all", "--shadow-pool-mib", "12", "--rebuild-shadows"});
+    EXPECT_EQ(rebuilt.at("shadow_lights"), "all");
+    EXPECT_EQ(rebuilt.at("shadow_pool_mib"), 12);
+    EXPECT_EQ(rebuilt.at("rebuild_shadows"), true);
+    ASSERT_EQ(rebuilt.at("results").size(), 1u);
+    EXPECT_TRUE(drawsShadows(rebuilt)) << rebuilt.at("results");
+}
+
 // --json and --csv naming one file would write one over the other.
 TEST(Bench, JsonAndCsvNamingOneFileIsAUsageError)
 {
@@ -384,7 +428,12 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, BenchUsage,
     ::testing::Values(UsageCase{"lights_not_a_number", {"--lights", "abc"}, "--lights"},
                       UsageCase{"shadow_lights_negative", {"--shadow-lights", "-2"}, "--shadow-lights"},
-                      UsageCase{"shadow_lights_too_many", {"--shadow-lights", "1000"}, "--shadow-lights"},
+                      UsageCase{"shadow_lights_not_a_number", {"--shadow-lights", "x"}, "--shadow-lights"},
+                      UsageCase{"shadow_lights_fraction", {"--shadow-lights", "1.5"}, "--shadow-lights"},
+                      UsageCase{"shadow_pool_zero", {"--shadow-pool-mib", "0"}, "--shadow-pool-mib"},
+                      UsageCase{"shadow_pool_off_the_grain", {"--shadow-pool-mib", "6"}, "from 4 to 1024"},
+                      UsageCase{"shadow_pool_too_large", {"--shadow-pool-mib", "1028"}, "--shadow-pool-mib"},
+                      UsageCase{"shadow_pool_nan", {"--shadow-pool-mib", "nan"}, "--shadow-pool-mib"},
                       UsageCase{"lights_one_bad_entry", {"--lights", "16,x"}, "--lights"},
                       UsageCase{"lights_negative", {"--lights", "16,-4"}, "--lights"},
                       UsageCase{"lights_repeated", {"--lights", "16,16"}, "lists 16 twice"},

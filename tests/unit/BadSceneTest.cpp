@@ -113,6 +113,25 @@ const std::vector<BadScene> kBadScenes = {
     {"DirectionalZero", R"json({"directional": {"direction": [0, 0, 0], "intensity": [1, 1, 1]}})json",
      ": /directional/direction: ", "must be a non-zero vector"},
 
+    // Shadowed local lights (issue 47): a whole number >= 0 or "all"; castsShadows a boolean.
+    {"ShadowLightsNegative", R"json({"shadowLights": -1})json",
+     ": /shadowLights: ", "must be in [0, 2147483647], got -1"},
+    {"ShadowLightsFraction", R"json({"shadowLights": 1.5})json", ": /shadowLights: ", "expected an integer, got 1.5"},
+    {"ShadowLightsOtherString", R"json({"shadowLights": "every"})json",
+     ": /shadowLights: ", "expected a whole number of lights or 'all', got 'every'"},
+    {"ShadowLightsBoolean", R"json({"shadowLights": true})json",
+     ": /shadowLights: ", "expected a whole number of lights or 'all', got a boolean"},
+    {"ShadowLightsTooLarge", R"json({"shadowLights": 3000000000})json",
+     ": /shadowLights: ", "must be in [0, 2147483647], got 3000000000"},
+    {"LightCastsShadowsNotBool", withLight("{" + kPoint + R"json(, "range": 1, "castsShadows": "no"})json"),
+     ": /lights/0/castsShadows: ", "expected true or false, got a string"},
+    {"SpotCastsShadowsNotBool", withLight("{" + kSpot + R"json(, "cutoff": 30, "castsShadows": 0})json"),
+     ": /lights/0/castsShadows: ", "expected true or false, got a number"},
+    {"SetCastsShadowsNotBool", withSet("{" + kSet + R"json(, "castsShadows": null})json"),
+     ": /light_sets/0/castsShadows: ", "expected true or false, got null"},
+    {"LightCastShadowsTypo", withLight("{" + kPoint + R"json(, "range": 1, "castShadows": false})json"),
+     ": /lights/0/castShadows: ", "unknown key 'castShadows' (did you mean 'castsShadows'?)"},
+
     // Ambient occlusion.
     {"SsaoNotObject", R"json({"ssao": true})json", ": /ssao: ", "expected an object"},
     {"SsaoRadiusZero", R"json({"ssao": {"radius": 0}})json", ": /ssao/radius: ", "must be > 0, got 0"},

@@ -190,6 +190,21 @@ TEST(LightSets, ExplicitLightsComeFirst)
     EXPECT_EQ(lights[5].name, "set1[1]");
 }
 
+// A set's "castsShadows" reaches each light it generates, at any --lights total.
+TEST(LightSets, GeneratedLightsInheritTheSetsCastsShadows)
+{
+    LightSet unshadowed = spotSet(3, 2);
+    unshadowed.castsShadows = false;
+    Scene scene = sceneWith({pointSet(2, 1), unshadowed});
+    for (const std::optional<int> total : {std::optional<int>(), std::optional<int>(50)}) {
+        const std::vector<Light> lights = expandLights(scene, total);
+        const std::size_t firstSetCount = total ? 20u : 2u;
+        ASSERT_EQ(lights.size(), total ? 50u : 5u);
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            EXPECT_EQ(lights[i].castsShadows, i < firstSetCount) << lights[i].name;
+    }
+}
+
 TEST(LightSets, TotalOverridesCountsInProportion)
 {
     const Scene scene = sceneWith({pointSet(100, 1), spotSet(300, 2)});

@@ -17,6 +17,7 @@
 #include "core/Error.h"
 #include "scene/Revolution.h"
 #include "scene/SceneLoader.h"
+#include "scene/ShadowSelection.h"
 #include "scene/Transform.h"
 
 namespace manylights {
@@ -321,6 +322,38 @@ TEST(SceneLoader, LightDefaultsAndOptionalKeys)
     EXPECT_FLOAT_EQ(scene.lightSets[1].cutoffDegrees.hi, 30.0f);
     EXPECT_FLOAT_EQ(scene.lightSets[1].exponent.lo, 1.0f);
     EXPECT_FLOAT_EQ(scene.lightSets[1].exponent.hi, 2.0f);
+}
+
+// Issue 47: "shadowLights" (none unless given, so --shadow-lights or 0 decides), a whole number
+// or "all"; "castsShadows" on lights and light sets, true unless given.
+TEST(SceneLoader, ShadowLightsAndCastsShadows)
+{
+    EXPECT_FALSE(parse("{}").shadowLights.has_value());
+    EXPECT_EQ(parse(R"json({"shadowLights": 0})json").shadowLights, std::optional<int>(0));
+    EXPECT_EQ(parse(R"json({"shadowLights": 4096})json").shadowLights, std::optional<int>(4096));
+    // Above the old budget of 256: the pool has none.
+    EXPECT_EQ(parse(R"json({"shadowLights": 1e6})json").shadowLights, std::optional<int>(1000000));
+    EXPECT_EQ(parse(R"json({"shadowLights": "all"})json").shadowLights, std::optional<int>(kAllShadowLights));
+
+    const Scene scene = parse(R"json({
+        "lights": [
+            { "type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1 },
+            { "type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "castsShadows": false },
+            { "type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "direction": [0, -1, 0], "cutoff": 30,
+              "range": 1, "castsShadows": true }
+        ],
+        "light_sets": [
+            { "count": 2, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1] },
+            { "count": 2, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1],
+              "castsShadows": false }
+        ] })json");
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_TRUE(scene.lights[0].castsShadows);
+    EXPECT_FALSE(scene.lights[1].castsShadows);
+    EXPECT_TRUE(scene.lights[2].castsShadows);
+    ASSERT_EQ(scene.lightSets.size(), 2u);
+    EXPECT_TRUE(scene.lightSets[0].castsShadows);
+    EXPECT_FALSE(scene.lightSets[1].castsShadows);
 }
 
 TEST(SceneLoader, TransformForms)

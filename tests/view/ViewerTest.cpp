@@ -666,12 +666,13 @@ TEST(Viewer, PanelStaysClearOfTheLegendAndCutsNoText)
 // cannot apply are disabled with the reason: the studio has no directional light and no point
 // or spot light; in the normal view no lighting shows.
 // Runs the viewer on `scene` (from the source tree) with its panel opened in a 320x180 window,
-// where it starts collapsed, then the rest of the script.
-int runWithOpenPanel(const fs::path& dir, const std::string& scene, const std::string& rest)
+// where it starts collapsed, then the rest of the script; `options` follow the scene.
+int runWithOpenPanel(const fs::path& dir, const std::string& scene, const std::string& rest,
+                     const std::string& options = "")
 {
     return runViewer(dir,
                      "pause\ntechnique forward\nresize 320 180\nframes 2\ntoggle panel-collapsed\nframes 3\n" + rest,
-                     "'" MANYLIGHTS_SOURCE_DIR "/" + scene + "'");
+                     "'" MANYLIGHTS_SOURCE_DIR "/" + scene + "' " + options);
 }
 
 TEST(Viewer, PanelDisablesWhatCannotApplyAndSaysWhy)
@@ -700,14 +701,20 @@ TEST(Viewer, PanelDisablesWhatCannotApplyAndSaysWhy)
         EXPECT_EQ(normal.disabled.count(control), 1u) << control;
 
     // A scene whose directional light casts shadows, with SSAO on: both apply, until SSAO is off.
+    // Its 4 local lights all cast shadows (issue 47): the count's slider shows "all", with
+    // the box that says so.
     ASSERT_EQ(runWithOpenPanel(dir, "tests/scenes/shadows_and_ssao.json",
-                               "report-panel on.txt\ntoggle ssao\nframes 2\nreport-panel off.txt\nquit\n"),
+                               "report-panel on.txt\ntoggle ssao\nframes 2\nreport-panel off.txt\nquit\n",
+                               "--lights 2 --shadow-lights all"),
               0)
         << readText(dir / "viewer.log");
     ASSERT_EQ(readPanelReport(dir / "on.txt").state, "expanded");  // else no control is drawn at all
     const PanelDetails on = readPanelDetails(dir / "on.txt");
     EXPECT_EQ(on.disabled.count("directional shadows"), 0u);
     EXPECT_EQ(on.disabled.count("shadowed lights"), 0u);
+    EXPECT_TRUE(hasLabel(on, "all"));
+    EXPECT_TRUE(hasLabel(on, "all lights cast shadows"));
+    EXPECT_TRUE(hasLabel(shown, "0"));  // the studio's count: it has no local light
     EXPECT_EQ(on.disabled.count("SSAO radius / strength"), 0u);
     const PanelDetails off = readPanelDetails(dir / "off.txt");
     ASSERT_EQ(off.disabled.count("SSAO radius / strength"), 1u);
@@ -738,6 +745,9 @@ TEST(Viewer, BadCommandLineIsExitTwo)
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --keymap emacs 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --technique fastest 2>/dev/null"), 2);
     EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --size 0x10 2>/dev/null"), 2);
+    // The shadow options as render checks them (issue 47).
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --shadow-lights some 2>/dev/null"), 2);
+    EXPECT_EQ(run("'" MANYLIGHTS_EXE "' view --shadow-pool-mib 2048 2>/dev/null"), 2);
 }
 
 TEST(Viewer, BadScriptIsOneLineExitOne)
