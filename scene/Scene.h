@@ -83,7 +83,7 @@ struct Light {
     float exponent = 0.0f;
     // Motion over time around `position` (scene/Animation.h); none: the light stands still.
     std::optional<LightAnimation> animation{};
-    // "castsShadows": false opts the light out of --shadow-lights (all or a cap).
+    // "casts_shadows": false opts the light out of --shadow-lights (all or a cap).
     bool castsShadows = true;
 };
 
@@ -110,7 +110,7 @@ struct LightSet {
     std::optional<int> rangeReferenceCount;
     // Given to every generated light, light i's phase advanced by i times the golden angle.
     std::optional<LightAnimation> animation{};
-    // "castsShadows": false: every generated light opts out of --shadow-lights (Light::castsShadows).
+    // "casts_shadows": false: every generated light opts out of --shadow-lights (Light::castsShadows).
     bool castsShadows = true;
 };
 
@@ -258,7 +258,7 @@ struct Scene {
     glm::vec3 ambient{0.0f};
     std::optional<DirectionalLight> directional;
     AmbientOcclusion ssao;
-    // "shadowLights" in the scene file: N or "all" (kAllShadowLights, scene/ShadowSelection.h);
+    // "shadow_lights" in the scene file: N or "all" (kAllShadowLights, scene/ShadowSelection.h);
     // --shadow-lights overrides it. None: 0, only a directional light casts shadows.
     std::optional<int> shadowLights;
     // `environment` in the scene file: image-based light (docs/lighting.md, "The environment").

@@ -32,10 +32,10 @@ Light Loader::readLight(const Node& node, std::size_t index) const
     light.type = lightType(required(node, "type"), "light");
     if (light.type == LightType::Point) {
         rejectSpotKeys(node, {"direction", "cutoff", "exponent"}, "lights");
-        expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "animation", "castsShadows"});
+        expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "animation", "casts_shadows"});
     } else {
         expectKeys(node, {"type", "name", "pos", "intensity", "attenuation", "range", "direction", "cutoff", "exponent",
-                          "animation", "castsShadows"});
+                          "animation", "casts_shadows"});
     }
     if (const auto animation = member(node, "animation"))
         light.animation = readLightAnimation(*animation);
@@ -45,7 +45,7 @@ Light Loader::readLight(const Node& node, std::size_t index) const
         light.name = "lights[" + std::to_string(index) + "]";
     light.position = vec3(required(node, "pos"));
     light.intensity = colour(required(node, "intensity"));
-    if (const auto castsShadows = member(node, "castsShadows"))
+    if (const auto castsShadows = member(node, "casts_shadows"))
         light.castsShadows = boolean(*castsShadows);
 
     const auto attenuation = member(node, "attenuation");
@@ -110,10 +110,10 @@ LightSet Loader::readLightSet(const Node& node) const
     if (set.type == LightType::Point) {
         rejectSpotKeys(node, {"cutoff", "exponent"}, "light sets");
         expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
-                          "animation", "castsShadows"});
+                          "animation", "casts_shadows"});
     } else {
         expectKeys(node, {"count", "seed", "type", "min", "max", "range", "range_reference_count", "intensity",
-                          "cutoff", "exponent", "animation", "castsShadows"});
+                          "cutoff", "exponent", "animation", "casts_shadows"});
     }
     if (const auto animation = member(node, "animation"))
         set.animation = readLightAnimation(*animation);
@@ -135,7 +135,7 @@ LightSet Loader::readLightSet(const Node& node) const
     if (const auto reference = member(node, "range_reference_count"))
         set.rangeReferenceCount = static_cast<int>(integer(*reference, 1, kMaxSetLights));
     set.intensity = interval(required(node, "intensity"), &Reader::nonNegative);
-    if (const auto castsShadows = member(node, "castsShadows"))
+    if (const auto castsShadows = member(node, "casts_shadows"))
         set.castsShadows = boolean(*castsShadows);
     if (set.type == LightType::Spot) {
         if (const auto cutoffNode = member(node, "cutoff"))

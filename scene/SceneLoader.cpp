@@ -24,7 +24,7 @@ Scene Loader::load(const Json& root)
         fail(top, "the top level must be a JSON object, got " + describeType(root));
     expectKeys(top, {"camera", "background", "ambient", "directional", "attenuation_threshold", "lights", "light_sets",
                      "materials", "objects", "light_markers", "ssao", "display", "model_materials", "environment",
-                     "shadowLights"});
+                     "shadow_lights"});
     // Before the objects, which load the model files it applies to.
     if (const auto node = member(top, "model_materials"))
         modelMaterialsAsBlinnPhong_ = oneOf(*node, {"metallic-roughness", "blinn-phong"}) == "blinn-phong";
@@ -36,7 +36,7 @@ Scene Loader::load(const Json& root)
         scene_.ambient = colour(*node);
     if (const auto node = member(top, "directional"))
         scene_.directional = readDirectional(*node);
-    if (const auto node = member(top, "shadowLights"))
+    if (const auto node = member(top, "shadow_lights"))
         scene_.shadowLights = readShadowLights(*node);
     if (const auto node = member(top, "ssao"))
         scene_.ssao = readAmbientOcclusion(*node);
@@ -115,7 +115,7 @@ DirectionalLight Loader::readDirectional(const Node& node) const
     return light;
 }
 
-// "shadowLights": a whole number of lights, or "all" (kAllShadowLights): --shadow-lights's values.
+// "shadow_lights": a whole number of lights, or "all" (kAllShadowLights): --shadow-lights's values.
 int Loader::readShadowLights(const Node& node) const
 {
     const std::string expected = "expected a whole number of lights or " + quote("all") + ", got ";

@@ -12,8 +12,8 @@
 
 namespace manylights {
 
-// --shadow-lights all (and a scene's "shadowLights": "all"): a cap no light count reaches, so
-// every local light that does not opt out ("castsShadows": false) casts shadows.
+// --shadow-lights all (and a scene's "shadow_lights": "all"): a cap no light count reaches, so
+// every local light that does not opt out ("casts_shadows": false) casts shadows.
 inline constexpr int kAllShadowLights = std::numeric_limits<int>::max();
 
 // The shadow-page pool (render/shadows/, docs/shadows.md), in MiB (--shadow-pool-mib): the

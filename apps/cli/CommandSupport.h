@@ -186,7 +186,7 @@ DisplaySettings chooseDisplay(const Scene& scene, const DisplayOptions& options)
 // light may cast a shadow through the shadow-page pool, which has no budget of lights.
 struct ShadowOptions {
     // --shadow-lights N|all: how many local lights cast shadows, kAllShadowLights for all;
-    // none: the scene's "shadowLights", else 0 (chooseShadowLights).
+    // none: the scene's "shadow_lights", else 0 (chooseShadowLights).
     std::optional<int> lights;
     int poolMiB = kDefaultShadowPoolMiB;  // --shadow-pool-mib N: the shadow-page pool's size
 };
@@ -200,7 +200,7 @@ void addRebuildShadowsOption(CLI::App& command, bool& rebuild);
 std::string parseShadowLights(const std::string& text, int& lights);
 // A multiple of kShadowPoolGrainMiB from kMinShadowPoolMiB to kMaxShadowPoolMiB, the same way.
 std::string parseShadowPoolMiB(const std::string& text, int& mib);
-// RendererDesc::shadowLights: --shadow-lights, else the scene's "shadowLights", else 0.
+// RendererDesc::shadowLights: --shadow-lights, else the scene's "shadow_lights", else 0.
 int chooseShadowLights(const Scene& scene, const ShadowOptions& options);
 // A shadowLights value as render's --stats and bench's --json write it: "all", or the count.
 nlohmann::json shadowLightsJson(int lights);

@@ -166,7 +166,7 @@ private:
     bool togglePanelKeys_ = false;       // the script's `toggle panel-keys`
     bool rotating_ = false;              // stencil-volumes 'r': the camera orbits the look-at point
     bool directionalShadows_ = true;     // where the scene's directional light asks for them
-    // The shadowed lights (--shadow-lights, else the scene's "shadowLights"; the panel edits them):
+    // The shadowed lights (--shadow-lights, else the scene's "shadow_lights"; the panel edits them):
     // every light that does not opt out where `allLightsShadowed_`, else the `shadowLightCount_`
     // ranked highest. The slider goes up to `shadowLightLimit_`, the lights there are (or the
     // count asked for, where larger).

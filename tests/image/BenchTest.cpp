@@ -303,7 +303,7 @@ TEST(Bench, JsonNamesEachPassClock)
     }
 }
 
-// Issue 47: bench takes --shadow-lights N|all (the scene's "shadowLights" where not given),
+// Issue 47: bench takes --shadow-lights N|all (the scene's "shadow_lights" where not given),
 // --shadow-pool-mib and --rebuild-shadows as render does, and its JSON says what it ran with.
 // --rebuild-shadows reaches the renderer: the timed frame after the warm-up draws shadows only
 // with it, since without it a still scene's second frame reuses what the first drew (issue 47
@@ -312,7 +312,7 @@ TEST(Bench, ShadowOptionsReachTheRendererAndTheJson)
 {
     const auto dir = scratchDirectory();
     const auto scene = dir / "scene.json";
-    test::writeFile(scene, R"({"shadowLights": 2,
+    test::writeFile(scene, R"({"shadow_lights": 2,
         "lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 3}],
         "objects": [{"mesh": {"primitive": "plane", "size": [2, 2]}}]})");
     const auto bench = [&](const std::vector<std::string>& options) {

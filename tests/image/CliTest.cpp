@@ -160,22 +160,22 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"shadow_pool_not_a_number", "", {"--shadow-pool-mib", "x"}, 2, {"--shadow-pool-mib", "'x'"}},
         FailureCase{"shadow_pool_nan", "", {"--shadow-pool-mib", "nan"}, 2, {"--shadow-pool-mib", "'nan'"}},
         FailureCase{"scene_shadow_lights_negative",
-                    std::string("{\"shadowLights\": -1, ") + kPlane + "}",
+                    std::string("{\"shadow_lights\": -1, ") + kPlane + "}",
                     {},
                     1,
-                    {"scene.json", "/shadowLights"}},
+                    {"scene.json", "/shadow_lights"}},
         FailureCase{"scene_shadow_lights_other_word",
-                    std::string("{\"shadowLights\": \"most\", ") + kPlane + "}",
+                    std::string("{\"shadow_lights\": \"most\", ") + kPlane + "}",
                     {},
                     1,
-                    {"scene.json", "/shadowLights", "'all'"}},
+                    {"scene.json", "/shadow_lights", "'all'"}},
         FailureCase{"scene_casts_shadows_not_a_boolean",
                     std::string("{\"lights\": [{\"type\": \"point\", \"pos\": [0, 1, 0], \"intensity\": [1, 1, 1], "
-                                "\"range\": 2, \"castsShadows\": 0}], ") +
+                                "\"range\": 2, \"casts_shadows\": 0}], ") +
                         kPlane + "}",
                     {},
                     1,
-                    {"scene.json", "/lights/0/castsShadows"}},
+                    {"scene.json", "/lights/0/casts_shadows"}},
         FailureCase{"anisotropy_not_a_level", "", {"--anisotropy", "3"}, 2, {"--anisotropy", "auto"}},
         FailureCase{"anisotropy_not_a_number", "", {"--anisotropy", "nan"}, 2, {"--anisotropy"}},
         FailureCase{"ssao_radius_zero",
@@ -352,7 +352,7 @@ TEST(Cli, DefaultSceneRendersToPngAndStatsDescribeThePasses)
     }
 }
 
-// Issue 47: the shadowed lights are --shadow-lights, else the scene's "shadowLights", else 0;
+// Issue 47: the shadowed lights are --shadow-lights, else the scene's "shadow_lights", else 0;
 // "all" and counts past the old budget of 256 are taken; the pool's size is --shadow-pool-mib,
 // else kDefaultShadowPoolMiB (256). --stats reports both as the renderer was given them. One
 // light over a plane at 16x16 keeps each run short.
@@ -362,8 +362,8 @@ TEST(Cli, ShadowSettingsReachTheRendererAndTheStats)
     const std::string light =
         R"("lights": [{"type": "point", "pos": [0, 1, 0], "intensity": [1, 1, 1], "range": 3}], )";
     writeFile(dir / "plain.json", "{" + light + kPlane + "}");
-    writeFile(dir / "all.json", "{\"shadowLights\": \"all\", " + light + kPlane + "}");
-    writeFile(dir / "three.json", "{\"shadowLights\": 3, " + light + kPlane + "}");
+    writeFile(dir / "all.json", "{\"shadow_lights\": \"all\", " + light + kPlane + "}");
+    writeFile(dir / "three.json", "{\"shadow_lights\": 3, " + light + kPlane + "}");
     const auto stats = [&](const std::string& scene, const std::vector<std::string>& options) {
         std::vector<std::string> args{
             "render",  (dir / scene).string(),       "-o", (dir / "out.png").string(), "--size", "16x16",

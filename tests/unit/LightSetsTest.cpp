@@ -190,7 +190,7 @@ TEST(LightSets, ExplicitLightsComeFirst)
     EXPECT_EQ(lights[5].name, "set1[1]");
 }
 
-// A set's "castsShadows" reaches each light it generates, at any --lights total.
+// A set's "casts_shadows" reaches each light it generates, at any --lights total.
 TEST(LightSets, GeneratedLightsInheritTheSetsCastsShadows)
 {
     LightSet unshadowed = spotSet(3, 2);

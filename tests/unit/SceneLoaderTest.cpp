@@ -324,28 +324,28 @@ TEST(SceneLoader, LightDefaultsAndOptionalKeys)
     EXPECT_FLOAT_EQ(scene.lightSets[1].exponent.hi, 2.0f);
 }
 
-// Issue 47: "shadowLights" (none unless given, so --shadow-lights or 0 decides), a whole number
-// or "all"; "castsShadows" on lights and light sets, true unless given.
+// Issue 47: "shadow_lights" (none unless given, so --shadow-lights or 0 decides), a whole number
+// or "all"; "casts_shadows" on lights and light sets, true unless given.
 TEST(SceneLoader, ShadowLightsAndCastsShadows)
 {
     EXPECT_FALSE(parse("{}").shadowLights.has_value());
-    EXPECT_EQ(parse(R"json({"shadowLights": 0})json").shadowLights, std::optional<int>(0));
-    EXPECT_EQ(parse(R"json({"shadowLights": 4096})json").shadowLights, std::optional<int>(4096));
+    EXPECT_EQ(parse(R"json({"shadow_lights": 0})json").shadowLights, std::optional<int>(0));
+    EXPECT_EQ(parse(R"json({"shadow_lights": 4096})json").shadowLights, std::optional<int>(4096));
     // Above the old budget of 256: the pool has none.
-    EXPECT_EQ(parse(R"json({"shadowLights": 1e6})json").shadowLights, std::optional<int>(1000000));
-    EXPECT_EQ(parse(R"json({"shadowLights": "all"})json").shadowLights, std::optional<int>(kAllShadowLights));
+    EXPECT_EQ(parse(R"json({"shadow_lights": 1e6})json").shadowLights, std::optional<int>(1000000));
+    EXPECT_EQ(parse(R"json({"shadow_lights": "all"})json").shadowLights, std::optional<int>(kAllShadowLights));
 
     const Scene scene = parse(R"json({
         "lights": [
             { "type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1 },
-            { "type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "castsShadows": false },
+            { "type": "point", "pos": [0, 0, 0], "intensity": [1, 1, 1], "range": 1, "casts_shadows": false },
             { "type": "spot", "pos": [0, 0, 0], "intensity": [1, 1, 1], "direction": [0, -1, 0], "cutoff": 30,
-              "range": 1, "castsShadows": true }
+              "range": 1, "casts_shadows": true }
         ],
         "light_sets": [
             { "count": 2, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1] },
             { "count": 2, "min": [0, 0, 0], "max": [1, 1, 1], "range": [1, 2], "intensity": [0, 1],
-              "castsShadows": false }
+              "casts_shadows": false }
         ] })json");
     ASSERT_EQ(scene.lights.size(), 3u);
     EXPECT_TRUE(scene.lights[0].castsShadows);
