@@ -95,8 +95,8 @@ int markedLevel(std::uint32_t mark)
 ShadowFaceRegion shadowFaceRegion(std::uint32_t cells, int level)
 {
     const int wholePages = 1 << level;
-    ShadowFaceRegion whole{.level = level, .x0 = -SHADOW_GUARD_TEXELS, .y0 = -SHADOW_GUARD_TEXELS,
-                           .pages = wholePages, .whole = true};
+    ShadowFaceRegion whole{
+        .level = level, .x0 = -SHADOW_GUARD_TEXELS, .y0 = -SHADOW_GUARD_TEXELS, .pages = wholePages, .whole = true};
     if (level == 0 || cells == 0)
         return whole;
     int cellMin[2] = {SHADOW_MARK_CELLS, SHADOW_MARK_CELLS};
@@ -120,7 +120,8 @@ ShadowFaceRegion shadowFaceRegion(std::uint32_t cells, int level)
         const int high = static_cast<int>(std::ceil((cellMax[axis] + 1) * cellTexels)) + reach;
         span = std::max(span, high - low[axis]);
     }
-    const int pages = static_cast<int>(std::bit_ceil(static_cast<unsigned>((span + SHADOW_PAGE_TEXELS - 1) / SHADOW_PAGE_TEXELS)));
+    const int pages =
+        static_cast<int>(std::bit_ceil(static_cast<unsigned>((span + SHADOW_PAGE_TEXELS - 1) / SHADOW_PAGE_TEXELS)));
     if (pages >= wholePages)
         return whole;
     // Kept inside the whole face's square, so the part holds no texel the whole face would not.
@@ -165,8 +166,7 @@ bool casterMayMeetFace(const Bounds& box, const glm::vec3& position, float near,
         anyAhead = anyAhead || depth > 0.0f;
         allBeyondNear = allBeyondNear && depth > near;
         if (depth > near) {
-            const glm::vec2 ndc =
-                glm::vec2(glm::dot(frame.across, v), glm::dot(frame.up, v)) / (depth * frame.tanHalf);
+            const glm::vec2 ndc = glm::vec2(glm::dot(frame.across, v), glm::dot(frame.up, v)) / (depth * frame.tanHalf);
             low = glm::min(low, ndc);
             high = glm::max(high, ndc);
         }

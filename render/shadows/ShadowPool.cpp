@@ -169,8 +169,8 @@ std::vector<std::uint32_t> ShadowPool::mark(const GpuScene& scene, FrameTargets&
         initial.assign(words, 0u);
         for (std::size_t light = 0; light < chosen_.size(); ++light)
             if (!chosen_[light])
-                std::fill_n(initial.begin() + static_cast<std::ptrdiff_t>(light * SHADOW_CUBE_FACES),
-                            SHADOW_CUBE_FACES, ~0u);
+                std::fill_n(initial.begin() + static_cast<std::ptrdiff_t>(light * SHADOW_CUBE_FACES), SHADOW_CUBE_FACES,
+                            ~0u);
     }
     const Pass startPass{.name = "shadow marks", .storage = Resource::ShadowPages, .writes = Resource::ShadowPages};
     for (int attempt = 0; attempt < kMarkingAttempts; ++attempt) {
@@ -224,7 +224,7 @@ void ShadowPool::place(const GpuScene& scene, const std::vector<std::uint32_t>& 
     }
 
     // The page tables count in the pool: a word per light, its marks' words, a record per face
-    // of every light with faces.
+    // of every light with faces (ShadowPool::writeTables).
     std::size_t lightsWithFaces = 0;
     for (std::size_t i = 0; i < wanted.size(); ++i)
         if (i == 0 || wanted[i].key / SHADOW_CUBE_FACES != wanted[i - 1].key / SHADOW_CUBE_FACES)
@@ -400,16 +400,25 @@ void ShadowPool::noteMovedCasters(const std::vector<DrawList::Caster>& casters)
 
 void ShadowPool::writeTables(std::size_t lightCount)
 {
-    std::vector<std::uint32_t> faceOfLight(std::max<std::size_t>(lightCount, 1), kNoFaces);
-    std::vector<GpuShadowFace> records;
+    // Each light's first face record: four lights a texel.
+    facesBase_ = (lightCount + 3) / 4;
+    std::vector<glm::vec4> table(facesBase_, glm::vec4(-1.0f));
+    const auto setFirst = [&](std::uint32_t light, std::size_t record) {
+        table[light / 4][static_cast<int>(light % 4)] = static_cast<float>(record);
+    };
+    std::size_t records = 0;
     std::uint32_t currentLight = kNoFaces;
+    std::size_t firstOfLight = 0;
+    std::vector<GpuShadowFace> faces;
     for (const auto& [key, face] : faces_) {
         if (face.light != currentLight) {
             currentLight = face.light;
-            faceOfLight[face.light] = static_cast<std::uint32_t>(records.size());
-            records.resize(records.size() + static_cast<std::size_t>(shadowFaceCount(face.drawnFor)));
+            firstOfLight = records;
+            setFirst(face.light, records);
+            records += static_cast<std::size_t>(shadowFaceCount(face.drawnFor));
+            faces.resize(records);
         }
-        GpuShadowFace& record = records[faceOfLight[face.light] + static_cast<std::uint32_t>(face.face)];
+        GpuShadowFace& record = faces[firstOfLight + static_cast<std::size_t>(face.face)];
         const float resolution = static_cast<float>(shadowFaceResolution(face.region.level));
         const float texels = static_cast<float>(face.region.pages * SHADOW_PAGE_TEXELS);
         const glm::vec2 origin(static_cast<float>(face.region.x0), static_cast<float>(face.region.y0));
@@ -418,17 +427,24 @@ void ShadowPool::writeTables(std::size_t lightCount)
         const auto guard = static_cast<float>(SHADOW_GUARD_TEXELS);
         record.fine = glm::vec4(atlasOrigin - origin, resolution, 1.0f);
         record.region = glm::vec4(origin + guard, origin + texels - guard);
-        if (face.coarse) {
-            const glm::vec2 coarseOrigin(static_cast<float>(face.coarse->x * SHADOW_PAGE_TEXELS),
-                                         static_cast<float>(face.coarse->y * SHADOW_PAGE_TEXELS));
-            record.coarse = glm::vec4(coarseOrigin + guard, static_cast<float>(shadowFaceResolution(0)), 1.0f);
-        }
-        record.depthRange = glm::vec4(face.near, face.far, 0.0f, 0.0f);
+        glm::vec2 coarse(-1.0f);
+        if (face.coarse)
+            coarse = glm::vec2(static_cast<float>(face.coarse->x * SHADOW_PAGE_TEXELS),
+                               static_cast<float>(face.coarse->y * SHADOW_PAGE_TEXELS)) +
+                     guard;
+        record.coarseDepth = glm::vec4(coarse, face.near, face.far);
     }
-    if (records.empty())
-        records.emplace_back();  // a buffer bound to a storage block must have storage
-    gl::uploadGrowing(faceOfLightBuffer_, "shadow face of each light", std::span<const std::uint32_t>(faceOfLight));
-    gl::uploadGrowing(facesBuffer_, "shadow faces", std::span<const GpuShadowFace>(records));
+    for (const GpuShadowFace& record : faces) {
+        table.push_back(record.fine);
+        table.push_back(record.region);
+        table.push_back(record.coarseDepth);
+    }
+    // Whole rows; the texture grows, and is rewritten whole, when the tables change.
+    const std::size_t rows = std::max<std::size_t>((table.size() + SHADOW_TABLE_WIDTH - 1) / SHADOW_TABLE_WIDTH, 1);
+    table.resize(rows * SHADOW_TABLE_WIDTH, glm::vec4(0.0f));
+    if (!tables_ || static_cast<std::size_t>(tables_.height()) != rows)
+        tables_ = gl::Texture2D("shadow page tables", GL_RGBA32F, SHADOW_TABLE_WIDTH, static_cast<int>(rows));
+    tables_.write(GL_RGBA, GL_FLOAT, table.data());
     tablesCurrent_ = true;
 }
 
@@ -508,13 +524,14 @@ void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std
     frame_.casterInstances = pairs.size();
 
     const PixelRect whole{0, 0, atlas_.width(), atlas_.height()};
-    passes.run({.name = "shadow pages", .framebuffer = &atlasFramebuffer_,
+    passes.run({.name = "shadow clears",
+                .framebuffer = &atlasFramebuffer_,
                 .state = {.depthTest = DepthTest::Off, .maskColour = true, .viewport = whole}},
                [&] {
                    if (!clearProgram_)
-                       clearProgram_ = gl::Program("shadow page clear",
-                                                   {{GL_VERTEX_SHADER, "shadow_page_clear.vert"},
-                                                    {GL_FRAGMENT_SHADER, "shadow_page_clear.frag"}});
+                       clearProgram_ =
+                           gl::Program("shadow page clear", {{GL_VERTEX_SHADER, "shadow_page_clear.vert"},
+                                                             {GL_FRAGMENT_SHADER, "shadow_page_clear.frag"}});
                    gl::uploadGrowing(clearRectsBuffer_, "shadow page clears", std::span<const glm::vec4>(squares));
                    clearRectsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_CLEAR_RECTS_BUFFER_BINDING);
                    clearProgram_.use();
@@ -522,7 +539,8 @@ void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std
                });
     if (runs.empty())
         return;
-    passes.run({.name = "shadow pages", .framebuffer = &atlasFramebuffer_,
+    passes.run({.name = "shadow pages",
+                .framebuffer = &atlasFramebuffer_,
                 .state = {.clampDepth = true, .maskColour = true, .viewport = whole}},
                [&] {
                    gl::uploadGrowing(casterFacesBuffer_, "shadow caster faces", std::span<const glm::uvec2>(pairs));
@@ -531,10 +549,9 @@ void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std
                    faceDrawsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_FACE_DRAWS_BUFFER_BINDING);
                    for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
                        gl::counted(glEnable, plane);
-                   scene.drawCasterRuns([&](MaterialVariant variant) -> const gl::Program& {
-                       return casterProgram(variant);
-                   },
-                                        runs, locations::SHADOW_CASTER_FACE_BASE_LOCATION);
+                   scene.drawCasterRuns(
+                       [&](MaterialVariant variant) -> const gl::Program& { return casterProgram(variant); }, runs,
+                       locations::SHADOW_CASTER_FACE_BASE_LOCATION);
                    for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
                        gl::counted(glDisable, plane);
                });
@@ -544,9 +561,8 @@ void ShadowPool::update(const GpuScene& scene, FrameTargets& targets, FramePasse
                         const TechniqueOptions& options)
 {
     // What the last placement found stays until the next; the rest is this frame's.
-    frame_ = {.tablePages = frame_.tablePages,
-              .levelsLowered = frame_.levelsLowered,
-              .facesDropped = frame_.facesDropped};
+    frame_ = {
+        .tablePages = frame_.tablePages, .levelsLowered = frame_.levelsLowered, .facesDropped = frame_.facesDropped};
     const std::uint64_t callsBefore = gl::callTally();
     if (lightCap_ == 0 || scene.lightCount() == 0) {
         if (!faces_.empty()) {
@@ -592,8 +608,7 @@ void ShadowPool::bind() const
 {
     if (!tablesCurrent_)
         return;
-    faceOfLightBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_FACE_OF_LIGHT_BUFFER_BINDING);
-    facesBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_FACES_BUFFER_BINDING);
+    tables_.bindUnit(bindings::SHADOW_TABLES_UNIT);
     atlas_.bindUnit(bindings::SHADOW_ATLAS_UNIT);
 }
 
@@ -602,7 +617,7 @@ glm::vec4 ShadowPool::lookupParams() const
     if (!tablesCurrent_ || faces_.empty())
         return glm::vec4(0.0f);
     return glm::vec4(1.0f, 1.0f / static_cast<float>(atlas_.width()), 1.0f / static_cast<float>(atlas_.height()),
-                     0.0f);
+                     static_cast<float>(facesBase_));
 }
 
 std::vector<std::size_t> ShadowPool::shadowedLights() const

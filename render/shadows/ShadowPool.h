@@ -49,18 +49,18 @@
 
 namespace manylights {
 
-// std430 layout of shaders/lib/shadow_pages.glsl: ShadowFace.
+// A face's record in the page tables (shaders/lib/shadow_pages.glsl: shadowTables), three
+// RGBA32F texels.
 struct GpuShadowFace {
     glm::vec4 fine{0.0f};
     glm::vec4 region{0.0f};
-    glm::vec4 coarse{0.0f};
-    glm::vec4 depthRange{0.0f};
+    glm::vec4 coarseDepth{-1.0f, -1.0f, 0.0f, 0.0f};
 };
-static_assert(sizeof(GpuShadowFace) == 64);
+static_assert(sizeof(GpuShadowFace) == 48);
 
 // What the pool did in its last update (--stats: ShadowPool::counters).
 struct ShadowPoolFrame {
-    bool marked = false;            // the marking pass ran
+    bool marked = false;             // the marking pass ran
     std::size_t shadowedLights = 0;  // lights with at least one face
     std::size_t faces = 0;           // faces with pages
     std::size_t pagesUsed = 0;       // pages held by faces
@@ -92,7 +92,7 @@ public:
     // Binds the page tables and the atlas for the lighting programs.
     void bind() const;
     // The Shadowing block's localShadowParams (shaders/lib/shadows.glsl): x 1 where some
-    // light has faces; y, z: 1 / the atlas' width and height.
+    // light has faces; y, z: 1 / the atlas' width and height; w: the tables' first face texel.
     glm::vec4 lookupParams() const;
     // Forgets every drawn page: the next update marks and draws them all.
     void invalidate();
@@ -173,11 +173,11 @@ private:
     bool anyOptedOut_ = false;
     std::vector<bool> chosen_;
 
-    std::map<std::uint64_t, Face> faces_;  // by light · 6 + face: in the lights' order
+    std::map<std::uint64_t, Face> faces_;         // by light · 6 + face: in the lights' order
     std::map<std::size_t, Bounds> casterBounds_;  // by caster identity: where each was drawn last
     bool tablesCurrent_ = false;
-    gl::Buffer faceOfLightBuffer_;
-    gl::Buffer facesBuffer_;
+    gl::Texture2D tables_;
+    std::size_t facesBase_ = 0;  // the tables' first face texel
     std::size_t tableBytes_ = 0;
     gl::Buffer casterFacesBuffer_;
     gl::Buffer faceDrawsBuffer_;

@@ -24,9 +24,7 @@ const int CLUSTER_LIGHT_MASKS_BUFFER_BINDING = 4;     // lib/clusters.glsl Clust
 const int CLUSTER_MASK_SUMMARIES_BUFFER_BINDING = 5;  // lib/clusters.glsl ClusterMaskSummaries
 const int INSTANCES_BUFFER_BINDING = 8;               // lib/instances.glsl Instances
 const int TRANSPARENT_EVALUATIONS_BUFFER_BINDING = 9;  // transparent.frag TransparentEvaluations
-const int SHADOW_FACE_OF_LIGHT_BUFFER_BINDING = 10;   // lib/shadow_pages.glsl ShadowFaceOfLight
 const int SSAO_SAMPLES_BUFFER_BINDING = 11;           // ssao.comp SsaoSamples
-const int SHADOW_FACES_BUFFER_BINDING = 12;           // lib/shadow_pages.glsl ShadowFaces
 // The shadow-page pool's own passes (render/shadows/ShadowPool.h), which look no page up.
 const int SHADOW_PAGE_MARKS_BUFFER_BINDING = 6;    // lib/shadow_pages.glsl ShadowPageMarks (SHADOW_PAGE_MARKING)
 const int SHADOW_CASTER_FACES_BUFFER_BINDING = 6;  // shadow_page.vert CasterFaces
@@ -79,6 +77,7 @@ const int CLUSTER_TILE_SLICES_UNIT = 9;
 const int CLUSTER_BOUNDS_UNIT = 10;
 const int DIRECTIONAL_SHADOW_UNIT = 9;  // lib/shadows.glsl
 const int SHADOW_ATLAS_UNIT = 10;       // lib/shadow_pages.glsl: the shadow-page pool's depth atlas
+const int SHADOW_TABLES_UNIT = 11;      // lib/shadow_pages.glsl: its page tables
 const int OPACITY_MAP_UNIT = 12;        // lib/material.glsl
 const int GLOBAL_LIGHT_RECORDS_UNIT = 12;  // lib/cluster_lists.glsl globalLightRecordTexels (no material maps there)
 const int AMBIENT_OCCLUSION_UNIT = 13;  // lib/shadows.glsl: the blurred SSAO factor

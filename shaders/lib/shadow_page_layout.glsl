@@ -22,6 +22,8 @@ const int SHADOW_MAX_LEVEL = 6;
 const int SHADOW_MARK_CELLS = 4;
 const int SHADOW_MARK_LEVEL_SHIFT = 16;
 const int SHADOW_CUBE_FACES = 6;
+// The page tables' texture is this many texels wide (lib/shadow_pages.glsl: shadowTables).
+const int SHADOW_TABLE_WIDTH = 4096;
 // A spot light whose cos(cutoff) is at least this (a cutoff up to 75 degrees) has one face
 // along its axis; a wider one has six, as a point light.
 const float SHADOW_SPOT_FACE_MIN_COS = 0.258819045f;

@@ -19,34 +19,38 @@ struct ShadowFaceFrame {
     float tanHalf; // tangent of its half field of view
 };
 
-// The up vector each cube face's view is built with (ShadowFaces.cpp: kCubeFaceUp).
-vec3 shadowCubeFaceUp(uint face)
-{
-    return face == 2u ? vec3(0.0, 0.0, 1.0) : (face == 3u ? vec3(0.0, 0.0, -1.0) : vec3(0.0, -1.0, 0.0));
-}
+// A cube face's axis, image x and image y, in the faces' order: lookAt's frames for the up
+// vectors of render/shadows/ShadowFaces.cpp (kCubeFaceUp; tests/unit/ShadowFacesTest.cpp
+// checks that they agree), as constants: no cross product or normalisation per lookup.
+const vec3 SHADOW_CUBE_AXIS[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
+                                         vec3(0, 0, 1), vec3(0, 0, -1));
+const vec3 SHADOW_CUBE_ACROSS[6] = vec3[6](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0), vec3(1, 0, 0),
+                                           vec3(1, 0, 0), vec3(-1, 0, 0));
+const vec3 SHADOW_CUBE_UP[6] = vec3[6](vec3(0, -1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1),
+                                       vec3(0, -1, 0), vec3(0, -1, 0));
 
 ShadowFaceFrame shadowFaceFrame(GpuLight light, vec3 v)
 {
     ShadowFaceFrame f;
-    vec3 upHint;
+#ifndef NO_SPOT_LIGHTS  // a program for scenes without spot lights has no spot faces
     float c = light.spotAxisCosCutoff.w;
     if (c >= SHADOW_SPOT_FACE_MIN_COS) {
         f.face = 0u;
         f.axis = light.spotAxisCosCutoff.xyz;
-        upHint = abs(f.axis.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        vec3 upHint = abs(f.axis.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        f.across = normalize(cross(f.axis, upHint));
+        f.up = cross(f.across, f.axis);
         f.tanHalf = sqrt(max(1.0 - c * c, 0.0)) / c * SHADOW_SPOT_FACE_SCALE;
-    } else {
-        vec3 a = abs(v);
-        uint axisIndex = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
-        bool negative = v[axisIndex] < 0.0;
-        f.face = axisIndex * 2u + (negative ? 1u : 0u);
-        f.axis = vec3(0.0);
-        f.axis[axisIndex] = negative ? -1.0 : 1.0;
-        upHint = shadowCubeFaceUp(f.face);
-        f.tanHalf = 1.0;
+        return f;
     }
-    f.across = normalize(cross(f.axis, upHint));
-    f.up = cross(f.across, f.axis);
+#endif
+    vec3 a = abs(v);
+    uint axisIndex = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
+    f.face = axisIndex * 2u + (v[axisIndex] < 0.0 ? 1u : 0u);
+    f.axis = SHADOW_CUBE_AXIS[f.face];
+    f.across = SHADOW_CUBE_ACROSS[f.face];
+    f.up = SHADOW_CUBE_UP[f.face];
+    f.tanHalf = 1.0;
     return f;
 }
 
@@ -88,46 +92,55 @@ void markShadowPages(uint lightIndex, GpuLight light, vec3 position)
 }
 #endif
 
-// Each light's first face record (its faces follow in order), or SHADOW_NO_FACES.
-const uint SHADOW_NO_FACES = 0xffffffffu;
-layout(std430, binding = SHADOW_FACE_OF_LIGHT_BUFFER_BINDING) readonly buffer ShadowFaceOfLight {
-    uint shadowFaceOfLight[];
-};
-// std430 layout of render/shadows/ShadowPool.h: GpuShadowFace.
-struct ShadowFace {
-    vec4 fine;    // xy: atlas texel minus face texel of the resident part; z: face resolution R; w: 1 if resident
-    vec4 region;  // the face texels the tap may read in the resident part: x0, y0, x1, y1
-    vec4 coarse;  // xy: atlas texel minus face texel of the coarse page; z: its resolution; w: 1 if there
-    vec4 depthRange;  // x: near, y: far
-};
-layout(std430, binding = SHADOW_FACES_BUFFER_BINDING) readonly buffer ShadowFaces {
-    ShadowFace shadowFaces[];
-};
+// The page tables (render/shadows/ShadowPool.cpp: writeTables), one RGBA32F texture
+// SHADOW_TABLE_WIDTH texels wide, read with texelFetch: llvmpipe fetches a texel for all its
+// lanes at once where it loads a storage buffer lane by lane, and a 2D texture holds the
+// tables of any light count within GL 4.5's least texture size. Texel i / 4, component i % 4:
+// light i's first face record, or −1 where it has none (record numbers are whole floats, exact
+// below 2^24). From texel `facesBase` on, each face's record in three texels:
+// - fine: xy: atlas texel minus face texel of its resident part; z: the face's resolution R;
+//   w: 1 where the part is there;
+// - region: the face texels the tap may read in the part: x0, y0, x1, y1;
+// - coarse and depth: xy: atlas texel minus face texel of the coarse page (x < 0: none);
+//   z: near; w: far.
+layout(binding = SHADOW_TABLES_UNIT) uniform sampler2D shadowTables;
+
+vec4 shadowTableTexel(int texel)
+{
+    return texelFetch(shadowTables, ivec2(texel % SHADOW_TABLE_WIDTH, texel / SHADOW_TABLE_WIDTH), 0);
+}
+
 // 32-bit depth with hardware comparison (GL_LEQUAL) and bilinear filtering: one tap is a 2x2
 // percentage-closer filter.
 layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
 
 // The fraction of local light `light` (index `lightIndex`) that reaches `position`, a surface
 // of normal `normal`: one tap of its face's resident part, or of the face's coarse page where
-// the part does not hold the receiver. No loop. `atlasTexelSize`: 1 / the atlas' width, height.
-float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 normal, vec2 atlasTexelSize)
+// the part does not hold the receiver. No loop. `atlasTexelSize`: 1 / the atlas' width, height;
+// `facesBase`: the tables' first face texel.
+float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 normal, vec2 atlasTexelSize,
+                       int facesBase)
 {
-    uint first = shadowFaceOfLight[lightIndex];
+    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
     // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
-    if (first == SHADOW_NO_FACES)
+    if (first < 0.0)
         return 1.0;
     vec3 v = position - light.positionRadius.xyz;
     ShadowFaceFrame f = shadowFaceFrame(light, v);
-    ShadowFace face = shadowFaces[first + f.face];
+    int record = facesBase + 3 * (int(first) + int(f.face));
+    vec4 fineOffset = shadowTableTexel(record);
+    vec4 region = shadowTableTexel(record + 1);
+    vec4 coarseDepth = shadowTableTexel(record + 2);
     float depth = dot(f.axis, v);
     vec2 uv = shadowFaceUv(f, v, depth);
-    vec2 fineTexel = uv * face.fine.z;
-    bool fine = face.fine.w != 0.0 && all(greaterThanEqual(fineTexel, face.region.xy)) &&
-                all(lessThanEqual(fineTexel, face.region.zw));
-    if (!fine && face.coarse.w == 0.0)
+    vec2 fineTexel = uv * fineOffset.z;
+    bool fine = fineOffset.w != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) &&
+                all(lessThanEqual(fineTexel, region.zw));
+    if (!fine && coarseDepth.x < 0.0)
         return 1.0;
-    float resolution = fine ? face.fine.z : face.coarse.z;
-    vec2 atlasTexel = fine ? fineTexel + face.fine.xy : uv * face.coarse.z + face.coarse.xy;
+    const float coarseResolution = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
+    float resolution = fine ? fineOffset.z : coarseResolution;
+    vec2 atlasTexel = fine ? fineTexel + fineOffset.xy : uv * coarseResolution + coarseDepth.xy;
     // The receiver's depth is pulled towards the light by texels of the level read: one, and one
     // more per unit of its slope to the light (the tap's 2x2 texels span that much of a tilted
     // surface's depth), at most SHADOW_MAX_BIAS_WORLD world units (a thin wall still shadows).
@@ -135,8 +148,8 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
     float cosine = clamp(dot(normal, -v) / max(length(v), 1e-20), 0.1, 1.0);
     float slope = sqrt(1.0 - cosine * cosine) / cosine;
     float bias = min(texelWorld * (SHADOW_BIAS_TEXELS + SHADOW_SLOPE_BIAS_TEXELS * slope), SHADOW_MAX_BIAS_WORLD);
-    float near = face.depthRange.x;
-    float far = face.depthRange.y;
+    float near = coarseDepth.z;
+    float far = coarseDepth.w;
     float biased = clamp(depth - bias, near, far);
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
     float reference = (far + near) / (far - near) * 0.5 + 0.5 - far * near / ((far - near) * biased);

@@ -8,7 +8,8 @@ layout(std140, binding = SHADOWING_BLOCK_BINDING) uniform Shadowing {
     vec4 directionalShadowParams;  // x: 1 when the directional light casts shadows; y: 1 / map size
     vec4 occlusionParams;          // x: 1 when ambient occlusion multiplies the ambient term
     vec4 localShadowParams;        // x: 1 when some local light casts shadows; y, z: 1 / the shadow
-                                   // atlas' width, height (lib/shadow_pages.glsl)
+                                   // atlas' width, height; w: the page tables' first face texel
+                                   // (lib/shadow_pages.glsl)
 } shadowing;
 
 #include "lib/shadow_pages.glsl"
@@ -54,7 +55,8 @@ float localShadow(uint lightIndex, GpuLight light, vec3 position, vec3 normal)
 #endif
     if (shadowing.localShadowParams.x == 0.0)
         return 1.0;
-    return shadowPageLookup(lightIndex, light, position, normal, shadowing.localShadowParams.yz);
+    return shadowPageLookup(lightIndex, light, position, normal, shadowing.localShadowParams.yz,
+                            int(shadowing.localShadowParams.w));
 }
 
 // The screen pixel a world position falls in. Every technique computes it from the same
