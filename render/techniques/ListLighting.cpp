@@ -11,17 +11,17 @@ namespace {
 LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
                                  const ClusterGridShape& shape, LightingStage stage)
 {
-    const gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), shape));
+    const gl::Defines defines = CullingVariant{.grid = shape, .lightLists = true}.toDefines();
     if (stage == LightingStage::Compute)
-        return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, defines);
+        return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, options.shaders, defines);
     return LightingProgram(label, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                           defines);
+                           options.shaders, defines);
 }
 
 LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape)
 {
-    return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}},
-                           clusterListDefines(clusterGridDefines(shaderDefines(options), shape)));
+    return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}}, options.shaders,
+                           CullingVariant{.grid = shape, .lightLists = true}.toDefines());
 }
 
 }  // namespace
