@@ -203,6 +203,36 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
     }
 }
 
+TEST(ShaderVariantKey, TheTechniquesDimensionsAreItsDefines)
+{
+    // The seed layout and no counting or local shadows: nothing of the technique's.
+    EXPECT_TRUE(ShaderVariant{.technique = {.gbufferLayout = GBufferLayout::Seed}}.toDefines({}).empty());
+    const gl::Defines technique =
+        ShaderVariant{.technique = {.countWork = true, .gbufferLayout = GBufferLayout::Compact, .localShadows = true}}
+            .toDefines({});
+    const gl::Defines expected = {{"GBUFFER_COMPACT", "1"}, {"COUNT_WORK", "1"}, {"LOCAL_SHADOWS", "1"}};
+    EXPECT_EQ(technique, expected);
+    // The passes that share a shader's files are dimensions of the same key.
+    const gl::Defines passes =
+        ShaderVariant{.technique = {.gbufferLayout = GBufferLayout::Seed}, .depthPrepass = true, .maxTileLights = 64}
+            .toDefines({});
+    const gl::Defines expectedPasses = {{"DEPTH_PREPASS", "1"}, {"MAX_TILE_LIGHTS", "64u"}};
+    EXPECT_EQ(passes, expectedPasses);
+}
+
+TEST_F(LightingProgramTest, AProgramsVariantsAreAllOfTheTechniqueItWasMadeFor)
+{
+    const std::vector<gl::ShaderStage> stages = {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                 {GL_FRAGMENT_SHADER, "deferred.frag"}};
+    const LightingProgram counting("deferred lighting", stages, TechniqueVariant{.countWork = true});
+    const LightingProgram plain("deferred lighting", stages, TechniqueVariant{});
+    // A key's technique is set to the program's: asking for another's gives the same program.
+    const gl::Program& counted = counting.variant(ShaderVariant{});
+    EXPECT_EQ(&counting.variant(ShaderVariant{.technique = {.countWork = false}}), &counted);
+    EXPECT_EQ(&counting.variant(ShaderVariant{.technique = {.countWork = true}}), &counted);
+    EXPECT_NE(plain.variant(ShaderVariant{}).id(), counted.id());
+}
+
 TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
 {
     const LightingProgram program("geometry pass",
