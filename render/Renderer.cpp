@@ -90,9 +90,9 @@ void Renderer::makeTargets()
 
 TechniqueOptions Renderer::techniqueOptions() const
 {
-    return {.countWork = desc_.countWork,
-            .gbufferLayout = desc_.gbufferLayout,
-            .localShadows = desc_.shadowLights > 0,
+    return {.shaders = {.countWork = desc_.countWork,
+                        .gbufferLayout = desc_.gbufferLayout,
+                        .localShadows = desc_.shadowLights > 0},
             .lightingStage = driver_.lightingStage,
             .culling = desc_.culling};
 }
@@ -190,7 +190,7 @@ void Renderer::issueFrame(Technique& technique, ViewMode view)
         if (gpuScene_.environment().showsBackground())
             drawEnvironmentBackground(passes);
         if (gpuScene_.hasTransparentObjects())
-            transparencyPassFor(technique.options()).run(gpuScene_, *targets_, passes, technique.isReference());
+            transparencyPassFor(technique.options().shaders).run(gpuScene_, *targets_, passes, technique.isReference());
         if (view == ViewMode::Volumes || view == ViewMode::VolumeCorners)
             drawVolumeOverlay(passes, view == ViewMode::VolumeCorners);
     } else {
@@ -218,14 +218,14 @@ void Renderer::issueFrame(Technique& technique, ViewMode view)
     inFlight_.push_back(ranTechnique ? &technique : nullptr);
 }
 
-TransparencyPass& Renderer::transparencyPassFor(const TechniqueOptions& options)
+TransparencyPass& Renderer::transparencyPassFor(const TechniqueVariant& technique)
 {
     const auto made = std::find_if(transparencyPasses_.begin(), transparencyPasses_.end(),
-                                   [&](const auto& pass) { return pass->options() == options; });
+                                   [&](const auto& pass) { return pass->technique() == technique; });
     if (made != transparencyPasses_.end()) {
         transparency_ = made->get();
     } else {
-        transparencyPasses_.push_back(std::make_unique<TransparencyPass>(options));
+        transparencyPasses_.push_back(std::make_unique<TransparencyPass>(technique));
         transparency_ = transparencyPasses_.back().get();
     }
     return *transparency_;
@@ -240,7 +240,7 @@ const gl::Program& Renderer::gbufferViewProgram(ViewMode view)
         program = gl::Program(shadowing ? "shadowing view" : "gbuffer view",
                               {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                {GL_FRAGMENT_SHADER, shadowing ? "shadowing_view.frag" : "gbuffer_view.frag"}},
-                              gbufferDefines(desc_.gbufferLayout));
+                              ShaderVariant{.technique = {.gbufferLayout = desc_.gbufferLayout}}.toDefines({}));
     return program;
 }
 
@@ -310,7 +310,7 @@ void Renderer::countWork()
     targets_->depthStencil.bindUnit(bindings::SCENE_DEPTH_UNIT);
     targets_->inRangeCounts.bindImage(bindings::IN_RANGE_COUNTS_IMAGE_UNIT, GL_READ_WRITE);
     if (!inRangeProgram_) {
-        gl::Defines defines = gbufferDefines(desc_.gbufferLayout);
+        gl::Defines defines = ShaderVariant{.technique = {.gbufferLayout = desc_.gbufferLayout}}.toDefines({});
         defines.emplace_back("LIGHTS_PER_BATCH", std::to_string(kLightsPerBatch) + "u");
         if (desc_.inRangeBruteForce)
             defines.emplace_back("BRUTE_FORCE", "1");
@@ -346,7 +346,7 @@ void Renderer::drawEnvironmentBackground(FramePasses& passes)
 void Renderer::drawVolumeOverlay(FramePasses& passes, bool cornersOnly)
 {
     if (!overlayDrawer_) {
-        overlayDrawer_ = std::make_unique<VolumeDrawer>();
+        overlayDrawer_ = std::make_unique<VolumeDrawer>(techniqueOptions().shaders);
         overlayProgram_ = gl::Program("volume wireframes",
                                       {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume_wire.frag"}});
     }

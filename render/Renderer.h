@@ -42,14 +42,14 @@ struct RendererDesc {
     int height = 0;  // 0: kDefaultImageHeight
     GBufferLayout gbufferLayout = kDefaultGBufferLayout;
     // Each frame also counts its work (lastWorkCounts); techniques are then made in their
-    // counting variants (TechniqueOptions::countWork), so their timings are not their own.
+    // counting variants (TechniqueVariant::countWork), so their timings are not their own.
     bool countWork = false;
     // in_range_pairs counted over every light instead of the lights a per-tile cull keeps
     // (shaders/in_range.comp): the reference the tests check the culled count against.
     bool inRangeBruteForce = false;
     // --shadow-lights: how many local lights cast shadows, the ones ranked highest each frame
     // (kAllShadowLights: every light that does not opt out); above 0, techniques are made in
-    // their variants that look the shadow pages up (TechniqueOptions::localShadows).
+    // their variants that look the shadow pages up (TechniqueVariant::localShadows).
     int shadowLights = 0;
     // --shadow-pool-mib: the shadow-page pool's size, a multiple of kShadowPoolGrainMiB from
     // kMinShadowPoolMiB to kMaxShadowPoolMiB (scene/ShadowSelection.h); 0: kDefaultShadowPoolMiB.
@@ -203,8 +203,9 @@ private:
     // The targets for desc_'s size and layout, and what was made for the old layout dropped.
     void makeTargets();
     void prepareShadowing(ViewMode view, FramePasses& passes);
-    // The transparency pass for techniques made with `options` (made on first use).
-    TransparencyPass& transparencyPassFor(const TechniqueOptions& options);
+    // The transparency pass for techniques whose programs are made for `technique` (made on
+    // first use).
+    TransparencyPass& transparencyPassFor(const TechniqueVariant& technique);
     // The program of a G-buffer, shadow or ssao view (made on first use).
     const gl::Program& gbufferViewProgram(ViewMode view);
     void countWork();
@@ -220,8 +221,8 @@ private:
     std::unique_ptr<FrameTargets> targets_;
     // Every technique variant made so far (technique()); the programs stay compiled.
     std::vector<std::unique_ptr<Technique>> techniques_;
-    // One per set of technique options it has followed (made when the scene has transparent
-    // objects): switching techniques keeps their programs. transparency_ is the last one run.
+    // One per technique variant it has followed (made when the scene has transparent objects):
+    // switching techniques keeps their programs. transparency_ is the last one run.
     std::vector<std::unique_ptr<TransparencyPass>> transparencyPasses_;
     TransparencyPass* transparency_ = nullptr;
     PassProfiler profiler_;

@@ -7,7 +7,9 @@
 
 #include "core/Error.h"
 #include "gl/Driver.h"
+#include "render/culling/CullingVariant.h"
 #include "render/culling/LightTiles.h"
+#include "render/programs/LightingPrograms.h"
 #include "render/scene/GpuScene.h"
 
 namespace manylights {
@@ -25,24 +27,17 @@ GLuint groupsFor(std::uint32_t items, GLuint groupSize) { return (items + groupS
 
 }  // namespace
 
-gl::Defines clusterGridDefines(gl::Defines defines, const ClusterGridShape& shape)
-{
-    ML_ASSERT(shape.tileSize >= 4 && shape.tileSize <= 32);
-    defines.emplace_back("CLUSTER_TILE_SIZE", std::to_string(shape.tileSize));
-    ML_ASSERT(shape.slices >= 1 && shape.slices <= 32);
-    defines.emplace_back("CLUSTER_SLICES", std::to_string(shape.slices));
-    if (shape.surfaceBounds)
-        defines.emplace_back("CLUSTER_SURFACE_BOUNDS", "1");
-    return defines;
-}
-
 ClusterGrid::ClusterGrid(GBufferLayout gbufferLayout, const ClusterGridShape& shape)
     : shape_(shape),
       tiles_("cluster tiles", {{GL_COMPUTE_SHADER, "cluster_tiles.comp"}},
-             clusterGridDefines(gbufferDefines(gbufferLayout), shape)),
+             // The G-buffer's layout is a dimension of the lighting programs' key.
+             CullingVariant{.grid = shape}.toDefines(
+                 ShaderVariant{.technique = {.gbufferLayout = gbufferLayout}}.toDefines({}))),
       // The masks are the transparency grid's, whose boxes are the frustum's sections.
       assign_("cluster light masks", {{GL_COMPUTE_SHADER, "cluster_assign.comp"}},
-              clusterGridDefines(lightTileDefines(), {.tileSize = shape.tileSize, .slices = shape.slices}))
+              CullingVariant{.grid = ClusterGridShape{.tileSize = shape.tileSize, .slices = shape.slices},
+                             .lightTiles = true}
+                  .toDefines())
 {
 }
 

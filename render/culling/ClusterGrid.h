@@ -11,6 +11,7 @@
 //   no pass loops more than a bounded number of times.
 #pragma once
 
+#include <compare>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/frame/FramePasses.h"
+#include "render/programs/GBufferLayout.h"
 #include "render/programs/LightBatches.h"
 
 namespace manylights {
@@ -40,14 +42,14 @@ struct ClusterGridShape {
     int tileSize = kClusterTileSize;
     int slices = kClusterSlices;
     bool surfaceBounds = false;
-};
 
-// `defines` plus the light batch's and the grid's, for programs that include lib/clusters.glsl.
-gl::Defines clusterGridDefines(gl::Defines defines, const ClusterGridShape& shape = {});
+    auto operator<=>(const ClusterGridShape&) const = default;
+};
 
 class ClusterGrid {
 public:
-    // The programs that read the grid are compiled for the same shape (clusterGridDefines).
+    // The programs that read the grid are compiled for the same shape (render/culling/
+    // CullingVariant.h: grid).
     explicit ClusterGrid(GBufferLayout gbufferLayout, const ClusterGridShape& shape = {});
 
     // The most lights one batch of masks takes for an image of this size (a multiple of 32), in

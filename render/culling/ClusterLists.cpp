@@ -20,16 +20,9 @@ namespace manylights {
 
 namespace {
 
-// Uniform locations of cluster_pairs.comp and pair_sort.comp (the
-// shaders get them as defines, so the numbers live here only).
 constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
-// The most tiles one invocation of cluster_pairs.comp walks for a light; lights covering
-// more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64 measured alike
-// on the courtyard (256 was slower for clustered at 1,024 lights, its lanes out of step); 64
-// keeps 131,072 lights of 36 tiles each (tests/scenes/lights_on_one_spot.json, tiled) narrow:
-// as 262,144 workgroups they took 21 s and 20 GB under AddressSanitizer, whose allocator
-// llvmpipe's per-workgroup allocations then go through.
-constexpr std::uint32_t kNarrowLightTiles = 64;
+// A wide light's walk of a band (lib/light_tiles.glsl): its lane's share of the band's tiles,
+// each tile's slices.
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
 // A part's walk: each entry tested once and shaded at most once, two iterations per chunk of 32
 // (lib/cluster_lists.glsl); before it, in part 0, the global list, an iteration per light; the
@@ -45,44 +38,6 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // default scene has 6 per cluster at 1280x720, the courtyard 8 to 13 from 1,024 to 1,048,576
 // lights), so that a single image is rarely rendered twice.
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
-
-// A program of cluster_pairs.comp: for the narrow or the wide lights, for the counting run,
-// the writing run or the masks' run (the counting run's for the narrow lights, the writing
-// run's for the wide), reading the grid as texels or from storage buffers.
-gl::Program makePairProgram(const ClusterGridShape& shape, bool wide, bool emit, bool masks, bool gridTexels)
-{
-    gl::Defines defines = clusterGridDefines(wide ? lightTileDefines() : gl::Defines{}, shape);
-    if (gridTexels)
-        defines.emplace_back("CLUSTER_GRID_TEXELS", "1");
-    defines.emplace_back("CLUSTER_PAIR_NARROW_TILES", std::to_string(kNarrowLightTiles));
-    defines.emplace_back("EMIT_PAIRS", emit ? "1" : "0");
-    defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
-    if (wide)
-        defines.emplace_back("WIDE_LIGHTS", "1");
-    if (masks)
-        defines.emplace_back("CLUSTER_MASKS", "1");
-    return gl::Program(wide ? "cluster pairs of wide lights" : "cluster pairs",
-                       {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}, defines);
-}
-
-gl::Program makeMaskListProgram(const ClusterGridShape& shape)
-{
-    gl::Defines defines = clusterGridDefines({}, shape);
-    return gl::Program("cluster mask lists", {{GL_COMPUTE_SHADER, "cluster_mask_lists.comp"}}, defines);
-}
-
-enum class SortPass { Count, Scatter, ScatterGather };
-
-gl::Defines sortDefines(SortPass pass)
-{
-    gl::Defines defines = {{"PAIR_SORT_CHUNK", std::to_string(kSortChunk)},
-                           {"PAIR_SORT_RADIX", std::to_string(1 << kSortRadixBits)}};
-    if (pass != SortPass::Count)
-        defines.emplace_back("PAIR_SORT_SCATTER", "1");
-    if (pass == SortPass::ScatterGather)
-        defines.emplace_back("PAIR_SORT_GATHER", "1");
-    return defines;
-}
 
 GLuint groupsFor(std::uint32_t items) { return (items + kGroupSize - 1) / kGroupSize; }
 
@@ -113,26 +68,23 @@ void ensure(gl::Buffer& buffer, std::string_view label, std::uint32_t uints)
 
 }  // namespace
 
-gl::Defines clusterListDefines(gl::Defines defines)
-{
-    defines.emplace_back("CLUSTER_LIST_PART", std::to_string(kClusterListPart));
-    defines.emplace_back("GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity));
-    return defines;
-}
-
 ClusterLists::ClusterLists(const ClusterGridShape& shape, const CullingTuning& tuning)
     : shape_(shape),
       maskedListLights_(tuning.maskedListLights.value_or(kMaskedListLights)),
       globalLightGridFraction_(tuning.globalLightGridFraction.value_or(kGlobalLightGridFraction)),
-      maskLists_(makeMaskListProgram(shape)),
+      pairPrograms_("cluster pairs", {{GL_COMPUTE_SHADER, "cluster_pairs.comp"}}),
+      maskLists_("cluster mask lists", {{GL_COMPUTE_SHADER, "cluster_mask_lists.comp"}},
+                 CullingVariant{.grid = shape}.toDefines()),
       longLists_("cluster long lists", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
-                 clusterListDefines(clusterGridDefines({}, shape))),
-      sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Count)),
-      sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}}, sortDefines(SortPass::Scatter)),
+                 CullingVariant{.grid = shape, .lightLists = true}.toDefines()),
+      sortCount_("pair sort counts", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
+                 CullingVariant{.sortPass = SortPass::Count}.toDefines()),
+      sortScatter_("pair sort scatter", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
+                   CullingVariant{.sortPass = SortPass::Scatter}.toDefines()),
       sortScatterGather_("pair sort scatter with spheres", {{GL_COMPUTE_SHADER, "pair_sort.comp"}},
-                         sortDefines(SortPass::ScatterGather)),
+                         CullingVariant{.sortPass = SortPass::ScatterGather}.toDefines()),
       globalLightOrder_("global light order", {{GL_COMPUTE_SHADER, "global_light_order.comp"}},
-                        {{"GLOBAL_LIGHT_CAPACITY", std::to_string(kGlobalLightCapacity)}}),
+                        CullingVariant{.globalLights = true}.toDefines()),
       statusBuffer_("cluster list status", sizeof(Status), nullptr, GL_DYNAMIC_STORAGE_BIT),
       globalLightCandidates_("global light candidates", bytesOf(kGlobalLightCapacity), nullptr, 0),
       globalLights_("global lights", bytesOf(kGlobalLightCapacity + 1), nullptr, 0),  // and the count
@@ -168,15 +120,10 @@ void ClusterLists::plan(std::uint32_t pairs)
         texels_ ? gl::BufferTexture("cluster list sphere texels", GL_RGBA32F, spheres_) : gl::BufferTexture();
 }
 
-const gl::Program& ClusterLists::pairProgram(bool wide, PairRun run, bool gridTexels)
+const gl::Program& ClusterLists::pairProgram(bool wide, PairRun run, bool gridTexels) const
 {
-    std::optional<gl::Program>& program = pairPrograms_[wide][static_cast<int>(run)][gridTexels];
-    if (!program) {
-        // The narrow lights set their bits as they are counted; the wide lights in a run after.
-        const bool emit = run == PairRun::Write || (run == PairRun::Mask && wide);
-        program.emplace(makePairProgram(shape_, wide, emit, run == PairRun::Mask, gridTexels));
-    }
-    return *program;
+    return pairPrograms_.variant(
+        {.grid = shape_, .gridTexels = gridTexels, .lightTiles = wide, .globalLights = true, .pairRun = run});
 }
 
 std::uint32_t ClusterLists::maskWordsFor(std::uint32_t lightCount, std::uint32_t clusterCount) const

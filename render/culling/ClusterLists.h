@@ -64,12 +64,14 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/culling/ClusterGrid.h"
+#include "render/culling/CullingVariant.h"
 #include "render/culling/GpuScan.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
 #include "render/frame/ReadbackRing.h"
 #include "render/frame/TechniqueOptions.h"
 #include "render/programs/LightingPrograms.h"
+#include "render/programs/ProgramVariants.h"
 
 namespace manylights {
 
@@ -90,10 +92,13 @@ inline constexpr std::uint32_t kGlobalLightCapacity = 2048;
 // (docs/techniques.md has the measurements).
 inline constexpr double kGlobalLightGridFraction = 0.5;
 
-// CLUSTER_LIST_PART and GLOBAL_LIGHT_CAPACITY, for programs that include lib/cluster_lists.glsl.
-// Whether they read the lists as texels and walk the global list is their ShaderVariant's
-// (render/programs/LightingPrograms.h: listTexels, globalLightList).
-gl::Defines clusterListDefines(gl::Defines defines);
+// The most tiles one invocation of cluster_pairs.comp walks for a light (CLUSTER_PAIR_NARROW_TILES);
+// lights covering more are wide, a workgroup each per band (lib/light_tiles.glsl). 32 and 64
+// measured alike on the courtyard (256 was slower for clustered at 1,024 lights, its lanes out
+// of step); 64 keeps 131,072 lights of 36 tiles each (tests/scenes/lights_on_one_spot.json,
+// tiled) narrow: as 262,144 workgroups they took 21 s and 20 GB under AddressSanitizer, whose
+// allocator llvmpipe's per-workgroup allocations then go through.
+inline constexpr std::uint32_t kNarrowLightTiles = 64;
 
 // The most lights whose lists are built from bit masks (above) rather than sorted, where the
 // masks of every cluster take at most kMaskedListBudgetBytes (a frame of 16,384 lights at
@@ -184,10 +189,6 @@ private:
         std::uint32_t longTiles = 0;
     };
 
-    // What a program of cluster_pairs.comp does with the pairs it finds: counts them, writes
-    // them to their slots, or sets them in the masks (and counts each cluster's).
-    enum class PairRun { Count, Write, Mask };
-
     void plan(std::uint32_t pairs);
     // The mask words of each cluster for `lightCount` lights, or 0 where the frame's pairs are
     // sorted instead (kMaskedListLights).
@@ -197,13 +198,14 @@ private:
     void listMasks(FramePasses& passes, std::uint32_t clusterCount, std::uint32_t words);
     void bindGlobalLights() const;
 
-    // cluster_pairs.comp's programs, [wide][run][grid as texels], made when first used.
-    const gl::Program& pairProgram(bool wide, PairRun run, bool gridTexels);
+    // cluster_pairs.comp's program for the wide or the narrow lights, a run, the grid read as
+    // texels or not (made when first used).
+    const gl::Program& pairProgram(bool wide, PairRun run, bool gridTexels) const;
 
     ClusterGridShape shape_;
     std::uint32_t maskedListLights_;  // kMaskedListLights or CullingTuning::maskedListLights
     double globalLightGridFraction_;  // kGlobalLightGridFraction or CullingTuning's
-    std::optional<gl::Program> pairPrograms_[2][3][2];
+    ProgramVariants<CullingVariant> pairPrograms_;
     gl::Program maskLists_;
     gl::Program longLists_;
     gl::Program sortCount_;

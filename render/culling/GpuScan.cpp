@@ -1,9 +1,8 @@
 #include "render/culling/GpuScan.h"
 #include "render/programs/Bindings.h"
 
-#include <string>
-
 #include "core/Error.h"
+#include "render/culling/CullingVariant.h"
 #include "render/programs/Locations.h"
 
 namespace manylights {
@@ -12,10 +11,9 @@ namespace {
 
 constexpr GLuint kGroupSize = 64;  // local_size_x of scan.comp
 
-gl::Program scanProgram(std::string_view label, int step)
+gl::Program scanProgram(std::string_view label, ScanStep step)
 {
-    return gl::Program(label, {{GL_COMPUTE_SHADER, "scan.comp"}},
-                       {{"SCAN_STEP", std::to_string(step)}, {"SCAN_BLOCK", std::to_string(kScanBlock)}});
+    return gl::Program(label, {{GL_COMPUTE_SHADER, "scan.comp"}}, CullingVariant{.scanStep = step}.toDefines());
 }
 
 std::uint32_t blocksOf(std::uint32_t count) { return (count + kScanBlock - 1) / kScanBlock; }
@@ -23,7 +21,9 @@ std::uint32_t blocksOf(std::uint32_t count) { return (count + kScanBlock - 1) / 
 }  // namespace
 
 GpuScan::GpuScan()
-    : reduce_(scanProgram("scan reduce", 0)), top_(scanProgram("scan top", 1)), spread_(scanProgram("scan spread", 2))
+    : reduce_(scanProgram("scan reduce", ScanStep::Reduce)),
+      top_(scanProgram("scan top", ScanStep::Top)),
+      spread_(scanProgram("scan spread", ScanStep::Spread))
 {
 }
 

@@ -1,13 +1,9 @@
 #include "render/culling/LightTiles.h"
 
-#include <string>
-
 #include "core/Error.h"
 #include "render/programs/Locations.h"
 
 namespace manylights {
-
-gl::Defines lightTileDefines() { return {{"LIGHT_TILE_LANES", std::to_string(kLightTileLanes)}}; }
 
 void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int gridWidth, int gridHeight)
 {

@@ -23,12 +23,9 @@ constexpr int tilesAlong(int pixels, int tileSize) { return (pixels + tileSize -
 // lightBatchMaskWords for a batch of that many); of its summary, maskWordsFor(words).
 constexpr std::size_t maskWordsFor(std::size_t lights) { return (lights + 31) / 32; }
 
-// LIGHT_TILE_LANES (its rows per band are at shaders/lib/locations.glsl's
-// LIGHT_TILE_ROWS_PER_BAND_LOCATION).
-gl::Defines lightTileDefines();
-
-// Runs `program` for every light of `batch` over a grid of gridWidth x gridHeight tiles: a
-// workgroup per light and band of rows.
+// Runs `program` (compiled with CullingVariant::lightTiles: LIGHT_TILE_LANES; its rows per band
+// are at shaders/lib/locations.glsl's LIGHT_TILE_ROWS_PER_BAND_LOCATION) for every light of `batch` over a grid of
+// gridWidth x gridHeight tiles: a workgroup per light and band of rows.
 void dispatchLightTiles(const gl::Program& program, const LightBatch& batch, int gridWidth, int gridHeight);
 
 }  // namespace manylights

@@ -10,26 +10,15 @@
 
 namespace manylights {
 
-namespace {
-// Uniform locations of shaders/display.frag.
-
-}  // namespace
-
-const gl::Program& DisplayPass::transformProgram(ToneCurve curve, bool srgb, int supersample, bool copy)
+gl::Defines DisplayVariant::toDefines(gl::Defines defines) const
 {
-    auto [found, inserted] = transformPrograms_.try_emplace({curve, srgb, supersample, copy});
-    if (inserted) {
-        gl::Defines defines{{"TONE_CURVE", std::to_string(static_cast<int>(curve))},
-                            {"SUPERSAMPLE", std::to_string(supersample)}};
-        if (srgb)
-            defines.emplace_back("SRGB_ENCODE", "1");
-        if (copy)
-            defines.emplace_back("COPY_OUTPUT", "1");
-        found->second =
-            gl::Program("display transform",
-                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}, defines);
-    }
-    return found->second;
+    defines.emplace_back("TONE_CURVE", std::to_string(static_cast<int>(curve)));
+    defines.emplace_back("SUPERSAMPLE", std::to_string(supersample));
+    if (srgb)
+        defines.emplace_back("SRGB_ENCODE", "1");
+    if (copy)
+        defines.emplace_back("COPY_OUTPUT", "1");
+    return defines;
 }
 
 void DisplayPass::resize(int width, int height)
@@ -65,19 +54,20 @@ void DisplayPass::run(FramePasses& passes, const DisplaySettings& settings, int 
     const PixelRect output{0, 0, width, height};
     PipelineState everyPixel = kEveryPixel;
     everyPixel.viewport = output;
-    passes.run({.name = "display",
-                .framebuffer = antialiased_ ? &transformedAndCopyFramebuffer_ : &transformedFramebuffer_,
-                .state = everyPixel,
-                .sampled = Resource::LitImage},
-               [&] {
-                   const gl::Program& program =
-                       transformProgram(settings.toneCurve, settings.srgb, supersample, antialiased_);
-                   program.set(locations::DISPLAY_EXPOSURE_SCALE_LOCATION, std::exp2(settings.exposure));
-                   lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
-                   emptyVertexArray_.bind();
-                   program.use();
-                   glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
-               });
+    passes.run(
+        {.name = "display",
+         .framebuffer = antialiased_ ? &transformedAndCopyFramebuffer_ : &transformedFramebuffer_,
+         .state = everyPixel,
+         .sampled = Resource::LitImage},
+        [&] {
+            const gl::Program& program = transformPrograms_.variant(
+                {.curve = settings.toneCurve, .srgb = settings.srgb, .supersample = supersample, .copy = antialiased_});
+            program.set(locations::DISPLAY_EXPOSURE_SCALE_LOCATION, std::exp2(settings.exposure));
+            lit.bindUnit(bindings::DISPLAY_SOURCE_UNIT);
+            emptyVertexArray_.bind();
+            program.use();
+            glDrawArrays(GL_TRIANGLES, 0, 3);  // every pixel: shaders/fullscreen.vert's triangle
+        });
     if (!antialiased_)
         return;
     if (!fxaaProgram_) {

@@ -5,8 +5,7 @@
 // lighting, so every technique stays equal to forward before them.
 #pragma once
 
-#include <map>
-#include <tuple>
+#include <compare>
 
 #include "gl/Buffer.h"
 #include "gl/Framebuffer.h"
@@ -14,9 +13,24 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/frame/FramePasses.h"
+#include "render/programs/ProgramVariants.h"
 #include "scene/DisplaySettings.h"
 
 namespace manylights {
+
+// What display.frag's program is compiled for: the tone curve (TONE_CURVE), the sRGB encoding
+// (SRGB_ENCODE), the supersampling it filters down (SUPERSAMPLE), and whether it also writes
+// its picture to the second target, FXAA's output (COPY_OUTPUT).
+struct DisplayVariant {
+    ToneCurve curve{};
+    bool srgb = false;
+    int supersample = 1;
+    bool copy = false;
+
+    auto operator<=>(const DisplayVariant&) const = default;
+
+    gl::Defines toDefines(gl::Defines defines) const;
+};
 
 class DisplayPass {
 public:
@@ -38,11 +52,10 @@ public:
     float logAverageLuminance(const gl::Texture2D& lit, const gl::Texture2D& depth);
 
 private:
-    // `copy`: the variant that also writes its picture to the second target (FXAA's output).
-    const gl::Program& transformProgram(ToneCurve curve, bool srgb, int supersample, bool copy);
     void resize(int width, int height);
 
-    std::map<std::tuple<ToneCurve, bool, int, bool>, gl::Program> transformPrograms_;  // made on first use
+    ProgramVariants<DisplayVariant> transformPrograms_{
+        "display transform", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "display.frag"}}};
     gl::Program fxaaEdgesProgram_;  // made on first use, with fxaaProgram_
     gl::Program fxaaProgram_;
     gl::VertexArray emptyVertexArray_{"display pass"};  // the full-screen triangle needs no attributes

@@ -64,7 +64,8 @@ SsaoSamples makeSsaoSamples()
 }
 
 Ssao::Ssao(GBufferLayout layout)
-    : occlusionProgram_("ssao", {{GL_COMPUTE_SHADER, "ssao.comp"}}, gbufferDefines(layout)),
+    : occlusionProgram_("ssao", {{GL_COMPUTE_SHADER, "ssao.comp"}},
+                        ShaderVariant{.technique = {.gbufferLayout = layout}}.toDefines({})),
       blurProgram_("ssao blur", {{GL_COMPUTE_SHADER, "ssao_blur.comp"}})
 {
     const SsaoSamples samples = makeSsaoSamples();

@@ -19,12 +19,6 @@ constexpr GLuint kEvaluationsBinding = bindings::TRANSPARENT_EVALUATIONS_BUFFER_
 // and make the grid dearer (66-92 ms for 8, 102-105 for 16, 170-175 for 32).
 constexpr int kTransparentGridSlices = kClusterSlices;
 
-gl::Defines everyLightDefines(gl::Defines defines)
-{
-    defines.emplace_back("EVERY_LIGHT", "1");
-    return defines;
-}
-
 // The view depths of a transparent item's world bounds (its box's centre depth ± its extent
 // along the view axis), widened so that rounding cannot put a surface of it outside, and
 // clipped to the view's depth.
@@ -103,13 +97,11 @@ std::vector<glm::vec2> tileDepthRanges(const std::vector<ItemInView>& items, con
 
 }  // namespace
 
-TransparencyPass::TransparencyPass(const TechniqueOptions& options)
-    : options_(options),
-      gridProgram_("transparency", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
-                   clusterGridDefines(shaderDefines(options), {.slices = kTransparentGridSlices})),
-      everyLightProgram_("transparency (every light)",
-                         {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}},
-                         everyLightDefines(shaderDefines(options))),
+TransparencyPass::TransparencyPass(const TechniqueVariant& technique)
+    : technique_(technique),
+      // The grid's shape is every variant's; the every-light variant includes no grid.
+      programs_("transparency", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "transparent.frag"}}, technique,
+                CullingVariant{.grid = ClusterGridShape{.slices = kTransparentGridSlices}}.toDefines()),
       evaluations_("transparent light evaluations", sizeof(std::uint32_t), nullptr,
                    GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT)
 {
@@ -135,25 +127,24 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
     if (!everyLight)
         passes.run(gridPass, [&] {
             if (!grid_)
-                grid_ = std::make_unique<ClusterGrid>(options_.gbufferLayout,
+                grid_ = std::make_unique<ClusterGrid>(technique_.gbufferLayout,
                                                       ClusterGridShape{.slices = kTransparentGridSlices});
             grid_->resize(targets.width, targets.height, batches.front().size());
             grid_->coverDepthRanges(tileDepthRanges(items, frame, grid_->gridWidth(), grid_->gridHeight()));
             if (!gridPerLayer)
                 grid_->assignLights(batches.front());
         });
-    if (options_.countWork) {
+    if (technique_.countWork) {
         const std::uint32_t zero = 0;
         evaluations_.update(0, sizeof zero, &zero);
     }
     // Depth-tested against the opaque surfaces, never written; premultiplied over.
-    const Resource counted = options_.countWork ? Resource::WorkCounts : Resource::None;
+    const Resource counted = technique_.countWork ? Resource::WorkCounts : Resource::None;
     const Pass drawPass{.name = "transparency",
                         .target = Resource::LitImage,
                         .state = {.keepDepth = true, .blend = Blend::PremultipliedOver},
                         .storage = (everyLight ? Resource::None : Resource::LightGrid) | counted,
                         .writes = counted};
-    const LightingProgram& programs = everyLight ? everyLightProgram_ : gridProgram_;
     for (const GpuScene::TransparentLayer& layer : scene.transparentLayersBackToFront()) {
         for (const LightBatch& batch : batches) {
             if (gridPerLayer)
@@ -161,18 +152,20 @@ void TransparencyPass::run(const GpuScene& scene, FrameTargets& targets, FramePa
             passes.run(drawPass, [&] {
                 if (!everyLight)
                     grid_->bind();
-                if (options_.countWork)
+                if (technique_.countWork)
                     evaluations_.bindBase(GL_SHADER_STORAGE_BUFFER, kEvaluationsBinding);
                 scene.drawTransparentLayer(layer, [&](MaterialVariant variant) -> const gl::Program& {
-                    const gl::Program& program =
-                        programs.variant(scene.lightingFeatures(), scene.indexedLightSource(), variant);
+                    const gl::Program& program = programs_.variant(ShaderVariant{.lighting = scene.lightingFeatures(),
+                                                                                 .lights = scene.indexedLightSource(),
+                                                                                 .material = variant,
+                                                                                 .everyLight = everyLight});
                     setLightBatch(program, batch);
                     return program;
                 });
             });
         }
     }
-    if (options_.countWork) {
+    if (technique_.countWork) {
         // The count is read back: the frame's passes are done first.
         passes.finish();
         std::uint32_t count = 0;

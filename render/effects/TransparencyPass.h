@@ -21,9 +21,9 @@
 
 #include "gl/Buffer.h"
 #include "render/culling/ClusterGrid.h"
+#include "render/culling/CullingVariant.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
-#include "render/frame/TechniqueOptions.h"
 #include "render/programs/LightingPrograms.h"
 
 namespace manylights {
@@ -32,8 +32,9 @@ class GpuScene;
 
 class TransparencyPass {
 public:
-    explicit TransparencyPass(const TechniqueOptions& options);
-    const TechniqueOptions& options() const { return options_; }
+    // For the techniques whose programs are made for `technique` (TechniqueOptions::shaders).
+    explicit TransparencyPass(const TechniqueVariant& technique);
+    const TechniqueVariant& technique() const { return technique_; }
 
     // Draws the scene's transparent objects over targets.lit (a no-op without any). `everyLight`:
     // loop over every light (the forward technique's reference) instead of the light grid.
@@ -44,10 +45,9 @@ public:
     std::uint64_t lastLightEvaluations() const { return lastEvaluations_; }
 
 private:
-    TechniqueOptions options_;
+    TechniqueVariant technique_;
     std::unique_ptr<ClusterGrid> grid_;  // made on first use: forward needs none
-    LightingProgram gridProgram_;
-    LightingProgram everyLightProgram_;
+    LightingProgram programs_;           // over the grid, or every light (ShaderVariant::everyLight)
     gl::Buffer evaluations_;
     std::uint64_t lastEvaluations_ = 0;
 };

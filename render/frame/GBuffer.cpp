@@ -24,30 +24,12 @@ std::vector<const gl::Texture2D*> addressesOf(const std::vector<gl::Texture2D>& 
 }
 }  // namespace
 
-std::string_view gbufferLayoutName(GBufferLayout layout) { return layout == GBufferLayout::Seed ? "seed" : "compact"; }
-
-std::optional<GBufferLayout> parseGBufferLayout(std::string_view name)
-{
-    if (name == "seed")
-        return GBufferLayout::Seed;
-    if (name == "compact")
-        return GBufferLayout::Compact;
-    return std::nullopt;
-}
-
-gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines)
-{
-    if (layout == GBufferLayout::Compact)
-        defines.emplace_back("GBUFFER_COMPACT", "1");
-    return defines;
-}
-
 GBuffer::GBuffer(int width, int height, const gl::Texture2D& depthStencil, GBufferLayout layout)
     : layout_(layout),
       targets_(makeTargets(width, height, layout)),
       framebuffer_("gbuffer", addressesOf(targets_), &depthStencil),
       programs_("geometry pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
-                gbufferDefines(layout))
+                TechniqueVariant{.gbufferLayout = layout})
 {
 }
 

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/GBufferLayout.h"
 #include "render/programs/LightingPrograms.h"
 
 namespace manylights {
@@ -27,19 +27,6 @@ struct GBufferTarget {
     int unit;  // the texture unit the lighting passes read it from (shaders/lib/bindings.glsl)
     std::string_view contents;
 };
-
-// Which G-buffer the deferred techniques write and read (--gbuffer). Each shader that touches
-// the G-buffer is compiled for one layout (#define GBUFFER_COMPACT, gbufferDefines).
-enum class GBufferLayout {
-    Seed,     // every quantity as a 32-bit float: exact, 84 bytes per pixel
-    Compact,  // position from depth, octahedral normal, 8-bit colours: 28 bytes per pixel
-};
-inline constexpr GBufferLayout kDefaultGBufferLayout = GBufferLayout::Compact;
-
-std::string_view gbufferLayoutName(GBufferLayout layout);  // "seed" or "compact"
-std::optional<GBufferLayout> parseGBufferLayout(std::string_view name);
-// The shader #defines that select `layout` in shaders/lib/gbuffer*.glsl.
-gl::Defines gbufferDefines(GBufferLayout layout, gl::Defines defines = {});
 
 // Seed layout: every quantity in full 32-bit float precision, exactly as the forward shader
 // sees it: the deferred image then equals forward's to float rounding, not to the G-buffer's

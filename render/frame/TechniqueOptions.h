@@ -1,4 +1,4 @@
-// How a technique's shaders are built (TechniqueOptions) and what a technique reports of a
+// How a technique is made (TechniqueOptions) and what a technique reports of a
 // frame (TechniqueCounter): in frame/, below the rooms that build shaders for a technique
 // (culling's lists, effects' transparency pass) as well as the techniques themselves.
 #pragma once
@@ -7,9 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "gl/Program.h"
 #include "render/driver/DriverProfile.h"
-#include "render/frame/GBuffer.h"
+#include "render/programs/LightingPrograms.h"
 
 namespace manylights {
 
@@ -31,30 +30,18 @@ struct CullingTuning {
     bool operator==(const CullingTuning&) const = default;
 };
 
-// How a technique is made: its shaders' variant and its culling's tuning.
+// How a technique is made: its shaders' variant, its lighting stage and its culling's tuning.
 struct TechniqueOptions {
-    // Shader variants that count the (pixel, light) pairs they evaluate into
-    // FrameTargets::lightEvaluations (--count-work, --view light-count). Costs an atomic per
-    // fragment, so timings taken with it are not the technique's own.
-    bool countWork = false;
-    // The G-buffer the technique's shaders read; must be the layout of the FrameTargets it
-    // renders into (Renderer's).
-    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
-    // Shader variants that look up local lights' shadow maps (LOCAL_SHADOWS). Needed when the
-    // Renderer's ShadowMaps has a local-light budget above 0; without it those lights shade
-    // unshadowed. A separate variant because on llvmpipe the lookup code costs every (pixel,
-    // light) pair even when no light has a map (it runs masked, not skipped): 5x the deferred
-    // lighting pass.
-    bool localShadows = false;
-    // deferred's and clustered's lighting stage (DriverChoices::lightingStage).
+    // What all its programs are made for: whether they count work, the G-buffer they read,
+    // whether they look up local lights' shadows (render/programs/LightingPrograms.h).
+    TechniqueVariant shaders{};
+    // deferred's and clustered's lighting stage (DriverChoices::lightingStage): which shader
+    // files their lighting is compiled from, not a #define.
     LightingStage lightingStage = LightingStage::Fragment;
     CullingTuning culling{};
 
     bool operator==(const TechniqueOptions&) const = default;
 };
-
-// The shader #defines that realise `options`.
-gl::Defines shaderDefines(const TechniqueOptions& options);
 
 // A technique-specific figure of the last frame for --stats (e.g. tiles whose light list
 // overflowed).

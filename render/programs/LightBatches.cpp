@@ -49,12 +49,4 @@ bool lightTexelsSupported(std::size_t lightCount)
     return units > kLightTexelsUnit && lightCount * kTexelsPerLight <= maxTexels;
 }
 
-void addLightTexelsDefines(gl::Defines& defines) { defines.emplace_back("LIGHT_TEXELS", "1"); }
-
-void addLightWindowDefines(gl::Defines& defines)
-{
-    defines.emplace_back("LIGHT_WINDOW_BINDING", std::to_string(kLightWindowBinding));
-    defines.emplace_back("LIGHTS_PER_WINDOW", std::to_string(kLightsPerWindow));
-}
-
 }  // namespace manylights

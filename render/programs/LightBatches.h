@@ -62,8 +62,6 @@ inline constexpr unsigned kLightWindowBinding = bindings::LIGHT_WINDOW_BLOCK_BIN
 bool fitsOneLightWindow(const std::vector<LightBatch>& batches);
 // Whether GL_MAX_UNIFORM_BLOCK_SIZE holds a window.
 bool lightWindowsSupported();
-// LIGHT_WINDOW_BINDING and LIGHTS_PER_WINDOW.
-void addLightWindowDefines(gl::Defines& defines);
 
 // Light texels: the whole light buffer read through a texture buffer, four RGBA32F texels per
 // light (shaders/lib/lights.glsl, built with LIGHT_TEXELS), for passes whose pixels read
@@ -80,7 +78,5 @@ inline constexpr std::size_t kTexelsPerLight = 4;
 // buffer of 4 × `lightCount` texels (GL promises 16 units and 65,536 texels; desktop drivers
 // have 32 and 2^27). Where it has not, those passes read the storage buffer.
 bool lightTexelsSupported(std::size_t lightCount);
-// LIGHT_TEXELS: the shaders read the lights through lightTexels at LIGHT_TEXELS_UNIT.
-void addLightTexelsDefines(gl::Defines& defines);
 
 }  // namespace manylights

@@ -49,9 +49,29 @@ SpecularExponents specularExponentsOf(const std::vector<const Material*>& materi
     return multiplications <= kSpecularMultiplicationBudget ? exponents : SpecularExponents{};
 }
 
-gl::Defines lightingFeatureDefines(const LightingFeatures& variant, gl::Defines defines)
+gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines)
 {
-    const SceneFeatures& features = variant.scene;
+    defines.emplace_back("MATERIAL_VARIANT", std::to_string(variant));
+    return defines;
+}
+
+std::uint32_t lightsPerBatch(LightSource source)
+{
+    return source == LightSource::UniformWindow ? kLightsPerWindow : kLightsPerBatch;
+}
+
+gl::Defines ShaderVariant::toDefines(gl::Defines defines) const
+{
+    if (technique.gbufferLayout == GBufferLayout::Compact)
+        defines.emplace_back("GBUFFER_COMPACT", "1");
+    if (technique.countWork)
+        defines.emplace_back("COUNT_WORK", "1");
+    if (technique.localShadows)
+        defines.emplace_back("LOCAL_SHADOWS", "1");
+    if (technique.markShadowPages)
+        defines.emplace_back("SHADOW_PAGE_MARKING", "1");
+
+    const SceneFeatures& features = lighting.scene;
     if (!features.spotLights)
         defines.emplace_back("NO_SPOT_LIGHTS", "1");
     // A scene without local lights takes either; nothing is evaluated.
@@ -70,53 +90,37 @@ gl::Defines lightingFeatureDefines(const LightingFeatures& variant, gl::Defines 
         defines.emplace_back("NO_METALLIC_ROUGHNESS", "1");
     else if (!features.blinnPhong)
         defines.emplace_back("NO_BLINN_PHONG", "1");
-    if (variant.policy.branchOnReach)
+    if (lighting.policy.branchOnReach)
         defines.emplace_back("BRANCH_ON_REACH", "1");
     if (!features.environment)
         defines.emplace_back("NO_ENVIRONMENT", "1");
-    if (variant.policy.multipliedSpecularPowers && !features.specularExponents.empty()) {
+    if (lighting.policy.multipliedSpecularPowers && !features.specularExponents.empty()) {
         std::string list;
         for (const std::uint16_t exponent : features.specularExponents)
             list += (list.empty() ? "" : ", ") + std::to_string(exponent) + "u";
         defines.emplace_back("SPECULAR_EXPONENT_COUNT", std::to_string(features.specularExponents.size()));
         defines.emplace_back("SPECULAR_EXPONENTS", list);
     }
-    return defines;
-}
 
-gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines)
-{
-    defines.emplace_back("MATERIAL_VARIANT", std::to_string(variant));
-    return defines;
-}
-
-std::uint32_t lightsPerBatch(LightSource source)
-{
-    return source == LightSource::UniformWindow ? kLightsPerWindow : kLightsPerBatch;
-}
-
-gl::Defines ShaderVariant::toDefines(gl::Defines defines) const
-{
-    defines = lightingFeatureDefines(lighting, std::move(defines));
-    if (lights == LightSource::UniformWindow)
-        addLightWindowDefines(defines);
+    if (lights == LightSource::UniformWindow) {
+        defines.emplace_back("LIGHT_WINDOW_BINDING", std::to_string(kLightWindowBinding));
+        defines.emplace_back("LIGHTS_PER_WINDOW", std::to_string(kLightsPerWindow));
+    }
     if (lights == LightSource::TexelBuffer)
-        addLightTexelsDefines(defines);
+        defines.emplace_back("LIGHT_TEXELS", "1");
     if (material)
         defines = materialVariantDefines(*material, std::move(defines));
     if (listTexels)
         defines.emplace_back("CLUSTER_LIST_TEXELS", "1");
     if (globalLightList)
         defines.emplace_back("GLOBAL_LIGHT_LIST", "1");
+    if (depthPrepass)
+        defines.emplace_back("DEPTH_PREPASS", "1");
+    if (everyLight)
+        defines.emplace_back("EVERY_LIGHT", "1");
+    if (maxTileLights > 0)
+        defines.emplace_back("MAX_TILE_LIGHTS", std::to_string(maxTileLights) + "u");
     return defines;
-}
-
-const gl::Program& LightingProgram::variant(const ShaderVariant& key) const
-{
-    auto found = variants_.find(key);
-    if (found == variants_.end())
-        found = variants_.emplace(key, gl::Program(label_, stages_, key.toDefines(defines_))).first;
-    return found->second;
 }
 
 }  // namespace manylights

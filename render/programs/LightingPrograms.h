@@ -7,16 +7,16 @@
 // therefore compiled per LightingFeatures, on first use, with the #defines of
 // shaders/lib/lighting.glsl that leave out what the scene cannot need, and with its few
 // integer shininesses as constants, whose powers are cheaper as multiplications than as pow()
-// (docs/performance.md). A program built without them (gl::Program with shaderDefines alone)
-// handles every scene.
-// The same variants also choose where the lights are read from (LightSource).
+// (docs/performance.md). The general program (LightingFeatures{}) handles every scene.
+// The same variants also choose where the lights are read from (LightSource), and they carry
+// what a technique's programs are all made for (TechniqueVariant): every dimension is one
+// field of one typed key, ShaderVariant, whose one toDefines() gives the program's #defines.
 #pragma once
 
 #include <bit>
 #include <compare>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -24,6 +24,8 @@
 
 #include "gl/Program.h"
 #include "render/driver/DriverProfile.h"
+#include "render/programs/GBufferLayout.h"
+#include "render/programs/ProgramVariants.h"
 #include "scene/Scene.h"
 
 namespace manylights {
@@ -109,12 +111,6 @@ SceneFeatures sceneFeaturesOf(const std::vector<Light>& lights, const std::optio
 // materials (ShadingModel::MetallicRoughness) have no shininess and do not count.
 SpecularExponents specularExponentsOf(const std::vector<const Material*>& materials);
 
-// `defines` plus NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF,
-// NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION, NO_BLINN_PHONG,
-// NO_METALLIC_ROUGHNESS, NO_ENVIRONMENT, and SPECULAR_EXPONENT_COUNT
-// with SPECULAR_EXPONENTS, as `features` allow; BRANCH_ON_REACH as its policy asks.
-gl::Defines lightingFeatureDefines(const LightingFeatures& features, gl::Defines defines);
-
 // Where a lighting program reads the lights (shaders/lib/lights.glsl).
 enum class LightSource : std::uint8_t {
     StorageBuffer,  // the whole light buffer, any light by index
@@ -160,15 +156,41 @@ inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
     return (variant & kAlphaMaskBit) != 0 ? variant & (kAlphaMaskBit | kDiffuseMapBit | kVertexColoursBit) : 0;
 }
 
-// `defines` plus MATERIAL_VARIANT = `variant`.
+// `defines` plus MATERIAL_VARIANT = `variant`: ShaderVariant{.material = variant}'s own, for a
+// depth-only program that takes no other dimension of the key.
 gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines);
 
-// One typed key for what a lighting program varies in from draw to draw and frame to frame
-// (issue 46): the scene's features under the driver's policy, where the lights are read from,
-// the material of a mesh program, and how the light lists are read. LightingProgram caches its
-// programs by it and compiles each from its toDefines(); what a program is made with once (the
-// technique's options, a grid's shape) stays in the program's own defines.
+// What every program of a technique is made for (TechniqueOptions::shaders): the same for all
+// of its draws and frames.
+struct TechniqueVariant {
+    // Count the (pixel, light) pairs evaluated into FrameTargets::lightEvaluations (COUNT_WORK;
+    // --count-work, --view light-count). Costs an atomic per fragment, so timings taken with
+    // it are not the technique's own.
+    bool countWork = false;
+    // The G-buffer the programs read (GBUFFER_COMPACT for the compact layout); must be the
+    // layout of the FrameTargets the technique renders into (Renderer's).
+    GBufferLayout gbufferLayout = kDefaultGBufferLayout;
+    // Look up local lights' shadow maps (LOCAL_SHADOWS). Needed when the Renderer's shadows
+    // have a local-light budget above 0; without it those lights shade unshadowed. A dimension
+    // of its own because on llvmpipe the lookup code costs every (pixel, light) pair even when
+    // no light has a map (it runs masked, not skipped): 5x the deferred lighting pass.
+    bool localShadows = false;
+    // The light lists' walk marks the shadow pages its pairs would read instead of shading
+    // them (SHADOW_PAGE_MARKING: the shadow-page pool's marking pass, render/shadows/ShadowPool.h).
+    bool markShadowPages = false;
+
+    auto operator<=>(const TechniqueVariant&) const = default;
+};
+
+// One typed key for what a lighting program varies in (issue 46): the technique it is made
+// for, the scene's features under the driver's policy, where the lights are read from, the
+// material of a mesh program, how the light lists are read, and the passes that share one
+// shader's files. LightingProgram caches its programs by it and compiles each from its
+// toDefines(); only what never varies for a program (a grid's shape, render/culling/
+// CullingVariant.h) is the program's own defines.
 struct ShaderVariant {
+    // The technique's dimensions: LightingProgram sets them to those it was made for.
+    TechniqueVariant technique{};
     LightingFeatures lighting{};
     LightSource lights = LightSource::StorageBuffer;
     // A mesh program's material (MATERIAL_VARIANT); none for the full-screen and compute passes.
@@ -177,25 +199,45 @@ struct ShaderVariant {
     // readsTexels), and part 0 walking the global list (GLOBAL_LIGHT_LIST, hasGlobalList).
     bool listTexels = false;
     bool globalLightList = false;
+    // forward.frag's depth pre-pass, which evaluates no light (DEPTH_PREPASS).
+    bool depthPrepass = false;
+    // transparent.frag looping over every light, forward's reference, instead of reading the
+    // light grid (EVERY_LIGHT).
+    bool everyLight = false;
+    // tiled_quads.frag's bound on a quad's lights (MAX_TILE_LIGHTS; render/techniques/
+    // TiledQuadsTechnique.h kTileLightBounds); 0 for every other program.
+    std::uint32_t maxTileLights = 0;
 
     auto operator<=>(const ShaderVariant&) const = default;
 
-    // `defines` (the program's own) plus this variant's: lightingFeatureDefines, the light
-    // source's (light windows or texels), MATERIAL_VARIANT, CLUSTER_LIST_TEXELS and
-    // GLOBAL_LIGHT_LIST.
+    // `defines` (the program's own) plus this variant's: the technique's (GBUFFER_COMPACT,
+    // COUNT_WORK, LOCAL_SHADOWS); as the features allow NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF /
+    // ONLY_RANGE_FALLOFF, NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION,
+    // NO_BLINN_PHONG, NO_METALLIC_ROUGHNESS, NO_ENVIRONMENT, and SPECULAR_EXPONENT_COUNT with
+    // SPECULAR_EXPONENTS; BRANCH_ON_REACH as the policy asks; the light source's (light
+    // windows or texels); MATERIAL_VARIANT; CLUSTER_LIST_TEXELS, GLOBAL_LIGHT_LIST,
+    // DEPTH_PREPASS, EVERY_LIGHT and MAX_TILE_LIGHTS.
     gl::Defines toDefines(gl::Defines defines) const;
 };
 
+// The programs of one set of shader files for one technique, cached by ShaderVariant.
 class LightingProgram {
 public:
-    LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, gl::Defines defines)
-        : label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines))
+    // Programs of `stages` for a technique of `technique`, each with `defines` (a grid's shape,
+    // which no draw varies) and its key's.
+    LightingProgram(std::string label, std::vector<gl::ShaderStage> stages, const TechniqueVariant& technique,
+                    gl::Defines defines = {})
+        : technique_(technique), programs_(std::move(label), std::move(stages), std::move(defines))
     {
     }
 
-    // The program of `key`, compiled the first time it is asked for (throws manylights::Error
-    // as gl::Program does).
-    const gl::Program& variant(const ShaderVariant& key) const;
+    // The program of `key` with its technique set to this program's, compiled the first time it
+    // is asked for (throws manylights::Error as gl::Program does).
+    const gl::Program& variant(ShaderVariant key) const
+    {
+        key.technique = technique_;
+        return programs_.variant(key);
+    }
     // The same for the key of these parts.
     const gl::Program& variant(const LightingFeatures& features, LightSource source = LightSource::StorageBuffer,
                                std::optional<MaterialVariant> material = std::nullopt) const
@@ -204,10 +246,8 @@ public:
     }
 
 private:
-    std::string label_;
-    std::vector<gl::ShaderStage> stages_;
-    gl::Defines defines_;
-    mutable std::map<ShaderVariant, gl::Program> variants_;
+    TechniqueVariant technique_;
+    ProgramVariants<ShaderVariant> programs_;
 };
 
 }  // namespace manylights

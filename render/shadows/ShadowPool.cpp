@@ -111,15 +111,16 @@ void ShadowPool::ensureMarking(const TechniqueOptions& options)
 {
     // The marking walks the lists as the lighting does, without counting or looking pages up.
     TechniqueOptions wanted = options;
-    wanted.countWork = false;
-    wanted.localShadows = false;
+    wanted.shaders.countWork = false;
+    wanted.shaders.localShadows = false;
+    wanted.shaders.markShadowPages = true;
     wanted.lightingStage = LightingStage::Compute;
     if (markingOptions_ && *markingOptions_ == wanted)
         return;
-    grid_ = std::make_unique<ClusterGrid>(wanted.gbufferLayout, kClusteredGridShape);
+    grid_ = std::make_unique<ClusterGrid>(wanted.shaders.gbufferLayout, kClusteredGridShape);
     lists_ = std::make_unique<ClusterLists>(kClusteredGridShape, wanted.culling);
-    marking_ = std::make_unique<ListLighting>("shadow page marking", wanted, kClusteredGridShape,
-                                              LightingStage::Compute, ListWalk::MarkShadowPages);
+    marking_ =
+        std::make_unique<ListLighting>("shadow page marking", wanted, kClusteredGridShape, LightingStage::Compute);
     markingOptions_ = wanted;
     markedFor_.reset();
 }
@@ -583,7 +584,7 @@ void ShadowPool::update(const GpuScene& scene, FrameTargets& targets, FramePasse
                             .transformsVersion = scene.transformsVersion(),
                             .lightTime = scene.hasAnimatedLights() ? scene.time() : 0.0,
                             .lightCap = lightCap_,
-                            .gbufferLayout = options.gbufferLayout,
+                            .gbufferLayout = options.shaders.gbufferLayout,
                             .lightCount = scene.lightCount()};
     const std::vector<DrawList::Caster> casters = scene.casters();
     if (rebuildEveryFrame_)

@@ -4,7 +4,7 @@ namespace manylights {
 
 ClusteredTechnique::ClusteredTechnique(const TechniqueOptions& options)
     : Technique(options),
-      grid_(options.gbufferLayout, kClusteredGridShape),
+      grid_(options.shaders.gbufferLayout, kClusteredGridShape),
       lists_(kClusteredGridShape, options.culling),
       lighting_("clustered lighting", options, kClusteredGridShape, options.lightingStage)
 {

@@ -9,11 +9,10 @@ namespace {
 LightingProgram deferredLighting(const TechniqueOptions& options)
 {
     if (options.lightingStage == LightingStage::Compute)
-        return LightingProgram("deferred compute lighting", {{GL_COMPUTE_SHADER, "deferred.comp"}},
-                               shaderDefines(options));
+        return LightingProgram("deferred compute lighting", {{GL_COMPUTE_SHADER, "deferred.comp"}}, options.shaders);
     return LightingProgram("deferred lighting",
                            {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
-                           shaderDefines(options));
+                           options.shaders);
 }
 
 // deferred.comp's workgroup.

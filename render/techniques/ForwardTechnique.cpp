@@ -7,23 +7,9 @@
 
 namespace manylights {
 
-namespace {
-
-gl::Defines depthPrepassDefines(const TechniqueOptions& options)
-{
-    gl::Defines defines = shaderDefines(options);
-    defines.emplace_back("DEPTH_PREPASS", "1");
-    return defines;
-}
-
-}  // namespace
-
 ForwardTechnique::ForwardTechnique(const TechniqueOptions& options)
     : Technique(options),
-      program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
-               shaderDefines(options)),
-      depthPrepass_("forward depth pre-pass", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
-                    depthPrepassDefines(options))
+      program_("forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}}, options.shaders)
 {
 }
 
@@ -42,7 +28,7 @@ void ForwardTechnique::render(const GpuScene& scene, FrameTargets& targets, Fram
         targets.litFramebuffer.clearDepthStencil(1.0f, 0);
         scene.drawObjects([&](MaterialVariant maps) -> const gl::Program& {
             // It evaluates no light: the variants differ only in the material's maps.
-            return depthPrepass_.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
+            return program_.variant(ShaderVariant{.material = maps, .depthPrepass = true});
         });
     });
     // Every fragment walks the same lights in order: as deferred's, a batch's lights come from

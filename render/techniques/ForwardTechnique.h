@@ -15,8 +15,7 @@ public:
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 
 private:
-    LightingProgram program_;
-    LightingProgram depthPrepass_;
+    LightingProgram program_;  // the lighting and, as a variant, the depth pre-pass
 };
 
 }  // namespace manylights

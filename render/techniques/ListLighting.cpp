@@ -8,38 +8,30 @@ namespace manylights {
 
 namespace {
 
-gl::Defines walkDefines(const TechniqueOptions& options, const ClusterGridShape& shape, ListWalk walk)
-{
-    gl::Defines defines = clusterListDefines(clusterGridDefines(shaderDefines(options), shape));
-    if (walk == ListWalk::MarkShadowPages)
-        defines.push_back({"SHADOW_PAGE_MARKING", "1"});
-    return defines;
-}
-
 LightingProgram firstPartProgram(const std::string& label, const TechniqueOptions& options,
-                                 const ClusterGridShape& shape, LightingStage stage, ListWalk walk)
+                                 const ClusterGridShape& shape, LightingStage stage)
 {
-    const gl::Defines defines = walkDefines(options, shape, walk);
+    const gl::Defines defines = CullingVariant{.grid = shape, .lightLists = true}.toDefines();
     if (stage == LightingStage::Compute)
-        return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, defines);
+        return LightingProgram(label, {{GL_COMPUTE_SHADER, "every_tile_lighting.comp"}}, options.shaders, defines);
     return LightingProgram(label, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "clustered.frag"}},
-                           defines);
+                           options.shaders, defines);
 }
 
-LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape, ListWalk walk)
+LightingProgram laterPartsProgram(const TechniqueOptions& options, const ClusterGridShape& shape)
 {
-    return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}},
-                           walkDefines(options, shape, walk));
+    return LightingProgram("long light lists", {{GL_COMPUTE_SHADER, "long_list_lighting.comp"}}, options.shaders,
+                           CullingVariant{.grid = shape, .lightLists = true}.toDefines());
 }
 
 }  // namespace
 
 ListLighting::ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
-                           LightingStage stage, ListWalk walk)
+                           LightingStage stage)
     : stage_(stage),
-      passName_(walk == ListWalk::MarkShadowPages ? "shadow marks" : "lighting"),
-      firstPart_(firstPartProgram(label, options, shape, stage, walk)),
-      laterParts_(laterPartsProgram(options, shape, walk))
+      passName_(options.shaders.markShadowPages ? "shadow marks" : "lighting"),
+      firstPart_(firstPartProgram(label, options, shape, stage)),
+      laterParts_(laterPartsProgram(options, shape))
 {
 }
 

@@ -17,17 +17,14 @@
 
 namespace manylights {
 
-// What the walk of the lists does with each (pixel, light) pair: shades it into the lit
-// image, or marks the shadow page its lookup would read (render/shadows/ShadowPool.h: the
-// programs built with SHADOW_PAGE_MARKING, which store nothing in the lit image).
-enum class ListWalk { Shade, MarkShadowPages };
-
 class ListLighting {
 public:
     // For lists over grids of `shape`, with programs made for `options` (whose lighting stage
-    // is `stage`: tiled lights in compute whatever its options say) to do `walk`.
+    // is `stage`: tiled lights in compute whatever its options say). Options whose variant
+    // marks shadow pages (TechniqueVariant::markShadowPages) make the shadow pool's marking:
+    // each pair marks the page its lookup would read, and nothing is stored in the lit image.
     ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
-                 LightingStage stage, ListWalk walk = ListWalk::Shade);
+                 LightingStage stage);
     // After ClusterLists::build over `grid`. `alsoWrites`: what the walk writes besides the lit
     // image (the shadow pool's marks), for the passes' barriers.
     void run(const GpuScene& scene, const ClusterGrid& grid, const ClusterLists& lists, FramePasses& passes,

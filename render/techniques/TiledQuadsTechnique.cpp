@@ -25,16 +25,6 @@ constexpr GLint kTilesAsPoints = locations::TILES_AS_POINTS_LOCATION;
 constexpr GLuint kTileQuadsBinding = bindings::TILE_QUADS_BUFFER_BINDING;
 constexpr GLuint kTileLightsBinding = bindings::TILE_LIGHTS_BUFFER_BINDING;
 
-LightingProgram makeVariant(const TechniqueOptions& options, std::size_t variant)
-{
-    gl::Defines defines = shaderDefines(options);
-    const std::string bound = std::to_string(kTileLightBounds[variant]);
-    defines.emplace_back("MAX_TILE_LIGHTS", bound + "u");
-    const std::string label = "tiled quads, up to " + bound + " lights";
-    return LightingProgram(label, {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
-                           defines);
-}
-
 // The variant that draws a quad with 0 < `count` ≤ kLightsPerBatch lights.
 std::size_t variantFor(std::uint32_t count)
 {
@@ -47,11 +37,11 @@ std::size_t variantFor(std::uint32_t count)
 TiledQuadsTechnique::TiledQuadsTechnique(const TechniqueOptions& options)
     : Technique(options),
       global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}},
-              shaderDefines(options)),
+              options.shaders),
+      quads_("tiled quads", {{GL_VERTEX_SHADER, "tiled_quads.vert"}, {GL_FRAGMENT_SHADER, "tiled_quads.frag"}},
+             options.shaders),
       culler_(options.culling.cullingThreads.value_or(0))
 {
-    for (std::size_t v = 0; v < kVariants; ++v)
-        variants_.push_back(makeVariant(options, v));
     GLfloat pointSizes[2] = {};
     glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
     largestPoint_ = pointSizes[1];
@@ -119,7 +109,9 @@ void TiledQuadsTechnique::drawTiles(const GpuScene& scene, const FrameTargets& t
         const std::uint32_t tiles = variantFirst_[v + 1] - variantFirst_[v];
         if (tiles == 0)
             continue;
-        const gl::Program& program = variants_[v].variant(scene.lightingFeatures(), scene.indexedLightSource());
+        const gl::Program& program = quads_.variant(ShaderVariant{.lighting = scene.lightingFeatures(),
+                                                                  .lights = scene.indexedLightSource(),
+                                                                  .maxTileLights = kTileLightBounds[v]});
         program.set(kFirstQuad, variantFirst_[v]);
         program.set(kTilesX, lists.tilesX);
         program.set(kTileSize, lists.tileSize);

@@ -54,8 +54,9 @@ private:
     bool drawsTilesAsPoints(const TileLightLists& lists) const;
 
     LightingProgram global_;
-    // One per light-count bucket, each compiled per the scene's kinds of light and light source.
-    std::vector<LightingProgram> variants_;
+    // Compiled per light-count bucket (ShaderVariant::maxTileLights), the scene's kinds of light
+    // and its light source.
+    LightingProgram quads_;
     TileCuller culler_;
     // The quads to draw (tiles with lights), grouped by variant: variant v draws
     // drawOrder_[variantFirst_[v] .. variantFirst_[v + 1]).

@@ -6,7 +6,7 @@ namespace manylights {
 
 TiledTechnique::TiledTechnique(const TechniqueOptions& options)
     : Technique(options),
-      grid_(options.gbufferLayout, kTiledGridShape),
+      grid_(options.shaders.gbufferLayout, kTiledGridShape),
       lists_(kTiledGridShape, options.culling),
       lighting_("tiled lighting", options, kTiledGridShape, LightingStage::Compute)
 {

@@ -14,9 +14,9 @@ constexpr GLint kVolumeShape = 1;
 constexpr GLuint kVolumeLightsBinding = bindings::VOLUME_LIGHTS_BUFFER_BINDING;
 }  // namespace
 
-VolumeDrawer::VolumeDrawer(const gl::Defines& defines)
-    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}}, defines),
-      lighting_("light volumes", {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume.frag"}}, defines),
+VolumeDrawer::VolumeDrawer(const TechniqueVariant& technique)
+    : global_("global terms", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "global.frag"}}, technique),
+      lighting_("light volumes", {{GL_VERTEX_SHADER, "volume.vert"}, {GL_FRAGMENT_SHADER, "volume.frag"}}, technique),
       vertexArray_("light volume meshes")
 {
     const Mesh sphere = makeBoundingSphere();

@@ -18,7 +18,7 @@ enum class VolumeShape : int { Sphere = 0, Cone = 1, FullScreen = 2 };
 
 class VolumeDrawer {
 public:
-    explicit VolumeDrawer(const gl::Defines& defines = {});
+    explicit VolumeDrawer(const TechniqueVariant& technique);
 
     // Picks the programs for the scene's lighting features and rebuilds the per-shape light
     // lists when the scene's lights changed. Once per frame, before the draws below.

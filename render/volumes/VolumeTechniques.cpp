@@ -72,9 +72,7 @@ void VolumesTechnique::render(const GpuScene&, FrameTargets&, FramePasses& passe
 }
 
 StencilTechnique::StencilTechnique(const TechniqueOptions& options)
-    : Technique(options),
-      drawer_(shaderDefines(options)),
-      stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
+    : Technique(options), drawer_(options.shaders), stencilOnly_("stencil volumes", {{GL_VERTEX_SHADER, "volume.vert"}})
 {
 }
 

@@ -21,7 +21,7 @@ namespace manylights {
 // every pixel they should.
 class VolumesTechnique : public Technique {
 public:
-    explicit VolumesTechnique(const TechniqueOptions& options) : Technique(options), drawer_(shaderDefines(options)) {}
+    explicit VolumesTechnique(const TechniqueOptions& options) : Technique(options), drawer_(options.shaders) {}
     std::string_view name() const override { return "volumes"; }
     void render(const GpuScene& scene, FrameTargets& targets, FramePasses& passes) override;
 

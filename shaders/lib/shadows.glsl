@@ -48,7 +48,7 @@ float directionalShadow(vec3 position)
 float localShadow(uint lightIndex, GpuLight light, vec3 position, vec3 normal)
 {
 #ifndef LOCAL_SHADOWS
-    // The variant without local shadows (TechniqueOptions::localShadows): llvmpipe would run
+    // The variant without local shadows (TechniqueVariant::localShadows): llvmpipe would run
     // the lookup below under a lane mask for every (pixel, light) pair even when the uniform
     // says they are off.
     return 1.0;

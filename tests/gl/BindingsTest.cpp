@@ -260,6 +260,12 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
          {ViewMode::Position, ViewMode::Normal, ViewMode::Volumes, ViewMode::Shadow, ViewMode::Ssao})
         renderer.renderFrame("deferred", view);
     renderer.logAverageLuminance();
+    // The seed layout's G-buffer targets are read by the programs made for it (counting work:
+    // the in-range count's program, made anew for the layout, is alive at the end).
+    desc.gbufferLayout = GBufferLayout::Seed;
+    desc.countWork = true;
+    renderer.apply(desc);
+    renderer.renderFrame("deferred", ViewMode::Final);
 
     int programs = 0;
     std::set<std::pair<Kind, std::string>> seen;

@@ -95,9 +95,12 @@ TEST_F(DriverProfileTest, RendererMakesTheProfilesChoices)
     const auto definesName = [](const gl::Defines& defines, const std::string& name) {
         return std::any_of(defines.begin(), defines.end(), [&](const auto& define) { return define.first == name; });
     };
-    EXPECT_TRUE(definesName(lightingFeatureDefines(software.gpuScene().lightingFeatures(), {}), "SPECULAR_EXPONENTS"));
-    EXPECT_FALSE(definesName(lightingFeatureDefines(gpu.gpuScene().lightingFeatures(), {}), "SPECULAR_EXPONENTS"));
-    EXPECT_TRUE(definesName(lightingFeatureDefines(gpu.gpuScene().lightingFeatures(), {}), "BRANCH_ON_REACH"));
+    EXPECT_TRUE(definesName(ShaderVariant{.lighting = software.gpuScene().lightingFeatures()}.toDefines({}),
+                            "SPECULAR_EXPONENTS"));
+    EXPECT_FALSE(
+        definesName(ShaderVariant{.lighting = gpu.gpuScene().lightingFeatures()}.toDefines({}), "SPECULAR_EXPONENTS"));
+    EXPECT_TRUE(
+        definesName(ShaderVariant{.lighting = gpu.gpuScene().lightingFeatures()}.toDefines({}), "BRANCH_ON_REACH"));
     // With light texels, a GPU reads the uniform windows and llvmpipe the texels.
     if (software.gpuScene().indexedLightSource() == LightSource::TexelBuffer) {
         EXPECT_EQ(software.gpuScene().walkedLightSource(), LightSource::TexelBuffer);

@@ -106,7 +106,8 @@ TEST_F(InstancingTest, DefaultSceneIsAFewInstancedDraws)
 
     // The GL draws every instance: every object's triangles and every marker's.
     const LightingProgram programs("geometry pass",
-                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
+                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                                   TechniqueVariant{.gbufferLayout = GBufferLayout::Seed});
     const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {
         return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
     };
@@ -145,7 +146,8 @@ TEST_F(InstancingTest, LightMarkersFollowTheirMovingLights)
     const Scene scene = makeDefaultScene();
     GpuScene gpuScene(scene, expandLights(scene), resolveDriverChoices({.profile = DriverProfile::Auto}));
     const LightingProgram programs("geometry pass",
-                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
+                                   {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                                   TechniqueVariant{.gbufferLayout = GBufferLayout::Seed});
     const auto programFor = [&](MaterialVariant maps) -> const gl::Program& {
         return programs.variant(LightingFeatures{}, LightSource::StorageBuffer, maps);
     };

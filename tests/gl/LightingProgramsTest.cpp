@@ -49,20 +49,26 @@ TEST(LightingFeatures, ComeFromTheKindsOfLightPresent)
     EXPECT_TRUE(mixed.directionalLight);
 }
 
+// The features' defines, without the technique's (the seed layout, which adds none).
+gl::Defines featureDefines(const LightingFeatures& features)
+{
+    return ShaderVariant{.technique = {.gbufferLayout = GBufferLayout::Seed}, .lighting = features}.toDefines({});
+}
+
 TEST(LightingFeatures, DefinesLeaveOutOnlyWhatIsAbsent)
 {
-    const gl::Defines general = lightingFeatureDefines(LightingFeatures{}, {});
+    const gl::Defines general = featureDefines(LightingFeatures{});
     EXPECT_TRUE(general.empty());
 
-    const gl::Defines points = lightingFeatureDefines(
-        {.scene = sceneFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt)}, {});
+    const gl::Defines points =
+        featureDefines({.scene = sceneFeaturesOf({lightOf(LightType::Point, Falloff::Classic)}, std::nullopt)});
     EXPECT_TRUE(hasDefine(points, "NO_SPOT_LIGHTS"));
     EXPECT_TRUE(hasDefine(points, "ONLY_CLASSIC_FALLOFF"));
     EXPECT_FALSE(hasDefine(points, "ONLY_RANGE_FALLOFF"));
     EXPECT_TRUE(hasDefine(points, "NO_DIRECTIONAL_LIGHT"));
 
-    const gl::Defines spots = lightingFeatureDefines(
-        {.scene = sceneFeaturesOf({lightOf(LightType::Spot, Falloff::Range)}, DirectionalLight{})}, {});
+    const gl::Defines spots =
+        featureDefines({.scene = sceneFeaturesOf({lightOf(LightType::Spot, Falloff::Range)}, DirectionalLight{})});
     EXPECT_FALSE(hasDefine(spots, "NO_SPOT_LIGHTS"));
     EXPECT_TRUE(hasDefine(spots, "ONLY_RANGE_FALLOFF"));
     EXPECT_FALSE(hasDefine(spots, "ONLY_CLASSIC_FALLOFF"));
@@ -132,14 +138,14 @@ TEST(LightingFeatures, SpecularExponentsAreTheFewCheapIntegerShininessesOfTheSpe
     EXPECT_EQ(specularExponentsOf({&shiny16, &mapped}), none);
 
     LightingFeatures features;
-    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
+    EXPECT_FALSE(hasDefine(featureDefines(features), "SPECULAR_EXPONENT_COUNT"));
     features.scene.specularExponents = {13, 40};
-    const gl::Defines defines = lightingFeatureDefines(features, {});
+    const gl::Defines defines = featureDefines(features);
     const gl::Defines expected = {{"SPECULAR_EXPONENT_COUNT", "2"}, {"SPECULAR_EXPONENTS", "13u, 40u"}};
     EXPECT_EQ(defines, expected);
     // The same scene under a policy of pow() (the GPU profile's) gets none.
     features.policy.multipliedSpecularPowers = false;
-    EXPECT_FALSE(hasDefine(lightingFeatureDefines(features, {}), "SPECULAR_EXPONENT_COUNT"));
+    EXPECT_FALSE(hasDefine(featureDefines(features), "SPECULAR_EXPONENT_COUNT"));
 }
 
 class LightingProgramTest : public GlContextTest {};
@@ -180,7 +186,7 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
 {
     const LightingProgram program("deferred lighting",
                                   {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred.frag"}},
-                                  shaderDefines({}));
+                                  TechniqueVariant{});
     const LightingFeatures points{
         .scene = {.spotLights = false, .classicFalloff = true, .rangeFalloff = false, .directionalLight = false}};
     const gl::Program& general = program.variant(LightingFeatures{});
@@ -197,10 +203,41 @@ TEST_F(LightingProgramTest, EachFeatureSetCompilesOnceToItsOwnProgram)
     }
 }
 
+TEST(ShaderVariantKey, TheTechniquesDimensionsAreItsDefines)
+{
+    // The seed layout and no counting or local shadows: nothing of the technique's.
+    EXPECT_TRUE(ShaderVariant{.technique = {.gbufferLayout = GBufferLayout::Seed}}.toDefines({}).empty());
+    const gl::Defines technique =
+        ShaderVariant{.technique = {.countWork = true, .gbufferLayout = GBufferLayout::Compact, .localShadows = true}}
+            .toDefines({});
+    const gl::Defines expected = {{"GBUFFER_COMPACT", "1"}, {"COUNT_WORK", "1"}, {"LOCAL_SHADOWS", "1"}};
+    EXPECT_EQ(technique, expected);
+    // The passes that share a shader's files are dimensions of the same key.
+    const gl::Defines passes =
+        ShaderVariant{.technique = {.gbufferLayout = GBufferLayout::Seed}, .depthPrepass = true, .maxTileLights = 64}
+            .toDefines({});
+    const gl::Defines expectedPasses = {{"DEPTH_PREPASS", "1"}, {"MAX_TILE_LIGHTS", "64u"}};
+    EXPECT_EQ(passes, expectedPasses);
+}
+
+TEST_F(LightingProgramTest, AProgramsVariantsAreAllOfTheTechniqueItWasMadeFor)
+{
+    const std::vector<gl::ShaderStage> stages = {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                 {GL_FRAGMENT_SHADER, "deferred.frag"}};
+    const LightingProgram counting("deferred lighting", stages, TechniqueVariant{.countWork = true});
+    const LightingProgram plain("deferred lighting", stages, TechniqueVariant{});
+    // A key's technique is set to the program's: asking for another's gives the same program.
+    const gl::Program& counted = counting.variant(ShaderVariant{});
+    EXPECT_EQ(&counting.variant(ShaderVariant{.technique = {.countWork = false}}), &counted);
+    EXPECT_EQ(&counting.variant(ShaderVariant{.technique = {.countWork = true}}), &counted);
+    EXPECT_NE(plain.variant(ShaderVariant{}).id(), counted.id());
+}
+
 TEST_F(LightingProgramTest, MeshProgramsCompileOncePerSetOfMaterialMaps)
 {
     const LightingProgram program("geometry pass",
-                                  {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}, {});
+                                  {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                                  TechniqueVariant{.gbufferLayout = GBufferLayout::Seed});
     const gl::Program& plain = program.variant(LightingFeatures{}, LightSource::StorageBuffer, MaterialVariant{0});
     const gl::Program& textured = program.variant(LightingFeatures{}, LightSource::StorageBuffer,
                                                   MaterialVariant{kDiffuseMapBit | kSpecularMapBit});

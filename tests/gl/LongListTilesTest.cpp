@@ -16,6 +16,7 @@
 #include "gl/Program.h"
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
+#include "render/culling/CullingVariant.h"
 #include "render/programs/Bindings.h"
 #include "render/scene/GpuFrame.h"
 
@@ -33,7 +34,7 @@ constexpr std::size_t kLongTilesIndex = 15;
 TEST_F(LongListTilesTest, ListsEveryLongTilePastOneRowOfWorkgroups)
 {
     const gl::Program program("long list tiles test", {{GL_COMPUTE_SHADER, "cluster_long_lists.comp"}},
-                              clusterListDefines(clusterGridDefines({}, kClusteredGridShape)));
+                              CullingVariant{.grid = kClusteredGridShape, .lightLists = true}.toDefines());
     constexpr std::uint32_t kWidth = 8192;
     constexpr std::uint32_t kHeight = 4352;
     const std::uint32_t tilesX = kWidth / kClusteredGridShape.tileSize;

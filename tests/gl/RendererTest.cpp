@@ -45,21 +45,21 @@ TEST_F(RendererTest, TechniqueVariantsFollowTheSettingsAndAreMadeOnce)
     Renderer renderer(scene, expandLights(scene), desc);
     Technique& plain = renderer.technique("deferred");
     EXPECT_EQ(plain.name(), "deferred");
-    EXPECT_FALSE(plain.options().countWork);
-    EXPECT_FALSE(plain.options().localShadows);
+    EXPECT_FALSE(plain.options().shaders.countWork);
+    EXPECT_FALSE(plain.options().shaders.localShadows);
     EXPECT_EQ(&renderer.technique("deferred"), &plain);
 
     desc.countWork = true;
     renderer.apply(desc);
     Technique& counting = renderer.technique("deferred");
     EXPECT_NE(&counting, &plain);
-    EXPECT_TRUE(counting.options().countWork);
+    EXPECT_TRUE(counting.options().shaders.countWork);
 
     desc.countWork = false;
     desc.shadowLights = 2;
     renderer.apply(desc);
     Technique& shadowed = renderer.technique("deferred");
-    EXPECT_TRUE(shadowed.options().localShadows);
+    EXPECT_TRUE(shadowed.options().shaders.localShadows);
     EXPECT_EQ(renderer.desc().shadowLights, 2);
 
     // Back to the first settings: the first variant again, not a new one.

@@ -96,7 +96,7 @@ TEST_F(SpecularPower, CompactShininessCodeKeepsEveryIntegerExponentWithinHalf)
 TEST_F(SpecularPower, EachSurfacePicksItsOwnExponent)
 {
     const gl::Defines defines =
-        lightingFeatureDefines(LightingFeatures{.scene = {.specularExponents = {2046, 2047, 2048}}}, {});
+        ShaderVariant{.lighting = {.scene = {.specularExponents = {2046, 2047, 2048}}}}.toDefines({});
     const std::vector<float> picked = runForEach(
         "uint exponent = 2046u + i % 3u;\n"
         "    float x = 0.9995;\n"
