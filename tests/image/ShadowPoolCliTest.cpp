@@ -35,9 +35,18 @@ struct PoolRun {
 // shadowed in a pool of `poolMiB` (0: the default).
 PoolRun renderRoom(const std::filesystem::path& dir, int poolMiB)
 {
-    std::vector<std::string> args{"render",  (dir / "room.json").string(), "-o", (dir / "room.pfm").string(),
-                                  "--size",  "64x64",  "--frames", "3", "--shadow-lights", "all",
-                                  "--stats", (dir / "stats.json").string()};
+    std::vector<std::string> args{"render",
+                                  (dir / "room.json").string(),
+                                  "-o",
+                                  (dir / "room.pfm").string(),
+                                  "--size",
+                                  "64x64",
+                                  "--frames",
+                                  "3",
+                                  "--shadow-lights",
+                                  "all",
+                                  "--stats",
+                                  (dir / "stats.json").string()};
     if (poolMiB != 0) {
         args.push_back("--shadow-pool-mib");
         args.push_back(std::to_string(poolMiB));
