@@ -92,7 +92,7 @@ struct Frame {
     bool covered(int x, int y) const { return glm::length(normalAt(x, y)) > 0.5; }
 };
 
-Frame renderFrame(Renderer& renderer)
+Frame renderViews(Renderer& renderer)
 {
     Frame frame;
     renderer.renderFrame("clustered", ViewMode::Final);
@@ -467,7 +467,7 @@ UmbraResult renderAndCheckUmbrae(const CellSetup& setup, const CellGrid& grid, c
 {
     const Scene scene = cellScene(setup, grid, camera);
     Renderer renderer(scene, expandLights(scene), shadowedDesc(size, size, poolMiB));
-    const Frame frame = renderFrame(renderer);
+    const Frame frame = renderViews(renderer);
     UmbraResult result = checkUmbrae(renderer, frame, setup, grid);
     result.lightsWithFaces = renderer.shadowPool().shadowedLights().size();
     result.levelsLowered = renderer.shadowPool().lastFrame().levelsLowered;
@@ -694,7 +694,7 @@ TEST_F(ShadowPagesTest, ABoxOnTheFloorCastsFromItsBase)
              "transform": {"translate": [0, 0.2, 0]}}]})",
                                    "<contact>", ".");
     Renderer renderer(scene, expandLights(scene), shadowedDesc(64, 64));
-    const Frame frame = renderFrame(renderer);
+    const Frame frame = renderViews(renderer);
     const Box box{{-0.5, 0.0, -0.5}, {0.5, 0.4, 0.5}};
     // A pixel is 2 · 3 · tan 20° / 64 = 0.034 across on the floor: the strip three pixels wide
     // along the base edge's far side.
@@ -797,7 +797,7 @@ RoomResult renderRoom(int poolMiB)
 {
     const Scene scene = parseScene(test::roomSceneJson(test::kRoomOutsideLights), "<room>", ".");
     Renderer renderer(scene, expandLights(scene), shadowedDesc(64, 64, poolMiB));
-    const Frame frame = renderFrame(renderer);
+    const Frame frame = renderViews(renderer);
     RoomResult result{
         .checks = checkAgainstBoxes(renderer, frame, insideLight(renderer), {kRoomOccluder}, {}, nearRoomCrease),
         .pool = renderer.shadowPool().lastFrame(),
