@@ -485,6 +485,7 @@ TEST_F(ShadowPagesTest, UmbraOfASphereUnderAHighPointLight)
     const CellSetup setup;
     const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 64);
     EXPECT_EQ(r.failures, 0);
+    EXPECT_EQ(r.clamped, 0);  // every lit receiver's bias is unclamped: all are checked fully lit
     EXPECT_GT(r.shadowed, 40);
     EXPECT_GT(r.lit, 800);
 }
@@ -513,6 +514,7 @@ TEST_F(ShadowPagesTest, UmbraOfASphereUnderASpotLight)
     const CellSetup setup{.type = LightType::Spot};
     const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 64);
     EXPECT_EQ(r.failures, 0);
+    EXPECT_EQ(r.clamped, 0);  // every lit receiver's bias is unclamped: all are checked fully lit
     EXPECT_GT(r.shadowed, 40);
     EXPECT_GT(r.lit, 500);
 }
