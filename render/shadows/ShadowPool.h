@@ -104,6 +104,23 @@ public:
     std::uint64_t markingsTotal() const { return markingsTotal_; }
     // The lights with faces in the last update, in order.
     std::vector<std::size_t> shadowedLights() const;
+    // A face with pages in the last update, for tests that bound what a lookup may read: its
+    // light (an index into the scene's lights as the renderer orders them), its face (0 for a
+    // spot's one, 0-5 for a cube's) and its resident part (whose level sets the texel size;
+    // outside a part that is not the whole face, the coarse page at level 0 is read).
+    struct ResidentFace {
+        std::size_t light = 0;
+        int face = 0;
+        ShadowFaceRegion region;
+    };
+    std::vector<ResidentFace> residentFaces() const
+    {
+        std::vector<ResidentFace> resident;
+        resident.reserve(faces_.size());
+        for (const auto& [key, face] : faces_)
+            resident.push_back({face.light, face.face, face.region});
+        return resident;
+    }
     // The --stats counters of the last update: shadow_pool_bytes, shadow_pages_capacity,
     // shadow_pages_used, shadow_faces, shadow_lights_with_faces, shadow_faces_drawn,
     // shadow_pages_drawn, shadow_caster_instances, shadow_levels_lowered,
