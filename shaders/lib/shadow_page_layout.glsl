@@ -33,8 +33,11 @@ const float SHADOW_SPOT_FACE_SCALE = 1.05f;
 // The near plane of every face, as a fraction of its far plane (the light's reach). Casters
 // nearer than it still cast: the pages are drawn with depth clamping.
 const float SHADOW_NEAR_FRACTION = 0.001f;
-// Receiver bias (lib/shadow_pages.glsl): texels of the level read, plus texels per unit of the
-// receiver's slope to the light, never more than SHADOW_MAX_BIAS_WORLD world units.
+// Receiver bias (lib/shadow_pages.glsl: shadowPageLookup): the receiver moves along its normal
+// by SHADOW_NORMAL_OFFSET_TEXELS + sin θ texels of the level read, at most
+// SHADOW_MAX_NORMAL_OFFSET_WORLD world units, and its depth towards the light by
+// SHADOW_BIAS_TEXELS texels, at most SHADOW_MAX_BIAS_WORLD: both below half of a 0.4-thick wall.
+const float SHADOW_NORMAL_OFFSET_TEXELS = 1.0f;
+const float SHADOW_MAX_NORMAL_OFFSET_WORLD = 0.15f;
 const float SHADOW_BIAS_TEXELS = 1.0f;
-const float SHADOW_SLOPE_BIAS_TEXELS = 1.0f;
 const float SHADOW_MAX_BIAS_WORLD = 0.1f;

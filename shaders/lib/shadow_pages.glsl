@@ -140,17 +140,29 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
         return 1.0;
     const float coarseResolution = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
     float resolution = fine ? fineOffset.z : coarseResolution;
-    vec2 atlasTexel = fine ? fineTexel + fineOffset.xy : uv * coarseResolution + coarseDepth.xy;
-    // The receiver's depth is pulled towards the light by texels of the level read: one, and one
-    // more per unit of its slope to the light (the tap's 2x2 texels span that much of a tilted
-    // surface's depth), at most SHADOW_MAX_BIAS_WORLD world units (a thin wall still shadows).
+    // Normal offset: the receiver is moved off its surface along its normal by
+    // (SHADOW_NORMAL_OFFSET_TEXELS + sin θ) texels of the level read (θ between its normal and
+    // the light), at most SHADOW_MAX_NORMAL_OFFSET_WORLD. A surface tilted by θ changes depth by
+    // texel · tan θ across the tap's texels; a point δ off it lies δ / cos θ before it along the
+    // light, so δ ≥ texel · sin θ keeps a lit surface from shadowing itself at any tilt, with a
+    // bounded offset where a depth bias alone would grow as tan θ. Half a 0.4-thick wall at
+    // most: no receiver is moved through one.
     float texelWorld = 2.0 * depth * f.tanHalf / resolution;
-    float cosine = clamp(dot(normal, -v) / max(length(v), 1e-20), 0.1, 1.0);
-    float slope = sqrt(1.0 - cosine * cosine) / cosine;
-    float bias = min(texelWorld * (SHADOW_BIAS_TEXELS + SHADOW_SLOPE_BIAS_TEXELS * slope), SHADOW_MAX_BIAS_WORLD);
+    float cosine = clamp(dot(normal, -v) / max(length(v), 1e-20), 0.0, 1.0);
+    float offset = min(texelWorld * (SHADOW_NORMAL_OFFSET_TEXELS + sqrt(1.0 - cosine * cosine)),
+                       SHADOW_MAX_NORMAL_OFFSET_WORLD);
+    vec3 w = position + normal * offset - light.positionRadius.xyz;
+    // The same face and level as the receiver itself; the texel kept inside what was drawn.
+    float offsetDepth = max(dot(f.axis, w), 1e-20);
+    vec2 offsetUv = shadowFaceUv(f, w, offsetDepth);
+    vec2 atlasTexel = fine ? clamp(offsetUv * fineOffset.z, region.xy, region.zw) + fineOffset.xy
+                           : clamp(offsetUv * coarseResolution, vec2(0.0), vec2(coarseResolution)) + coarseDepth.xy;
+    // And its depth pulled towards the light by SHADOW_BIAS_TEXELS texels, at most
+    // SHADOW_MAX_BIAS_WORLD world units (a light 0.1 outside a 0.4-thick wall still shadowed).
+    float bias = min(texelWorld * SHADOW_BIAS_TEXELS, SHADOW_MAX_BIAS_WORLD);
     float near = coarseDepth.z;
     float far = coarseDepth.w;
-    float biased = clamp(depth - bias, near, far);
+    float biased = clamp(offsetDepth - bias, near, far);
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
     float reference = (far + near) / (far - near) * 0.5 + 0.5 - far * near / ((far - near) * biased);
     return texture(shadowAtlas, vec3(atlasTexel * atlasTexelSize, reference));

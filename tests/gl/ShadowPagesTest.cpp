@@ -173,24 +173,28 @@ private:
     std::map<std::size_t, ShadowFaceRegion> faces_;
 };
 
-// Whether the receiver bias the lookup uses (shaders/lib/shadow_pages.glsl: min(a texel of the
-// level read, plus a texel per unit of the receiver's slope to the light, SHADOW_MAX_BIAS_WORLD),
-// the cosine raised to 0.1) may fall short of what the tap needs on a lit receiver. The tap's
-// texel centres lie up to √2 texels from the receiver's place, where its own surface is nearer
-// the light by up to √2 · texel · slope. The bias clears that unless it is clamped (0.1 world
-// units on a coarse level and a tilted receiver) or the slope is above 1 / (√2 − 1) = 2.4;
-// there the tap may read the receiver's own surface as a shadow, and the receiver is checked to
-// get no more than the light gives and no less than the ambient term, not to be fully lit.
+// Whether the receiver offset and bias the lookup uses (shaders/lib/shadow_pages.glsl:
+// shadowPageLookup) may fall short of what the tap needs on a lit receiver tilted by θ to the
+// light. The tap's texel centres lie up to √2 texels (t) from the receiver's place, where its own
+// surface is nearer the light by up to √2 · t · tan θ. The receiver moves
+// δ = min(t · (1 + sin θ), SHADOW_MAX_NORMAL_OFFSET_WORLD) along its normal, which puts it
+// δ / cos θ before its surface along the light, and its depth is pulled by
+// b = min(t, SHADOW_MAX_BIAS_WORLD): unclamped, δ / cos θ + b ≥ √2 · t · tan θ at every θ
+// (1 + cos θ ≥ (√2 − 1) sin θ), so only where a clamp cuts them (coarse texels on a tilted
+// receiver) may the tap read the receiver's own surface as a shadow; such a receiver is checked
+// to get no more than the light gives and no less than the ambient term, not to be fully lit.
 bool biasIsClamped(const FaceTexels::Lookup& lookup, const glm::dvec3& normal, const glm::dvec3& v)
 {
     const double cosine = glm::dot(normal, -v) / glm::length(v);
-    if (cosine < 0.1)
+    if (cosine < 1e-3)
         return true;
-    const double slope = std::sqrt(1.0 - std::min(cosine * cosine, 1.0)) / cosine;
+    const double sine = std::sqrt(1.0 - std::min(cosine * cosine, 1.0));
+    const double texel = lookup.texelWorld;
+    const double offset = std::min(texel * (shadowpages::SHADOW_NORMAL_OFFSET_TEXELS + sine),
+                                   static_cast<double>(shadowpages::SHADOW_MAX_NORMAL_OFFSET_WORLD));
     const double bias =
-        std::min(lookup.texelWorld * (shadowpages::SHADOW_BIAS_TEXELS + shadowpages::SHADOW_SLOPE_BIAS_TEXELS * slope),
-                 static_cast<double>(shadowpages::SHADOW_MAX_BIAS_WORLD));
-    return bias < std::numbers::sqrt2 * lookup.texelWorld * slope;
+        std::min(texel * shadowpages::SHADOW_BIAS_TEXELS, static_cast<double>(shadowpages::SHADOW_MAX_BIAS_WORLD));
+    return offset / cosine + bias < std::numbers::sqrt2 * texel * sine / cosine;
 }
 
 // docs/lighting.md for a Blinn-Phong surface of diffuse kd and no specular colour, lit by
@@ -496,12 +500,12 @@ TEST_F(ShadowPagesTest, UmbraOfASphereUnderALowPointLight)
     // reaches 2.29 on the floor (range 2.5), so its lit disc reaches past the −Y face's edge
     // (1 from the centre) onto the four side faces.
     const CellSetup setup{.lightHeight = 1.0, .sphereHeight = 0.5, .sphereRadius = 0.25, .range = 2.5};
-    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 5.0f, 55.0f), 160);
+    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 5.0f, 55.0f), 64);
     EXPECT_EQ(r.failures, 0);
-    // At 160x160 the faces' levels keep every lit receiver's bias unclamped (slopes up to 2.29),
-    // so the whole lit disc, on the side faces too, is checked fully lit. (At 64x64 the side
-    // faces get level 2, whose texels at the floor's slope there need more than the 0.1 clamp:
-    // the floor beyond about 1.1 from the centre reads about 6% of the light as shadow.)
+    // The side faces get level 2 at 64x64, texels of about 0.07 on the floor at slopes up to
+    // 2.29: the normal offset stays unclamped there, so the whole lit disc, on the side faces
+    // too, is checked fully lit. (A depth bias alone, clamped at 0.1, left the floor beyond
+    // about 1.1 from the centre reading about 6% of the light as shadow.)
     EXPECT_EQ(r.clamped, 0);
     EXPECT_GT(r.shadowed, 40);
     EXPECT_GT(r.lit, 800);
