@@ -97,6 +97,11 @@ public:
         Bounds worldBounds;
     };
     std::vector<Caster> casters() const;
+    // The triangles one instance of a batch's mesh draws.
+    std::size_t batchTriangles(std::size_t batch) const
+    {
+        return static_cast<std::size_t>(draws_[batches_[batch].firstItem].range.indexCount) / 3;
+    }
     // Instances of one batch's mesh whose (item, face part) pairs are `count` from `first` of
     // the pairs buffer shaders/shadow_page.vert reads, its base set at `baseLocation`.
     struct CasterRun {

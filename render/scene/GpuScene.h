@@ -81,6 +81,7 @@ public:
     }
     // The shadow casters and their draws into the shadow pages (DrawList::casters, drawCasterRuns).
     std::vector<DrawList::Caster> casters() const { return draws_.casters(); }
+    std::size_t batchTriangles(std::size_t batch) const { return draws_.batchTriangles(batch); }
     void drawCasterRuns(const DrawList::MeshProgramFor& programFor, const std::vector<DrawList::CasterRun>& runs,
                         GLint baseLocation) const
     {

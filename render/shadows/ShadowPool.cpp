@@ -115,6 +115,10 @@ void ShadowPool::ensureMarking(const TechniqueOptions& options)
     wanted.shaders.localShadows = false;
     wanted.shaders.markShadowPages = true;
     wanted.lightingStage = LightingStage::Compute;
+    // Its lists always sort their pairs (never bit masks, which the technique's lists use below
+    // kMaskedListLights): one sequence of GL calls at every light count, so that the shadow
+    // work's calls do not change with it (shadow_gl_calls).
+    wanted.culling.maskedListLights = 0;
     if (markingOptions_ && *markingOptions_ == wanted)
         return;
     grid_ = std::make_unique<ClusterGrid>(wanted.shaders.gbufferLayout, kClusteredGridShape);
@@ -520,15 +524,23 @@ void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std
         if (pairsOfBatch[batch].empty())
             continue;
         runs.push_back({batch, pairs.size(), pairsOfBatch[batch].size()});
+        frame_.casterTriangles += pairsOfBatch[batch].size() * scene.batchTriangles(batch);
         pairs.insert(pairs.end(), pairsOfBatch[batch].begin(), pairsOfBatch[batch].end());
     }
     frame_.casterInstances = pairs.size();
 
     const PixelRect whole{0, 0, atlas_.width(), atlas_.height()};
+    // Where most of the pool is drawn again (the first frame, --rebuild-shadows, everything
+    // moved), one clear of the whole atlas costs less than a quad per part.
+    const bool clearWhole = frame_.pagesDrawn * 2 > allocator_->capacityPages();
     passes.run({.name = "shadow clears",
                 .framebuffer = &atlasFramebuffer_,
                 .state = {.depthTest = DepthTest::Off, .maskColour = true, .viewport = whole}},
                [&] {
+                   if (clearWhole) {
+                       atlasFramebuffer_.clearDepth(1.0f);
+                       return;
+                   }
                    if (!clearProgram_)
                        clearProgram_ =
                            gl::Program("shadow page clear", {{GL_VERTEX_SHADER, "shadow_page_clear.vert"},
@@ -597,7 +609,9 @@ void ShadowPool::update(const GpuScene& scene, FrameTargets& targets, FramePasse
     noteMovedCasters(casters);
     if (!tablesCurrent_)
         writeTables(scene.lightCount());
+    const std::uint64_t callsBeforeDrawing = gl::callTally();
     drawFaces(scene, passes, casters);
+    frame_.glCallsDrawing = gl::callTally() - callsBeforeDrawing;
     frame_.faces = faces_.size();
     frame_.shadowedLights = shadowedLights().size();
     for (const auto& [key, face] : faces_)
@@ -642,10 +656,12 @@ std::vector<TechniqueCounter> ShadowPool::counters() const
             {"shadow_faces_drawn", number(frame_.facesDrawn)},
             {"shadow_pages_drawn", number(frame_.pagesDrawn)},
             {"shadow_caster_instances", number(frame_.casterInstances)},
+            {"shadow_caster_triangles", number(frame_.casterTriangles)},
             {"shadow_levels_lowered", number(frame_.levelsLowered)},
             {"shadow_faces_dropped", number(frame_.facesDropped)},
             {"shadow_marked", frame_.marked ? 1.0 : 0.0},
-            {"shadow_gl_calls", number(frame_.glCalls)}};
+            {"shadow_gl_calls", number(frame_.glCalls)},
+            {"shadow_gl_calls_drawing", number(frame_.glCallsDrawing)}};
 }
 
 }  // namespace manylights

@@ -67,10 +67,12 @@ struct ShadowPoolFrame {
     std::size_t tablePages = 0;      // pages' worth of the pool the page tables take
     std::size_t facesDrawn = 0;      // faces (parts and coarse pages) drawn this frame
     std::size_t pagesDrawn = 0;
-    std::size_t casterInstances = 0;  // (caster, face part) pairs drawn
-    std::size_t levelsLowered = 0;    // levels the pool's shortage took from faces
-    std::size_t facesDropped = 0;     // faces left without pages: the pool cannot hold even one each
-    std::uint64_t glCalls = 0;        // GL calls of the update (gl/CallTally.h)
+    std::size_t casterInstances = 0;   // (caster, face part) pairs drawn
+    std::size_t casterTriangles = 0;   // the triangles they drew
+    std::size_t levelsLowered = 0;     // levels the pool's shortage took from faces
+    std::size_t facesDropped = 0;      // faces left without pages: the pool cannot hold even one each
+    std::uint64_t glCalls = 0;         // GL calls of the update (gl/CallTally.h)
+    std::uint64_t glCallsDrawing = 0;  // of them, the clears' and the casters' (drawFaces)
 };
 
 class ShadowPool {
@@ -123,8 +125,8 @@ public:
     }
     // The --stats counters of the last update: shadow_pool_bytes, shadow_pages_capacity,
     // shadow_pages_used, shadow_faces, shadow_lights_with_faces, shadow_faces_drawn,
-    // shadow_pages_drawn, shadow_caster_instances, shadow_levels_lowered,
-    // shadow_faces_dropped, shadow_marked, shadow_gl_calls.
+    // shadow_pages_drawn, shadow_caster_instances, shadow_caster_triangles, shadow_levels_lowered,
+    // shadow_faces_dropped, shadow_marked, shadow_gl_calls and shadow_gl_calls_drawing.
     std::vector<TechniqueCounter> counters() const;
 
 private:
