@@ -32,4 +32,5 @@ scripts/lib/bench.py --frames 1 --quiet-rounds \
   --column "faces=stat.shadow_faces" --column "lights with faces=stat.shadow_lights_with_faces" \
   --column "pages=stat.shadow_pages_used" --column "levels lowered=stat.shadow_levels_lowered" \
   --column "faces dropped=stat.shadow_faces_dropped" --column "shadow GL calls=stat.shadow_gl_calls" \
-  --column "shadow passes=shadow*" "${cases[@]}"
+  --column "caster triangles=stat.shadow_caster_triangles" --column "shadow marks" --column "shadow clears" \
+  --column "shadow pages" "${cases[@]}"

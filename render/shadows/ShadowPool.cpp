@@ -425,24 +425,19 @@ void ShadowPool::writeTables(std::size_t lightCount)
         }
         GpuShadowFace& record = faces[firstOfLight + static_cast<std::size_t>(face.face)];
         const float resolution = static_cast<float>(shadowFaceResolution(face.region.level));
-        const float texels = static_cast<float>(face.region.pages * SHADOW_PAGE_TEXELS);
         const glm::vec2 origin(static_cast<float>(face.region.x0), static_cast<float>(face.region.y0));
         const glm::vec2 atlasOrigin(static_cast<float>(face.fine->x * SHADOW_PAGE_TEXELS),
                                     static_cast<float>(face.fine->y * SHADOW_PAGE_TEXELS));
         const auto guard = static_cast<float>(SHADOW_GUARD_TEXELS);
-        record.fine = glm::vec4(atlasOrigin - origin, resolution, 1.0f);
-        record.region = glm::vec4(origin + guard, origin + texels - guard);
-        glm::vec2 coarse(-1.0f);
-        if (face.coarse)
-            coarse = glm::vec2(static_cast<float>(face.coarse->x * SHADOW_PAGE_TEXELS),
-                               static_cast<float>(face.coarse->y * SHADOW_PAGE_TEXELS)) +
-                     guard;
-        record.coarseDepth = glm::vec4(coarse, face.near, face.far);
+        const float coarsePage =
+            face.coarse ? static_cast<float>(face.coarse->y * allocator_->pagesAcross() + face.coarse->x) : -1.0f;
+        record.part = glm::vec4(atlasOrigin - origin, resolution, coarsePage);
+        record.region = glm::vec4(origin + guard,
+                                  static_cast<float>(face.region.pages * SHADOW_PAGE_TEXELS) - 2.0f * guard, face.far);
     }
     for (const GpuShadowFace& record : faces) {
-        table.push_back(record.fine);
+        table.push_back(record.part);
         table.push_back(record.region);
-        table.push_back(record.coarseDepth);
     }
     // Whole rows; the texture grows, and is rewritten whole, when the tables change.
     const std::size_t rows = std::max<std::size_t>((table.size() + SHADOW_TABLE_WIDTH - 1) / SHADOW_TABLE_WIDTH, 1);

@@ -49,14 +49,13 @@
 
 namespace manylights {
 
-// A face's record in the page tables (shaders/lib/shadow_pages.glsl: shadowTables), three
+// A face's record in the page tables (shaders/lib/shadow_pages.glsl: shadowTables), two
 // RGBA32F texels.
 struct GpuShadowFace {
-    glm::vec4 fine{0.0f};
+    glm::vec4 part{0.0f, 0.0f, 0.0f, -1.0f};
     glm::vec4 region{0.0f};
-    glm::vec4 coarseDepth{-1.0f, -1.0f, 0.0f, 0.0f};
 };
-static_assert(sizeof(GpuShadowFace) == 48);
+static_assert(sizeof(GpuShadowFace) == 32);
 
 // What the pool did in its last update (--stats: ShadowPool::counters).
 struct ShadowPoolFrame {

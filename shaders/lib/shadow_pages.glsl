@@ -97,12 +97,12 @@ void markShadowPages(uint lightIndex, GpuLight light, vec3 position)
 // lanes at once where it loads a storage buffer lane by lane, and a 2D texture holds the
 // tables of any light count within GL 4.5's least texture size. Texel i / 4, component i % 4:
 // light i's first face record, or −1 where it has none (record numbers are whole floats, exact
-// below 2^24). From texel `facesBase` on, each face's record in three texels:
-// - fine: xy: atlas texel minus face texel of its resident part; z: the face's resolution R;
-//   w: 1 where the part is there;
-// - region: the face texels the tap may read in the part: x0, y0, x1, y1;
-// - coarse and depth: xy: atlas texel minus face texel of the coarse page (x < 0: none);
-//   z: near; w: far.
+// below 2^24). From texel `facesBase` on, each face's record in two texels:
+// - xy: atlas texel minus face texel of its resident part; z: the face's resolution R (0: the
+//   face has no part, no receiver asked for it); w: the atlas page of its coarse page
+//   (row · pages across + column), −1 where it has none;
+// - xy: the first face texel the tap may read in the part; z: how many texels on from there
+//   it may; w: the face's far plane (its near plane is SHADOW_NEAR_FRACTION of it).
 layout(binding = SHADOW_TABLES_UNIT) uniform sampler2D shadowTables;
 
 vec4 shadowTableTexel(int texel)
@@ -127,19 +127,18 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
         return 1.0;
     vec3 v = position - light.positionRadius.xyz;
     ShadowFaceFrame f = shadowFaceFrame(light, v);
-    int record = facesBase + 3 * (int(first) + int(f.face));
-    vec4 fineOffset = shadowTableTexel(record);
+    int record = facesBase + 2 * (int(first) + int(f.face));
+    vec4 part = shadowTableTexel(record);
     vec4 region = shadowTableTexel(record + 1);
-    vec4 coarseDepth = shadowTableTexel(record + 2);
     float depth = dot(f.axis, v);
     vec2 uv = shadowFaceUv(f, v, depth);
-    vec2 fineTexel = uv * fineOffset.z;
-    bool fine = fineOffset.w != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) &&
-                all(lessThanEqual(fineTexel, region.zw));
-    if (!fine && coarseDepth.x < 0.0)
+    vec2 fineTexel = uv * part.z;
+    vec2 regionEnd = region.xy + region.z;
+    bool fine = part.z != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) && all(lessThanEqual(fineTexel, regionEnd));
+    if (!fine && part.w < 0.0)
         return 1.0;
     const float coarseResolution = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
-    float resolution = fine ? fineOffset.z : coarseResolution;
+    float resolution = fine ? part.z : coarseResolution;
     // Normal offset: the receiver is moved off its surface along its normal by
     // (SHADOW_NORMAL_OFFSET_TEXELS + sin θ) texels of the level read (θ between its normal and
     // the light), at most SHADOW_MAX_NORMAL_OFFSET_WORLD. A surface tilted by θ changes depth by
@@ -155,13 +154,16 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
     // The same face and level as the receiver itself; the texel kept inside what was drawn.
     float offsetDepth = max(dot(f.axis, w), 1e-20);
     vec2 offsetUv = shadowFaceUv(f, w, offsetDepth);
-    vec2 atlasTexel = fine ? clamp(offsetUv * fineOffset.z, region.xy, region.zw) + fineOffset.xy
-                           : clamp(offsetUv * coarseResolution, vec2(0.0), vec2(coarseResolution)) + coarseDepth.xy;
+    float pagesAcross = round(1.0 / (atlasTexelSize.x * float(SHADOW_PAGE_TEXELS)));
+    vec2 coarseOrigin = (vec2(mod(part.w, pagesAcross), floor(part.w / pagesAcross)) * float(SHADOW_PAGE_TEXELS)) +
+                        float(SHADOW_GUARD_TEXELS);
+    vec2 atlasTexel = fine ? clamp(offsetUv * part.z, region.xy, regionEnd) + part.xy
+                           : clamp(offsetUv * coarseResolution, vec2(0.0), vec2(coarseResolution)) + coarseOrigin;
     // And its depth pulled towards the light by SHADOW_BIAS_TEXELS texels, at most
     // SHADOW_MAX_BIAS_WORLD world units (a light 0.1 outside a 0.4-thick wall still shadowed).
     float bias = min(texelWorld * SHADOW_BIAS_TEXELS, SHADOW_MAX_BIAS_WORLD);
-    float near = coarseDepth.z;
-    float far = coarseDepth.w;
+    float far = region.w;
+    float near = SHADOW_NEAR_FRACTION * far;
     float biased = clamp(offsetDepth - bias, near, far);
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
     float reference = (far + near) / (far - near) * 0.5 + 0.5 - far * near / ((far - near) * biased);
