@@ -2,7 +2,8 @@
 # The measurements on a hardware GPU (issues 30 and 40), as one markdown report naming the
 # device, the driver and the GPU's clocks: the GL, image and unit tests on it, the light sweep at
 # 1920x1080 (1,024 to 1,048,576 lights, every technique within a frame budget), the courtyard
-# table of docs/performance.md (1280x720), the light lists from bit masks against sorted ones,
+# table of docs/performance.md (1280x720), every light shadowed through the shadow-page pool
+# (1920x1080: unshadowed, cached, rebuilt), the light lists from bit masks against sorted ones,
 # and the LearnOpenGL comparison (../shared/peer/learnopengl-8.1/compare.sh, headless).
 #
 # It is made for a bare GPU server (no package registry, nothing installable): given a prebuilt
@@ -26,11 +27,12 @@
 #                 kit's build.sh compiles it where its headers are installed, else the section
 #                 says "skipped" (the kit's install-deps.sh is never run)
 # Time boxes in seconds (each cut to what is left of TOTAL_S=300):
-#   TESTS_S=90  SWEEP_S=60  COURTYARD_S=40  LISTS_S=30  LEARNOPENGL_S=90  SETUP_S=30 (each of
+#   TESTS_S=90  SWEEP_S=60  COURTYARD_S=40  SHADOWS_S=40  LISTS_S=30  LEARNOPENGL_S=90  SETUP_S=30 (each of
 #   `manylights devices`, nvidia-smi and the probe render)
 # Settings, for a quicker look:
 #   SWEEP_LIGHTS=1024,4096,16384,65536,262144,1048576  SWEEP_SIZE=1920x1080
 #   COURTYARD_LIGHTS=256,1024,4096,16384,65536  COURTYARD_SIZE=1280x720  LISTS_LIGHTS=1024,4096,16384
+#   SHADOW_LIGHTS=1024,4096,65536 (every light shadowed, at SWEEP_SIZE)
 #   FRAMES=5  BUDGET_MS=250 (a technique's larger light counts are skipped once its median frame
 #   passes this: on an H100 forward takes 2.9 s a frame at 16,384 lights at 1080p)
 #   TEST_SHARDS=$(nproc) (processes for the tests, all suites together)
@@ -39,7 +41,7 @@
 #   against frame, at SWEEP_SIZE; PROFILER_COST_S=30)
 #   REFERENCE_DIR=DIR  forward against llvmpipe's forward: the PFMs scripts/make-llvmpipe-
 #   references.sh made on llvmpipe (REFERENCE_S=40); without it the section is left out
-#   TESTS=1 SWEEP=1 COURTYARD=1 MASKED_LISTS=1 PROFILER_COST=1 LEARNOPENGL=1 (0 skips a section)
+#   TESTS=1 SWEEP=1 COURTYARD=1 SHADOWS=1 MASKED_LISTS=1 PROFILER_COST=1 LEARNOPENGL=1 (0 skips a section)
 # On a lent GPU machine: ../shared/gpu/README.md (make-kit.sh, then ML=build/manylights through
 # .gpu-kit/on-device.sh).
 set -euo pipefail
@@ -61,6 +63,7 @@ sweep_lights=${SWEEP_LIGHTS:-1024,4096,16384,65536,262144,1048576}
 sweep_size=${SWEEP_SIZE:-1920x1080}
 courtyard_lights=${COURTYARD_LIGHTS:-256,1024,4096,16384,65536}
 courtyard_size=${COURTYARD_SIZE:-1280x720}
+shadow_lights=${SHADOW_LIGHTS:-1024,4096,65536}
 lists_lights=${LISTS_LIGHTS:-1024,4096,16384}
 frames=${FRAMES:-5}
 cost_lights=${COST_LIGHTS:-16384,1048576}
@@ -446,6 +449,30 @@ if [ "${COURTYARD:-1}" = 1 ]; then
     say
     run_bench courtyard "$box" -- bench/courtyard.json --lights "$courtyard_lights" --size "$courtyard_size" \
       --frames "$frames" --budget-ms "$budget"
+    end
+  fi
+fi
+
+if [ "${SHADOWS:-1}" = 1 ]; then
+  # Issue 47: every light shadowed through the shadow-page pool (docs/shadows.md, "What it
+  # costs"), the llvmpipe table's three rows at the sweep's size: unshadowed, every light
+  # shadowed with its pages cached (a still scene), and every page marked and drawn each frame.
+  begin "Every light shadowed (the shadow-page pool) at $sweep_size"
+  box=$(box_for SHADOWS_S 40)
+  if [ "$box" = 0 ]; then no_time SHADOWS_S; else
+    say "\`clustered\` on the courtyard at ${shadow_lights//,/, } lights: unshadowed, \`--shadow-lights all\`" \
+        "with cached pages, and with \`--rebuild-shadows\`; the \`shadow*\` passes in bench's table." \
+        "Time box $box s (SHADOWS_S), a third for each."
+    for mode in none cached rebuilt; do
+      case "$mode" in
+        none) extra=() ;;
+        cached) extra=(--shadow-lights all) ;;
+        rebuilt) extra=(--shadow-lights all --rebuild-shadows) ;;
+      esac
+      say; say "Shadows: $mode"; say
+      run_bench "shadows-$mode" $((box / 3)) -- bench/courtyard.json --techniques clustered \
+        --lights "$shadow_lights" --size "$sweep_size" --frames "$frames" "${extra[@]}"
+    done
     end
   fi
 fi
