@@ -865,6 +865,61 @@ TEST_F(ShadowPagesTest, ASmallPoolKeepsTheUmbraOfALowLight)
 }
 
 // ---------------------------------------------------------------------------------------------
+// --view shadow-resolution (docs/shadows.md): the texels per pixel of the level a lookup reads.
+
+TEST_F(ShadowPagesTest, ShadowResolutionViewShowsTheTexelsPerPixelOfTheLevelRead)
+{
+    // One point light `h` above the floor, the camera straight above it, 4 up: every floor
+    // receiver under the light's −Y face lies h along the face's axis (tanHalf 1) and 4 from
+    // the camera, so all of them ask for the same level, the one whose R texels across are no
+    // fewer than the pixels the face spans there, texelsAcross = h · height / (4 tan(fov_y / 2))
+    // (the marking's formula: R ≥ texelsAcross, (R + 2 guard texels) / 16 pages a power of two).
+    // Its receivers each read that level (the face's part holds every receiver that marked it),
+    // so the view's figure there is R / texelsAcross. Lights at 1 and 2 ask for levels 2 and 3
+    // (3.6 and 7.1 pages across, away from a level's edge). Tolerance 1e-4 relative: the shader's
+    // float arithmetic (a quotient, and the log2 and exp2 of the view's mean) against doubles.
+    constexpr int kSize = 128;
+    constexpr float kCameraHeight = 4.0f;
+    constexpr float kFovY = 60.0f;
+    const std::vector<std::pair<double, int>> heightsAndLevels{{1.0, 2}, {2.0, 3}};
+    for (const auto& [lightHeight, expectedLevel] : heightsAndLevels) {
+        const CellSetup setup{.lightHeight = lightHeight, .range = 5.0};
+        Scene scene = cellScene(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, kCameraHeight, kFovY));
+        scene.objects.resize(1);  // the floor alone
+        Renderer renderer(scene, expandLights(scene), shadowedDesc(kSize, kSize));
+        // Any technique's name: the view is drawn by the pool's own walk of its lists.
+        renderer.renderFrame("volumes", ViewMode::ShadowResolution);
+        const Image figure = renderer.readColour();
+        renderer.renderFrame("volumes", ViewMode::Position);
+        const Image position = renderer.readColour();
+
+        const double texelsAcross = lightHeight * kSize / (kCameraHeight * std::tan(glm::radians(kFovY / 2.0)));
+        const double pages = (texelsAcross + 2.0 * shadowpages::SHADOW_GUARD_TEXELS) / shadowpages::SHADOW_PAGE_TEXELS;
+        const int level = static_cast<int>(std::ceil(std::log2(pages)));
+        ASSERT_EQ(level, expectedLevel) << lightHeight;
+        const double want = shadowFaceResolution(level) / texelsAcross;
+        int checked = 0;
+        int failures = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const float* p = position.pixel(x, y);
+                // Under the −Y face, away from its edges (where a neighbour face may be read).
+                if (std::max(std::abs(p[0]), std::abs(p[2])) > 0.9 * lightHeight)
+                    continue;
+                ++checked;
+                const double got = figure.pixel(x, y)[0];
+                if (std::abs(got - want) > 1e-4 * want && ++failures <= 5)
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") under a light " << lightHeight << " up: " << got
+                                  << " texels per pixel, expected " << want;
+            }
+        EXPECT_GT(checked, lightHeight * 400) << lightHeight;
+        EXPECT_EQ(failures, 0) << lightHeight;
+        // Every pixel sees the floor in the light's reach: none is without a figure.
+        EXPECT_GT(*std::min_element(figure.rgb.begin(), figure.rgb.end()), 0.0f) << lightHeight;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Cache counts (issue 47, item 4, beyond tests/gl/ShadowPoolTest.cpp).
 
 TEST_F(ShadowPagesTest, AnObjectMovingInOneLightsReachRedrawsOnlyThatLightsFaces)
