@@ -28,6 +28,18 @@ constexpr EnumNames<ViewMode, 13> kViews = {{
 
 using ColourStops = std::array<std::array<float, 3>, 7>;
 
+// The heat maps' stops: `first`, then blue, cyan, green, yellow, red and white.
+ColourStops heatMapStops(const std::array<float, 3>& first)
+{
+    return {{first,
+             {0.0f, 0.0f, 1.0f},
+             {0.0f, 1.0f, 1.0f},
+             {0.0f, 1.0f, 0.0f},
+             {1.0f, 1.0f, 0.0f},
+             {1.0f, 0.0f, 0.0f},
+             {1.0f, 1.0f, 1.0f}}};
+}
+
 // The colour at `position` (0 to 6) between the stops, linearly.
 void interpolateStops(const ColourStops& stops, float position, float rgb[3])
 {
@@ -51,15 +63,7 @@ const std::vector<std::string>& viewModeNames()
 
 void heatMapColour(float count, float rgb[3])
 {
-    static const ColourStops kStops = {{
-        {0.0f, 0.0f, 0.0f},
-        {0.0f, 0.0f, 1.0f},
-        {0.0f, 1.0f, 1.0f},
-        {0.0f, 1.0f, 0.0f},
-        {1.0f, 1.0f, 0.0f},
-        {1.0f, 0.0f, 0.0f},
-        {1.0f, 1.0f, 1.0f},
-    }};
+    static const ColourStops kStops = heatMapStops({0.0f, 0.0f, 0.0f});
     // Stop k (k ≥ 1) sits at count 4^(k-1): the scale is logarithmic, two bits a stop.
     float position = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;
     position = std::clamp(position, 0.0f, static_cast<float>(kStops.size() - 1));
@@ -68,15 +72,7 @@ void heatMapColour(float count, float rgb[3])
 
 void shadowResolutionColour(float texelsPerPixel, float rgb[3])
 {
-    static const ColourStops kStops = {{
-        {0.6f, 0.0f, 1.0f},
-        {0.0f, 0.0f, 1.0f},
-        {0.0f, 1.0f, 1.0f},
-        {0.0f, 1.0f, 0.0f},
-        {1.0f, 1.0f, 0.0f},
-        {1.0f, 0.0f, 0.0f},
-        {1.0f, 1.0f, 1.0f},
-    }};
+    static const ColourStops kStops = heatMapStops({0.6f, 0.0f, 1.0f});
     if (!(texelsPerPixel > 0.0f)) {
         std::fill_n(rgb, 3, 0.0f);
         return;
