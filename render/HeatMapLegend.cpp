@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "core/Error.h"
 #include "render/Techniques.h"
@@ -17,10 +19,36 @@ constexpr int kGlyphWidth = kLegendGlyphWidth;
 constexpr int kGlyphHeight = kLegendGlyphHeight;
 constexpr int kGlyphAdvance = kLegendGlyphAdvance;
 
-// The heat map's stops (render/Views.h, heatMapColour): stop k ≥ 1 at count 4^(k−1), the last
-// (white) at 1024 and above.
+// A legend's scale: seven stops, evenly spaced on the bar, labelled under it; the colour and
+// the bar's position (0 .. 1) of a value.
 constexpr int kStops = 7;
-constexpr const char* kStopLabels[kStops] = {"0", "1", "4", "16", "64", "256", "1024+"};
+struct LegendScale {
+    const char* labels[kStops];
+    void (*colour)(float value, float rgb[3]);
+    float (*position)(float value);
+    float (*valueAt)(float position);  // the inverse of position, for sampling the bar
+};
+
+// The light-count heat map's (render/Views.h, heatMapColour): stop k ≥ 1 at count 4^(k−1), the
+// last (white) at 1024 and above.
+float countPosition(float count)
+{
+    const float stop = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;
+    return std::clamp(stop, 0.0f, float(kStops - 1)) / float(kStops - 1);
+}
+float countAt(float position) { return std::exp2(2.0f * (position * float(kStops - 1) - 1.0f)); }
+constexpr LegendScale kCountScale{{"0", "1", "4", "16", "64", "256", "1024+"}, heatMapColour, countPosition, countAt};
+
+// The shadow-resolution view's (render/Views.h, shadowResolutionColour): a stop per level,
+// 1/8 to 8 texels per pixel, 1 in the middle.
+float resolutionPosition(float texelsPerPixel)
+{
+    const float stop = texelsPerPixel <= 0.0f ? 0.0f : 3.0f + std::log2(texelsPerPixel);
+    return std::clamp(stop, 0.0f, float(kStops - 1)) / float(kStops - 1);
+}
+float resolutionAt(float position) { return std::exp2(position * float(kStops - 1) - 3.0f); }
+constexpr LegendScale kResolutionScale{
+    {"1/8", "1/4", "1/2", "1", "2", "4", "8"}, shadowResolutionColour, resolutionPosition, resolutionAt};
 
 // The layout in units of the scale (image pixels at scale 1): the title, the bar with the
 // maximum's mark above it and "MAX N" beside it, the stops' labels under it.
@@ -70,12 +98,21 @@ struct Canvas {
 
 int textWidth(const std::string& label) { return static_cast<int>(label.size()) * kGlyphAdvance - 1; }
 
-// The bar's position (0 .. 1) of a count on the heat map's scale.
-float scalePosition(float count)
+// A figure as the legend writes it, in the font's characters (no exponent): two significant
+// digits below 10 (0.31, 5.2), whole from 10 (12, 150); at least 0.01.
+std::string shortNumber(float value)
 {
-    const float stop = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;
-    return std::clamp(stop, 0.0f, float(kStops - 1)) / float(kStops - 1);
+    char text[32];
+    const double shown = std::max(static_cast<double>(value), 0.01);
+    std::snprintf(text, sizeof text, shown >= 10.0 ? "%.0f" : "%.2g", shown);
+    return text;
 }
+
+// The legend in the bottom-left corner: the panel, `title`, the bar of `scale` with its stops'
+// labels, a white mark above the bar at each of `marks`, and `beside` (one or two lines: by the
+// bar, by the labels) to the bar's right.
+void drawLegend(Image& shown, const LegendScale& scale, const std::vector<float>& marks,
+                const std::vector<std::string>& beside, std::string_view title);
 
 }  // namespace
 
@@ -95,6 +132,8 @@ std::array<unsigned char, kLegendGlyphHeight> legendGlyph(char c)
     case '+': return {0, 2, 7, 2, 0};
     case ':': return {0, 2, 0, 2, 0};
     case '\'': return {2, 2, 0, 0, 0};
+    case '/': return {1, 1, 2, 4, 4};
+    case '.': return {0, 0, 0, 0, 2};
     case 'A': return {2, 5, 7, 5, 5};
     case 'B': return {6, 5, 6, 5, 6};
     case 'C': return {3, 4, 4, 4, 3};
@@ -125,7 +164,7 @@ std::array<unsigned char, kLegendGlyphHeight> legendGlyph(char c)
     }
 }
 
-std::string_view legendCharacters() { return "0123456789+:'ABCDEFGHIJKLMNOPQRSTUVWXYZ"; }
+std::string_view legendCharacters() { return "0123456789+:'/.ABCDEFGHIJKLMNOPQRSTUVWXYZ"; }
 
 std::string heatMapLegendTitle(std::string_view technique)
 {
@@ -152,27 +191,27 @@ LegendArea heatMapLegendArea(int width, int height)
     return area;
 }
 
-void drawHeatMapLegend(Image& shown, float maximum, std::string_view title)
+namespace {
+void drawLegend(Image& shown, const LegendScale& scale, const std::vector<float>& marks,
+                const std::vector<std::string>& beside, std::string_view title)
 {
-    ML_ASSERT(static_cast<int>(title.size()) <= kMaxTitleChars);
+    ML_ASSERT(static_cast<int>(title.size()) <= kMaxTitleChars && beside.size() <= 2);
     const LegendArea area = heatMapLegendArea(shown.width, shown.height);
     if (area.isEmpty())
         return;
-    const int scale = std::max(1, shown.height / kRowsPerScale);
-    const Canvas canvas{shown, area.x, area.y, scale};
+    const int pixelsPerUnit = std::max(1, shown.height / kRowsPerScale);
+    const Canvas canvas{shown, area.x, area.y, pixelsPerUnit};
     const float grey[3] = {kPanelGrey, kPanelGrey, kPanelGrey};
     canvas.fill(0, 0, kPanelWidth, kPanelHeight, grey);
 
     canvas.text(kPadding, kPadding, std::string(title));
 
-    // The bar, sampled at each column's centre on the heat map's logarithmic scale.
+    // The bar, sampled at each column's centre on the scale.
     const int barX = kPadding;
     const int barY = kBarY;
     for (int column = 0; column < kBarWidth; ++column) {
-        const float stop = (static_cast<float>(column) + 0.5f) / kBarWidth * float(kStops - 1);
-        const float count = std::exp2(2.0f * (stop - 1.0f));  // the inverse of scalePosition
         float rgb[3];
-        heatMapColour(count, rgb);
+        scale.colour(scale.valueAt((static_cast<float>(column) + 0.5f) / kBarWidth), rgb);
         canvas.fill(barX + column, barY, 1, kBarHeight, rgb);
     }
 
@@ -180,18 +219,52 @@ void drawHeatMapLegend(Image& shown, float maximum, std::string_view title)
     const int labelY = barY + kBarHeight + kLabelGap;
     for (int k = 0; k < kStops; ++k) {
         const int centre = barX + k * (kBarWidth - 1) / (kStops - 1);
-        const std::string label = kStopLabels[k];
+        const std::string label = scale.labels[k];
         const int x = std::clamp(centre - textWidth(label) / 2, kPadding, kPanelWidth - kPadding - textWidth(label));
         canvas.text(x, labelY, label);
     }
 
-    // The frame's maximum: a white mark just above the bar at its place, and "MAX N" beside the bar.
+    // The marks just above the bar at their places, and the lines beside the bar.
     const float white[3] = {1.0f, 1.0f, 1.0f};
-    const int markX = barX + static_cast<int>(std::lround(scalePosition(maximum) * float(kBarWidth - 1)));
-    canvas.fill(markX, kMarkY, 1, kMarkHeight, white);
+    for (const float value : marks) {
+        const int markX = barX + static_cast<int>(std::lround(scale.position(value) * float(kBarWidth - 1)));
+        canvas.fill(markX, kMarkY, 1, kMarkHeight, white);
+    }
+    const int besideX = barX + kBarWidth + 3 * kGlyphAdvance;
+    const int besideY[2] = {barY + (kBarHeight - kGlyphHeight) / 2, labelY};
+    for (std::size_t line = 0; line < beside.size(); ++line) {
+        ML_ASSERT(static_cast<int>(beside[line].size()) <= kMaxLabelChars);
+        canvas.text(besideX, besideY[line], beside[line]);
+    }
+}
+}  // namespace
+
+void drawHeatMapLegend(Image& shown, float maximum, std::string_view title)
+{
+    // The frame's maximum: marked on the bar and written beside it.
     const long long rounded = std::llround(std::min(maximum, 9'999'999.0f));
-    canvas.text(barX + kBarWidth + 3 * kGlyphAdvance, barY + (kBarHeight - kGlyphHeight) / 2,
-                "MAX " + std::to_string(std::max(0LL, rounded)));
+    drawLegend(shown, kCountScale, {maximum}, {"MAX " + std::to_string(std::max(0LL, rounded))}, title);
+}
+
+void drawShadowResolutionLegend(Image& shown, const Image& texelsPerPixel)
+{
+    // The frame's least and greatest figure over the pixels that have one.
+    float least = 0.0f;
+    float greatest = 0.0f;
+    for (std::size_t i = 0; i < texelsPerPixel.rgb.size(); i += 3) {
+        const float value = texelsPerPixel.rgb[i];
+        if (value <= 0.0f)
+            continue;
+        least = least == 0.0f ? value : std::min(least, value);
+        greatest = std::max(greatest, value);
+    }
+    std::vector<float> marks;
+    std::vector<std::string> beside{"NONE"};
+    if (greatest > 0.0f) {
+        marks = {least, greatest};
+        beside = {"MIN " + shortNumber(least), "MAX " + shortNumber(std::min(greatest, 9'999'999.0f))};
+    }
+    drawLegend(shown, kResolutionScale, marks, beside, kShadowResolutionLegendTitle);
 }
 
 void drawLightCountLegend(Image& shown, const Image& counts, std::string_view technique)
@@ -200,6 +273,14 @@ void drawLightCountLegend(Image& shown, const Image& counts, std::string_view te
     for (std::size_t i = 0; i < counts.rgb.size(); i += 3)
         maximum = std::max(maximum, counts.rgb[i]);
     drawHeatMapLegend(shown, maximum, heatMapLegendTitle(technique));
+}
+
+void drawViewLegend(Image& shown, const Image& raw, ViewMode view, std::string_view technique)
+{
+    if (view == ViewMode::LightCount)
+        drawLightCountLegend(shown, raw, technique);
+    else if (view == ViewMode::ShadowResolution)
+        drawShadowResolutionLegend(shown, raw);
 }
 
 }  // namespace manylights

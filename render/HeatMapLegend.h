@@ -1,15 +1,17 @@
-// The light-count view's legend (issue 33, docs/cli.md "Views"): a labelled colour bar drawn
+// The legends of the heat-map views: the light-count view's (issue 33, docs/cli.md "Views") and
+// the shadow-resolution view's (issue 47, docs/shadows.md). A labelled colour bar drawn
 // into the 8-bit image after read-back, as engines' light-complexity views carry one, so that
 // a colour can be read as a count: a title naming what is counted (issue 43: light evaluations
 // per pixel, and which lights the technique evaluates), the heat map's stops (0, 1, 4, ...
 // 1024+) under the bar, the frame's maximum marked on it and written beside it. `render
-// --no-legend` leaves it out; the viewer's light-count view shows it too.
+// --no-legend` leaves it out; the viewer's views show it too.
 #pragma once
 
 #include <array>
 #include <string>
 #include <string_view>
 
+#include "render/Views.h"
 #include "render/output/Image.h"
 
 namespace manylights {
@@ -55,6 +57,21 @@ LegendTitlePlace heatMapLegendTitlePlace(int width, int height);
 // reached `maximum`, under `title` (56 characters at most). Only the pixels of
 // heatMapLegendArea change.
 void drawHeatMapLegend(Image& shown, float maximum, std::string_view title);
+
+// The shadow-resolution view's title (docs/shadows.md: the geometric mean over a pixel's
+// shadowed lights of the texels per pixel their lookups read).
+inline constexpr std::string_view kShadowResolutionLegendTitle = "SHADOW TEXELS PER PIXEL: GEOMETRIC MEAN OF LIGHTS";
+
+// The shadow-resolution view's legend for the frame whose figures (the view's raw image, the
+// texels per pixel in red, 0 where no shadowed light reaches) are `texelsPerPixel`: its colour
+// bar from 1/8 to 8, a stop per level, the frame's least and greatest figure marked on it and
+// written beside it (`MIN 0.5`, `MAX 2.3`; `NONE` where no pixel has one).
+void drawShadowResolutionLegend(Image& shown, const Image& texelsPerPixel);
+
+// The legend of `view`'s frame of raw values `raw` (displayableView's input) for `technique`,
+// where the view has one (hasLegend: light-count's, shadow-resolution's); what `render` and the
+// viewer draw.
+void drawViewLegend(Image& shown, const Image& raw, ViewMode view, std::string_view technique);
 
 // The legend of `technique`'s light-count frame whose counts (the view's raw image, a count
 // per pixel in red) are `counts`: what `render --view light-count` and the viewer draw.

@@ -197,12 +197,17 @@ void Renderer::issueFrame(Technique& technique, ViewMode view)
         targets_->gbuffer.fill(passes);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         targets_->litFramebuffer.clearColour(0, black);
-        const gl::Program& program = gbufferViewProgram(view);
-        passes.run(
-            {.name = "view", .target = Resource::LitImage, .state = kCoveredPixels, .sampled = Resource::GBuffer}, [&] {
-                program.set(0, static_cast<int>(view));
-                drawCoveredPixels(program);
-            });
+        if (view == ViewMode::ShadowResolution) {
+            shadowResolutionView_.draw(gpuScene_, *targets_, passes, techniqueOptions());
+        } else {
+            const gl::Program& program = gbufferViewProgram(view);
+            passes.run(
+                {.name = "view", .target = Resource::LitImage, .state = kCoveredPixels, .sampled = Resource::GBuffer},
+                [&] {
+                    program.set(0, static_cast<int>(view));
+                    drawCoveredPixels(program);
+                });
+        }
     }
     displayed_ = desc_.display && showsFinalImage(view);
     // The identity needs no pass: the lit image is then the picture (and a PNG of it is
@@ -367,6 +372,13 @@ void Renderer::drawVolumeOverlay(FramePasses& passes, bool cornersOnly)
 
 Image Renderer::readColour() const
 {
+    if (lastView_ == ViewMode::ShadowResolution) {
+        // The walk's sums (red: the pairs' log2 figures, green: the pairs) as the figure itself.
+        Image image = readRgb(targets_->lit);
+        for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+            std::fill_n(&image.rgb[i], 3, ShadowResolutionView::texelsPerPixel(image.rgb[i], image.rgb[i + 1]));
+        return image;
+    }
     if (lastView_ != ViewMode::LightCount)
         return readRgb(targets_->lit);
     Image image;

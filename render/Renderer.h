@@ -22,6 +22,7 @@
 #include "render/scene/GpuScene.h"
 #include "render/scene/TextureCache.h"
 #include "render/shadows/ShadowPool.h"
+#include "render/shadows/ShadowResolutionView.h"
 #include "render/techniques/Technique.h"
 #include "render/volumes/VolumeDrawer.h"
 
@@ -125,8 +126,8 @@ public:
 
     // One frame: views Final, LightCount and Volumes run the technique (LightCount needs
     // counting on); the G-buffer views run the geometry pass and show that quantity (the
-    // same for every technique). Waits for the GPU, and renders the frame again where the
-    // technique's storage could not hold it (render/culling/ClusterLists.h).
+    // same for every technique; ShadowResolution's is drawn by ShadowResolutionView). Waits for the GPU, and renders
+    // the frame again where the technique's storage could not hold it (render/culling/ClusterLists.h).
     FrameSample renderFrame(Technique& technique, ViewMode view);
     FrameSample renderFrame(std::string_view techniqueName, ViewMode view)
     {
@@ -156,7 +157,8 @@ public:
     const WorkCounts& lastWorkCounts() const { return workCounts_; }
 
     // The last frame's colour as linear floats, rows top to bottom; for the LightCount view,
-    // the light evaluations of each pixel in all three channels.
+    // the light evaluations of each pixel in all three channels; for the ShadowResolution view,
+    // the shadow texels per pixel (ShadowResolutionView::texelsPerPixel; 0 where none).
     Image readColour() const;
     // Which pixels of the last frame hold a surface.
     std::vector<bool> readCoverage() const;
@@ -228,6 +230,7 @@ private:
     PassProfiler profiler_;
     ShadowMaps shadowMaps_;
     ShadowPool shadowPool_;
+    ShadowResolutionView shadowResolutionView_;  // its walk is made on first use
     DisplayPass displayPass_;
 
     // The debug and counting programs are made on first use: most runs render the final image

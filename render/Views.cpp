@@ -1,6 +1,7 @@
 #include "render/Views.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -9,7 +10,7 @@
 namespace manylights {
 
 namespace {
-constexpr EnumNames<ViewMode, 12> kViews = {{
+constexpr EnumNames<ViewMode, 13> kViews = {{
     {ViewMode::Final, "final"},
     {ViewMode::Position, "position"},
     {ViewMode::Normal, "normal"},
@@ -22,7 +23,32 @@ constexpr EnumNames<ViewMode, 12> kViews = {{
     {ViewMode::VolumeCorners, "volume-corners"},
     {ViewMode::Shadow, "shadow"},
     {ViewMode::Ssao, "ssao"},
+    {ViewMode::ShadowResolution, "shadow-resolution"},
 }};
+
+using ColourStops = std::array<std::array<float, 3>, 7>;
+
+// The heat maps' stops: `first`, then blue, cyan, green, yellow, red and white.
+ColourStops heatMapStops(const std::array<float, 3>& first)
+{
+    return {{first,
+             {0.0f, 0.0f, 1.0f},
+             {0.0f, 1.0f, 1.0f},
+             {0.0f, 1.0f, 0.0f},
+             {1.0f, 1.0f, 0.0f},
+             {1.0f, 0.0f, 0.0f},
+             {1.0f, 1.0f, 1.0f}}};
+}
+
+// The colour at `position` (0 to 6) between the stops, linearly.
+void interpolateStops(const ColourStops& stops, float position, float rgb[3])
+{
+    const auto below = static_cast<std::size_t>(position);
+    const std::size_t above = std::min(below + 1, stops.size() - 1);
+    const float t = position - static_cast<float>(below);
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = stops[below][c] + t * (stops[above][c] - stops[below][c]);
+}
 }  // namespace
 
 std::optional<ViewMode> parseViewMode(std::string_view name) { return parseName(kViews, name); }
@@ -37,23 +63,23 @@ const std::vector<std::string>& viewModeNames()
 
 void heatMapColour(float count, float rgb[3])
 {
-    static const std::array<std::array<float, 3>, 7> kStops = {{
-        {0.0f, 0.0f, 0.0f},
-        {0.0f, 0.0f, 1.0f},
-        {0.0f, 1.0f, 1.0f},
-        {0.0f, 1.0f, 0.0f},
-        {1.0f, 1.0f, 0.0f},
-        {1.0f, 0.0f, 0.0f},
-        {1.0f, 1.0f, 1.0f},
-    }};
+    static const ColourStops kStops = heatMapStops({0.0f, 0.0f, 0.0f});
     // Stop k (k ≥ 1) sits at count 4^(k-1): the scale is logarithmic, two bits a stop.
     float position = count <= 0.0f ? 0.0f : 1.0f + std::log2(count) / 2.0f;
     position = std::clamp(position, 0.0f, static_cast<float>(kStops.size() - 1));
-    const auto below = static_cast<std::size_t>(position);
-    const std::size_t above = std::min(below + 1, kStops.size() - 1);
-    const float t = position - static_cast<float>(below);
-    for (int c = 0; c < 3; ++c)
-        rgb[c] = kStops[below][c] + t * (kStops[above][c] - kStops[below][c]);
+    interpolateStops(kStops, position, rgb);
+}
+
+void shadowResolutionColour(float texelsPerPixel, float rgb[3])
+{
+    static const ColourStops kStops = heatMapStops({0.6f, 0.0f, 1.0f});
+    if (!(texelsPerPixel > 0.0f)) {
+        std::fill_n(rgb, 3, 0.0f);
+        return;
+    }
+    // Stop k sits at 2^(k-3) texels per pixel: a level a stop, 1 in the middle.
+    const float position = std::clamp(3.0f + std::log2(texelsPerPixel), 0.0f, static_cast<float>(kStops.size() - 1));
+    interpolateStops(kStops, position, rgb);
 }
 
 Image displayableView(const Image& raw, ViewMode mode, const std::vector<bool>& covered)
@@ -63,6 +89,9 @@ Image displayableView(const Image& raw, ViewMode mode, const std::vector<bool>& 
     if (mode == ViewMode::LightCount) {
         for (std::size_t i = 0; i < pixels; ++i)
             heatMapColour(raw.rgb[i * 3], &shown.rgb[i * 3]);
+    } else if (mode == ViewMode::ShadowResolution) {
+        for (std::size_t i = 0; i < pixels; ++i)
+            shadowResolutionColour(raw.rgb[i * 3], &shown.rgb[i * 3]);
     } else if (mode == ViewMode::Normal) {
         for (std::size_t i = 0; i < pixels; ++i)
             if (covered[i])

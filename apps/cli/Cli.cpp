@@ -79,8 +79,9 @@ int runCli(int argc, const char* const* argv)
     renderCommand->add_flag("--aovs", render.aovs,
                             "Add the G-buffer quantities (position, normal, ..., ssao) as layers of the EXR output");
     bool noLegend = false;
-    renderCommand->add_flag("--no-legend", noLegend,
-                            "Leave the labelled colour bar out of a light-count view's PNG (for analysis)");
+    renderCommand->add_flag(
+        "--no-legend", noLegend,
+        "Leave the labelled colour bar out of a light-count or shadow-resolution view's PNG (for analysis)");
     renderCommand->add_flag("--count-work", render.countWork,
                             "Count light evaluations and in-range pairs (into --stats; slows the frame)");
 
@@ -151,8 +152,8 @@ int runCli(int argc, const char* const* argv)
         return usageError("--supersample applies to the final, volumes and volume-corners views, not '" + view + "'");
     if (render.aovs && render.view != ViewMode::Final)
         return usageError("--aovs adds the G-buffer views to the final image; it does not combine with --view " + view);
-    if (noLegend && render.view != ViewMode::LightCount)
-        return usageError("--no-legend applies to --view light-count, not '" + view + "'");
+    if (noLegend && !hasLegend(render.view))
+        return usageError("--no-legend applies to --view light-count and shadow-resolution, not '" + view + "'");
     render.legend = !noLegend;
 
     return reportingErrors([&] { runRender(render); }, "rendering " + formatSize(render.size));

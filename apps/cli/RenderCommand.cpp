@@ -120,7 +120,8 @@ const std::vector<AovLayer>& aovLayers()
 
 // The renderer's last frame encoded as the output's format: .pfm and .exr as linear floats (box-filtered
 // down when supersampled), .png through the display pass (the final and volumes views) or as
-// the view's displayable image (the light-count view's with its legend unless --no-legend). --aovs renders each
+// the view's displayable image (the light-count and shadow-resolution views' with their legends unless
+// --no-legend). --aovs renders each
 // G-buffer view after the frame and adds it to the EXR file (the renderer then holds the last view's frame: nothing
 // reads it after).
 std::string encodeLastFrame(Renderer& renderer, Technique& technique, const RenderOptions& options)
@@ -131,8 +132,8 @@ std::string encodeLastFrame(Renderer& renderer, Technique& technique, const Rend
             return encodePng(renderer.readDisplayed());
         const Image raw = renderer.readColour();
         Image shown = displayableView(raw, view, renderer.readCoverage());
-        if (view == ViewMode::LightCount && options.legend)
-            drawLightCountLegend(shown, raw, options.technique);
+        if (options.legend)
+            drawViewLegend(shown, raw, view, options.technique);
         return encodePng(shown);
     }
     Image linear = boxDownsample(renderer.readColour(), options.supersample);

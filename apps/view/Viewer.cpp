@@ -294,7 +294,7 @@ void Viewer::renderScene()
 // The frame into the window: the displayed picture (the display pass's, or the lit image as
 // it is where the settings are the identity: the 8-bit window clamps it exactly as the PNG
 // writer does), or the view's displayable image as `render --view` writes it to PNG (the
-// light-count view's with its legend).
+// light-count and shadow-resolution views' with their legends).
 void Viewer::showImage()
 {
     const int width = renderer_->width();
@@ -309,8 +309,7 @@ void Viewer::showImage()
     }
     const Image raw = renderer_->readColour();
     Image shown = displayableView(raw, view_, renderer_->readCoverage());
-    if (view_ == ViewMode::LightCount)  // with the legend `render` draws into its PNG
-        drawLightCountLegend(shown, raw, effectiveTechnique());
+    drawViewLegend(shown, raw, view_, effectiveTechnique());  // the legend `render` draws into its PNG
     if (displayTexture_.width() != width || displayTexture_.height() != height) {
         displayTexture_ = gl::Texture2D("viewer display", GL_RGBA8, width, height);
         displayFramebuffer_ = gl::Framebuffer("viewer display", {&displayTexture_}, nullptr);

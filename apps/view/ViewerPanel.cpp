@@ -221,7 +221,7 @@ std::string Viewer::widestShadowLightCount() const
 
 std::optional<WindowRect> Viewer::shownLegend() const
 {
-    if (view_ != ViewMode::LightCount)
+    if (!hasLegend(view_))
         return std::nullopt;
     const LegendArea area = heatMapLegendArea(renderer_->width(), renderer_->height());
     if (area.isEmpty())

@@ -70,6 +70,8 @@ gl::Defines ShaderVariant::toDefines(gl::Defines defines) const
         defines.emplace_back("LOCAL_SHADOWS", "1");
     if (technique.markShadowPages)
         defines.emplace_back("SHADOW_PAGE_MARKING", "1");
+    if (technique.showShadowResolution)
+        defines.emplace_back("SHADOW_RESOLUTION_VIEW", "1");
 
     const SceneFeatures& features = lighting.scene;
     if (!features.spotLights)

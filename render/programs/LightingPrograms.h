@@ -178,6 +178,10 @@ struct TechniqueVariant {
     // The light lists' walk marks the shadow pages its pairs would read instead of shading
     // them (SHADOW_PAGE_MARKING: the shadow-page pool's marking pass, render/shadows/ShadowPool.h).
     bool markShadowPages = false;
+    // The light lists' walk adds up, for each pair it would shade, the shadow texels per pixel
+    // of the page its lookup reads instead of shading it (SHADOW_RESOLUTION_VIEW: --view
+    // shadow-resolution, render/shadows/ShadowResolutionView.h).
+    bool showShadowResolution = false;
 
     auto operator<=>(const TechniqueVariant&) const = default;
 };
@@ -211,8 +215,8 @@ struct ShaderVariant {
     auto operator<=>(const ShaderVariant&) const = default;
 
     // `defines` (the program's own) plus this variant's: the technique's (GBUFFER_COMPACT,
-    // COUNT_WORK, LOCAL_SHADOWS); as the features allow NO_SPOT_LIGHTS, ONLY_CLASSIC_FALLOFF /
-    // ONLY_RANGE_FALLOFF, NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION,
+    // COUNT_WORK, LOCAL_SHADOWS, SHADOW_PAGE_MARKING, SHADOW_RESOLUTION_VIEW); as the features allow NO_SPOT_LIGHTS,
+    // ONLY_CLASSIC_FALLOFF / ONLY_RANGE_FALLOFF, NO_DIRECTIONAL_LIGHT, NO_DIRECTIONAL_SHADOW, NO_AMBIENT_OCCLUSION,
     // NO_BLINN_PHONG, NO_METALLIC_ROUGHNESS, NO_ENVIRONMENT, and SPECULAR_EXPONENT_COUNT with
     // SPECULAR_EXPONENTS; BRANCH_ON_REACH as the policy asks; the light source's (light
     // windows or texels); MATERIAL_VARIANT; CLUSTER_LIST_TEXELS, GLOBAL_LIGHT_LIST,

@@ -29,7 +29,9 @@ LightingProgram laterPartsProgram(const TechniqueOptions& options, const Cluster
 ListLighting::ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
                            LightingStage stage)
     : stage_(stage),
-      passName_(options.shaders.markShadowPages ? "shadow marks" : "lighting"),
+      passName_(options.shaders.markShadowPages        ? "shadow marks"
+                : options.shaders.showShadowResolution ? "shadow resolution"
+                                                       : "lighting"),
       firstPart_(firstPartProgram(label, options, shape, stage)),
       laterParts_(laterPartsProgram(options, shape))
 {

@@ -22,7 +22,9 @@ public:
     // For lists over grids of `shape`, with programs made for `options` (whose lighting stage
     // is `stage`: tiled lights in compute whatever its options say). Options whose variant
     // marks shadow pages (TechniqueVariant::markShadowPages) make the shadow pool's marking:
-    // each pair marks the page its lookup would read, and nothing is stored in the lit image.
+    // each pair marks the page its lookup would read, and nothing is stored in the lit image;
+    // those that show the shadow resolution (TechniqueVariant::showShadowResolution) store its
+    // sums in the lit image instead of light (render/shadows/ShadowResolutionView.h).
     ListLighting(const std::string& label, const TechniqueOptions& options, const ClusterGridShape& shape,
                  LightingStage stage);
     // After ClusterLists::build over `grid`. `alsoWrites`: what the walk writes besides the lit
@@ -32,7 +34,7 @@ public:
 
 private:
     LightingStage stage_;
-    std::string_view passName_;  // "lighting", or the marking's "shadow marks"
+    std::string_view passName_;  // "lighting", the marking's "shadow marks" or "shadow resolution"
     // Part 0 in the stage, and the later parts (without the global list, which is part 0's); each
     // in the variants of ShaderVariant::listTexels and globalLightList the lists ask for.
     LightingProgram firstPart_;

@@ -161,7 +161,8 @@ vec3 environmentReflected(Surface s, vec3 V)
 // colour is then the same to the bit as before there were environments.
 vec3 shadeGlobal(Surface s, vec3 V)
 {
-#ifdef SHADOW_PAGE_MARKING  // the shadow pool's marking pass shades nothing (shadeLocalLight)
+// The shadow pool's marking pass and the shadow-resolution view shade nothing (shadeLocalLight).
+#if defined(SHADOW_PAGE_MARKING) || defined(SHADOW_RESOLUTION_VIEW)
     return vec3(0.0);
 #endif
     vec3 color = s.emissive + frame.terms.x * frame.ambient.rgb * ambientReflectance(s, V) * ambientOcclusion(s.position);
@@ -242,6 +243,11 @@ vec3 shadeLocalLight(uint lightIndex, GpuLight light, Surface s, vec3 V)
     if (reach.w != 0.0)
         markShadowPages(lightIndex, light, s.position);
     return vec3(0.0);
+#endif
+#ifdef SHADOW_RESOLUTION_VIEW
+    // --view shadow-resolution (lib/shadows.glsl): the same pairs add up the texels per pixel
+    // of the pages their lookups read instead of their light.
+    return reach.w != 0.0 ? shadowResolutionTerm(lightIndex, light, s.position) : vec3(0.0);
 #endif
     // The shadow lookup stays behind the reach test (?: evaluates one side only): a GPU then
     // skips its texture tap for the pairs out of reach.

@@ -5,6 +5,9 @@
 //   over every visible pixel, render/shadows/ShadowPool.cpp) marks, for each pair the lighting
 //   will shade, which cell of which face of the light the pixel falls in and the level it
 //   needs there (markShadowPages);
+// - the shadow-resolution view (SHADOW_RESOLUTION_VIEW, render/shadows/ShadowResolutionView.h)
+//   walks the same lists and reads, for each pair, the texels per pixel of the level the
+//   lookup reads (shadowPageTexelsPerPixel);
 // - the lighting of every technique reads one bilinear depth-comparison tap of the page
 //   there (localShadow, called by lib/lighting.glsl's shadeLocalLight for pairs in reach).
 // A face's geometry is render/shadows/ShadowFaces.cpp's, which draws the pages.
@@ -168,4 +171,32 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
     float reference = (far + near) / (far - near) * 0.5 + 0.5 - far * near / ((far - near) * biased);
     return texture(shadowAtlas, vec3(atlasTexel * atlasTexelSize, reference));
+}
+
+// The shadow texels per screen pixel at `position` of the level that light `lightIndex`'s lookup
+// (shadowPageLookup) reads there: a pixel's footprint at the receiver's view depth z,
+// 2 z tan(fov_y / 2) / height, over a texel's at its depth d along the face's axis,
+// 2 d tanHalf / R, R the resolution of the face's resident part where the part holds the
+// receiver, else of its coarse page (the same choice as the lookup's, from the same tables).
+// 0 where the light has no page there (the lookup's "1": nothing to read). --view
+// shadow-resolution (docs/shadows.md); no loop.
+float shadowPageTexelsPerPixel(uint lightIndex, GpuLight light, vec3 position, int facesBase)
+{
+    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
+    if (first < 0.0)
+        return 0.0;
+    vec3 v = position - light.positionRadius.xyz;
+    ShadowFaceFrame f = shadowFaceFrame(light, v);
+    int record = facesBase + 3 * (int(first) + int(f.face));
+    vec4 fineOffset = shadowTableTexel(record);
+    vec4 region = shadowTableTexel(record + 1);
+    vec4 coarseDepth = shadowTableTexel(record + 2);
+    float depth = dot(f.axis, v);
+    vec2 fineTexel = shadowFaceUv(f, v, depth) * fineOffset.z;
+    bool fine = fineOffset.w != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) &&
+                all(lessThanEqual(fineTexel, region.zw));
+    if (!fine && coarseDepth.x < 0.0)
+        return 0.0;
+    float resolution = fine ? fineOffset.z : float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
+    return resolution * viewDepth(position) * frame.projection.y / (max(depth, 1e-20) * f.tanHalf * frame.viewport.y);
 }

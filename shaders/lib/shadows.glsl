@@ -59,6 +59,21 @@ float localShadow(uint lightIndex, GpuLight light, vec3 position, vec3 normal)
                             int(shadowing.localShadowParams.w));
 }
 
+#ifdef SHADOW_RESOLUTION_VIEW
+// What --view shadow-resolution adds up for a pair in reach (TechniqueVariant::
+// showShadowResolution, docs/shadows.md): x the log2 of the texels per pixel of the page the
+// lookup of local light `light` reads at `position`, y 1, so that the walk's sum over a pixel's
+// pairs holds the sum of the logs and their count (the view shows 2^(x / y), their geometric
+// mean); nothing where the light has no page there, or no light has any.
+vec3 shadowResolutionTerm(uint lightIndex, GpuLight light, vec3 position)
+{
+    if (shadowing.localShadowParams.x == 0.0)
+        return vec3(0.0);
+    float texelsPerPixel = shadowPageTexelsPerPixel(lightIndex, light, position, int(shadowing.localShadowParams.w));
+    return texelsPerPixel > 0.0 ? vec3(log2(texelsPerPixel), 1.0, 0.0) : vec3(0.0);
+}
+#endif
+
 // The screen pixel a world position falls in. Every technique computes it from the same
 // position, so forward (which has gl_FragCoord) and compute shaders (which do not) read the
 // same texel.

@@ -256,8 +256,8 @@ TEST_F(BindingsTest, EveryProgramBindsWhatTheTableSays)
     desc.countWork = false;
     desc.lightTexels = true;
     renderer.apply(desc);
-    for (const ViewMode view :
-         {ViewMode::Position, ViewMode::Normal, ViewMode::Volumes, ViewMode::Shadow, ViewMode::Ssao})
+    for (const ViewMode view : {ViewMode::Position, ViewMode::Normal, ViewMode::Volumes, ViewMode::Shadow,
+                                ViewMode::Ssao, ViewMode::ShadowResolution})
         renderer.renderFrame("deferred", view);
     renderer.logAverageLuminance();
     // The seed layout's G-buffer targets are read by the programs made for it (counting work:

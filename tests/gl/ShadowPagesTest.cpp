@@ -865,6 +865,105 @@ TEST_F(ShadowPagesTest, ASmallPoolKeepsTheUmbraOfALowLight)
 }
 
 // ---------------------------------------------------------------------------------------------
+// --view shadow-resolution (docs/shadows.md): the texels per pixel of the level a lookup reads.
+
+TEST_F(ShadowPagesTest, ShadowResolutionViewShowsTheTexelsPerPixelOfTheLevelRead)
+{
+    // Point lights h above the floor, straight below the camera, which is 4 up: every floor
+    // receiver under a light's −Y face lies h along the face's axis (tanHalf 1) and 4 from the
+    // camera, so all of them ask for the same level, the one whose R texels across are no fewer
+    // than the pixels the face spans there, texelsAcross = h · height / (4 tan(fov_y / 2)) (the
+    // marking's formula: R ≥ texelsAcross, (R + 2 guard texels) / 16 pages a power of two). Its
+    // receivers each read that level (the face's part holds every receiver that marked it), so
+    // the light's figure there is R / texelsAcross, and a pixel's is the geometric mean over
+    // the lights that reach it. Lights at 1 and 2 ask for levels 2 and 3 (3.6 and 7.1 pages
+    // across, away from a level's edge). A pixel no light reaches has 0. Tolerance 1e-4
+    // relative: the shader's float arithmetic (a quotient, and the log2 and exp2 of the view's
+    // mean) against doubles.
+    constexpr int kSize = 128;
+    constexpr float kCameraHeight = 4.0f;
+    constexpr float kFovY = 60.0f;
+    struct LightAbove {
+        double height;
+        double range;
+        int level;  // the level its −Y face's receivers ask for
+    };
+    const std::vector<std::vector<LightAbove>> cases{
+        {{1.0, 2.0, 2}},  // the image's corners beyond its reach
+        {{2.0, 5.0, 3}},
+        {{1.0, 5.0, 2}, {2.0, 5.0, 3}},  // the mean of two
+    };
+    for (const std::vector<LightAbove>& lights : cases) {
+        const std::string what =
+            std::to_string(lights.size()) + " light(s), the first " + std::to_string(lights[0].height) + " up";
+        Scene scene = cellScene({}, {}, cameraAbove({0.0f, 0.0f, 0.0f}, kCameraHeight, kFovY));
+        scene.objects.resize(1);  // the floor alone
+        const Light prototype = scene.lights[0];
+        scene.lights.clear();
+        for (const LightAbove& above : lights) {
+            Light light = prototype;
+            light.position = {0.0f, static_cast<float>(above.height), 0.0f};
+            light.range = static_cast<float>(above.range);
+            scene.lights.push_back(light);
+        }
+        Renderer renderer(scene, expandLights(scene), shadowedDesc(kSize, kSize));
+        // Any technique's name: the view is drawn by the pool's own walk of its lists.
+        renderer.renderFrame("volumes", ViewMode::ShadowResolution);
+        const Image figure = renderer.readColour();
+        renderer.renderFrame("volumes", ViewMode::Position);
+        const Image position = renderer.readColour();
+
+        std::vector<double> log2Figures;
+        for (const LightAbove& above : lights) {
+            const double texelsAcross = above.height * kSize / (kCameraHeight * std::tan(glm::radians(kFovY / 2.0)));
+            const double pages =
+                (texelsAcross + 2.0 * shadowpages::SHADOW_GUARD_TEXELS) / shadowpages::SHADOW_PAGE_TEXELS;
+            ASSERT_EQ(static_cast<int>(std::ceil(std::log2(pages))), above.level) << what;
+            log2Figures.push_back(std::log2(shadowFaceResolution(above.level) / texelsAcross));
+        }
+        int checked = 0;
+        int unreached = 0;
+        int failures = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const float* p = position.pixel(x, y);
+                double sum = 0.0;
+                int reaching = 0;
+                bool underFaces = true;
+                for (std::size_t i = 0; i < lights.size(); ++i) {
+                    const glm::dvec3 v = glm::dvec3(p[0], p[1], p[2]) - glm::dvec3(0.0, lights[i].height, 0.0);
+                    if (glm::length(v) >= lights[i].range)
+                        continue;
+                    ++reaching;
+                    sum += log2Figures[i];
+                    // Under the −Y face, away from its edges (where a neighbour face may be read).
+                    underFaces = underFaces && std::max(std::abs(v.x), std::abs(v.z)) < 0.9 * lights[i].height;
+                }
+                const double got = figure.pixel(x, y)[0];
+                if (reaching == 0) {
+                    ++unreached;
+                    if (got != 0.0 && ++failures <= 5)
+                        ADD_FAILURE() << what << ", pixel (" << x << ", " << y << "): no light reaches it, and it has "
+                                      << got << " texels per pixel";
+                    continue;
+                }
+                if (!underFaces)
+                    continue;
+                ++checked;
+                const double want = std::exp2(sum / reaching);
+                if (std::abs(got - want) > 1e-4 * want && ++failures <= 5)
+                    ADD_FAILURE() << what << ", pixel (" << x << ", " << y << "): " << got
+                                  << " texels per pixel, expected " << want;
+            }
+        EXPECT_GT(checked, 1000) << what;
+        if (lights.size() == 1 && lights[0].range == 2.0) {
+            EXPECT_GT(unreached, 1000) << what;
+        }
+        EXPECT_EQ(failures, 0) << what;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Cache counts (issue 47, item 4, beyond tests/gl/ShadowPoolTest.cpp).
 
 TEST_F(ShadowPagesTest, AnObjectMovingInOneLightsReachRedrawsOnlyThatLightsFaces)

@@ -443,6 +443,41 @@ TEST(DisplayOutput, LightCountLegendTitleNamesWhatIsCounted)
     }
 }
 
+// --view shadow-resolution where no local light casts a shadow (no --shadow-lights, and the
+// default scene asks for none): no pixel has a figure, so the image is black, and it still
+// carries its legend, which says NONE where the figures' range would be (docs/shadows.md). The
+// view is drawn whatever technique is named.
+TEST(DisplayOutput, ShadowResolutionWithoutShadowedLightsIsBlackWithItsLegend)
+{
+    const auto dir = scratchDirectory();
+    const int width = 320;
+    const int height = 180;
+    const std::vector<std::string> args{"--size", "320x180", "--view", "shadow-resolution", "--technique", "stencil"};
+    runCliOrFail(with({"render", "-o", (dir / "view.png").string()}, args));
+    const Image figures = renderPfm("", dir / "view.pfm", args);
+    for (const float value : figures.rgb)
+        ASSERT_EQ(value, 0.0f);
+    const std::vector<unsigned char> png = readPng(dir / "view.png");
+    ASSERT_EQ(png.size(), std::size_t(width * height * 3));
+    const LegendArea area = heatMapLegendArea(width, height);
+    ASSERT_FALSE(area.isEmpty());
+    int legendPixels = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+            const bool inside = x >= area.x && x < area.x + area.width && y >= area.y && y < area.y + area.height;
+            const bool black = png[i] == 0 && png[i + 1] == 0 && png[i + 2] == 0;
+            if (!inside)
+                ASSERT_TRUE(black) << x << ", " << y;
+            else
+                legendPixels += black ? 0 : 1;
+        }
+    EXPECT_EQ(legendPixels, area.width * area.height);  // the panel is grey, nothing in it black
+    const std::string title(kShadowResolutionLegendTitle);
+    EXPECT_EQ(readLegendTitle(png, width, heatMapLegendTitlePlace(width, height), static_cast<int>(title.size())),
+              title);
+}
+
 // Too small an image keeps the plain heat map: the legend would hide most of it.
 TEST(DisplayOutput, LightCountLegendNeedsRoom)
 {

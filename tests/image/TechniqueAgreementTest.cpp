@@ -177,6 +177,14 @@ INSTANTIATE_TEST_SUITE_P(
         // and SSAO: every technique samples the same maps at the same positions.
         AgreementCase{
             "shadows_and_ssao", kScenes + "shadows_and_ssao.json", {"--size", "160x120", "--shadow-lights", "24"}},
+        // Every light shadowed from the shadow-page pool (issue 47): the marking pass is the
+        // same whatever the technique, so every technique reads the same pages with the same
+        // lookup at the same shaded point. The default scene's 256 lights, and the courtyard
+        // at 4,096 (its walls and pillars casting into most lights' faces).
+        AgreementCase{"default_scene_all_shadowed", "", {"--size", "160x90", "--shadow-lights", "all"}},
+        AgreementCase{"courtyard_4096_lights_all_shadowed",
+                      MANYLIGHTS_SOURCE_DIR "/bench/courtyard.json",
+                      {"--size", "128x72", "--lights", "4096", "--shadow-lights", "all"}},
         // Transparent panes and drops (the transparency pass, issue 16): over the
         // grid of the transparent objects' depths, against forward's every light;
         // past one light batch, the grid rebuilt per layer and batch.

@@ -237,9 +237,14 @@ TEST(Viewer, ScreenshotsEqualHeadlessRendersForEveryTechniqueAndView)
         int lit = 0;
         for (unsigned char value : picture.rgb)
             lit += value > 8;
-        // Only the light markers are emissive: a few small dots.
+        // Only the light markers are emissive: a few small dots. The default scene shadows no
+        // local light, so the shadow-resolution view is black (docs/shadows.md; its legend does
+        // not fit at this size), as render's is.
         const int least = shot.view == "emissive" ? 30 : static_cast<int>(picture.rgb.size() / 20);
-        EXPECT_GT(lit, least) << shot.file << " is (nearly) black";
+        if (shot.view == "shadow-resolution")
+            EXPECT_EQ(lit, 0) << shot.file << " is not black";
+        else
+            EXPECT_GT(lit, least) << shot.file << " is (nearly) black";
         const fs::path reference = dir / ("reference-" + shot.file);
         ASSERT_EQ(run("'" MANYLIGHTS_EXE "' render --size " + shot.size + " --time 1.5 --technique " + shot.technique +
                       " --view " + shot.view + " -o '" + reference.string() + "' 2>/dev/null"),
