@@ -117,6 +117,43 @@ vec4 shadowTableTexel(int texel)
 // percentage-closer filter.
 layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
 
+// What a receiver at `position` reads of light `lightIndex`'s pages: its face, where the face
+// resident part holds it or only the face's coarse page does, and the resolution read there.
+struct ShadowPageRead {
+    bool found;  // false: no page holds the receiver (the light has no face there)
+    ShadowFaceFrame f;
+    vec3 v;       // the receiver's offset from the light
+    float depth;  // along the face's axis
+    vec4 part;    // the face's two records (the tables above)
+    vec4 region;
+    bool fine;    // read from the resident part, not the coarse page
+    float resolution;
+};
+
+const float SHADOW_COARSE_RESOLUTION = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
+
+ShadowPageRead shadowPageRead(uint lightIndex, GpuLight light, vec3 position, int facesBase)
+{
+    ShadowPageRead r;
+    r.found = false;
+    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
+    // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
+    if (first < 0.0)
+        return r;
+    r.v = position - light.positionRadius.xyz;
+    r.f = shadowFaceFrame(light, r.v);
+    int record = facesBase + 2 * (int(first) + int(r.f.face));
+    r.part = shadowTableTexel(record);
+    r.region = shadowTableTexel(record + 1);
+    r.depth = dot(r.f.axis, r.v);
+    vec2 fineTexel = shadowFaceUv(r.f, r.v, r.depth) * r.part.z;
+    r.fine = r.part.z != 0.0 && all(greaterThanEqual(fineTexel, r.region.xy)) &&
+             all(lessThanEqual(fineTexel, r.region.xy + r.region.z));
+    r.found = r.fine || r.part.w >= 0.0;
+    r.resolution = r.fine ? r.part.z : SHADOW_COARSE_RESOLUTION;
+    return r;
+}
+
 // The fraction of local light `light` (index `lightIndex`) that reaches `position`, a surface
 // of normal `normal`: one tap of its face's resident part, or of the face's coarse page where
 // the part does not hold the receiver. No loop. `atlasTexelSize`: 1 / the atlas' width, height;
@@ -124,24 +161,9 @@ layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
 float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 normal, vec2 atlasTexelSize,
                        int facesBase)
 {
-    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
-    // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
-    if (first < 0.0)
+    ShadowPageRead r = shadowPageRead(lightIndex, light, position, facesBase);
+    if (!r.found)
         return 1.0;
-    vec3 v = position - light.positionRadius.xyz;
-    ShadowFaceFrame f = shadowFaceFrame(light, v);
-    int record = facesBase + 2 * (int(first) + int(f.face));
-    vec4 part = shadowTableTexel(record);
-    vec4 region = shadowTableTexel(record + 1);
-    float depth = dot(f.axis, v);
-    vec2 uv = shadowFaceUv(f, v, depth);
-    vec2 fineTexel = uv * part.z;
-    vec2 regionEnd = region.xy + region.z;
-    bool fine = part.z != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) && all(lessThanEqual(fineTexel, regionEnd));
-    if (!fine && part.w < 0.0)
-        return 1.0;
-    const float coarseResolution = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
-    float resolution = fine ? part.z : coarseResolution;
     // Normal offset: the receiver is moved off its surface along its normal by
     // (SHADOW_NORMAL_OFFSET_TEXELS + sin θ) texels of the level read (θ between its normal and
     // the light), at most SHADOW_MAX_NORMAL_OFFSET_WORLD. A surface tilted by θ changes depth by
@@ -149,23 +171,24 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
     // light, so δ ≥ texel · sin θ keeps a lit surface from shadowing itself at any tilt, with a
     // bounded offset where a depth bias alone would grow as tan θ. Half a 0.4-thick wall at
     // most: no receiver is moved through one.
-    float texelWorld = 2.0 * depth * f.tanHalf / resolution;
-    float cosine = clamp(dot(normal, -v) / max(length(v), 1e-20), 0.0, 1.0);
+    float texelWorld = 2.0 * r.depth * r.f.tanHalf / r.resolution;
+    float cosine = clamp(dot(normal, -r.v) / max(length(r.v), 1e-20), 0.0, 1.0);
     float offset = min(texelWorld * (SHADOW_NORMAL_OFFSET_TEXELS + sqrt(1.0 - cosine * cosine)),
                        SHADOW_MAX_NORMAL_OFFSET_WORLD);
-    vec3 w = position + normal * offset - light.positionRadius.xyz;
+    vec3 w = r.v + normal * offset;
     // The same face and level as the receiver itself; the texel kept inside what was drawn.
-    float offsetDepth = max(dot(f.axis, w), 1e-20);
-    vec2 offsetUv = shadowFaceUv(f, w, offsetDepth);
+    float offsetDepth = max(dot(r.f.axis, w), 1e-20);
+    vec2 offsetUv = shadowFaceUv(r.f, w, offsetDepth);
     float pagesAcross = round(1.0 / (atlasTexelSize.x * float(SHADOW_PAGE_TEXELS)));
-    vec2 coarseOrigin = (vec2(mod(part.w, pagesAcross), floor(part.w / pagesAcross)) * float(SHADOW_PAGE_TEXELS)) +
+    vec2 coarseOrigin = vec2(mod(r.part.w, pagesAcross), floor(r.part.w / pagesAcross)) * float(SHADOW_PAGE_TEXELS) +
                         float(SHADOW_GUARD_TEXELS);
-    vec2 atlasTexel = fine ? clamp(offsetUv * part.z, region.xy, regionEnd) + part.xy
-                           : clamp(offsetUv * coarseResolution, vec2(0.0), vec2(coarseResolution)) + coarseOrigin;
+    vec2 atlasTexel = r.fine ? clamp(offsetUv * r.part.z, r.region.xy, r.region.xy + r.region.z) + r.part.xy
+                             : clamp(offsetUv * SHADOW_COARSE_RESOLUTION, vec2(0.0), vec2(SHADOW_COARSE_RESOLUTION)) +
+                                   coarseOrigin;
     // And its depth pulled towards the light by SHADOW_BIAS_TEXELS texels, at most
     // SHADOW_MAX_BIAS_WORLD world units (a light 0.1 outside a 0.4-thick wall still shadowed).
     float bias = min(texelWorld * SHADOW_BIAS_TEXELS, SHADOW_MAX_BIAS_WORLD);
-    float far = region.w;
+    float far = r.region.w;
     float near = SHADOW_NEAR_FRACTION * far;
     float biased = clamp(offsetDepth - bias, near, far);
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
@@ -177,26 +200,14 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
 // (shadowPageLookup) reads there: a pixel's footprint at the receiver's view depth z,
 // 2 z tan(fov_y / 2) / height, over a texel's at its depth d along the face's axis,
 // 2 d tanHalf / R, R the resolution of the face's resident part where the part holds the
-// receiver, else of its coarse page (the same choice as the lookup's, from the same tables).
-// 0 where the light has no page there (the lookup's "1": nothing to read). --view
-// shadow-resolution (docs/shadows.md); no loop.
+// receiver, else of its coarse page (shadowPageRead: the lookup's own choice). 0 where the
+// light has no page there (the lookup's "1": nothing to read). --view shadow-resolution
+// (docs/shadows.md); no loop.
 float shadowPageTexelsPerPixel(uint lightIndex, GpuLight light, vec3 position, int facesBase)
 {
-    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
-    if (first < 0.0)
+    ShadowPageRead r = shadowPageRead(lightIndex, light, position, facesBase);
+    if (!r.found)
         return 0.0;
-    vec3 v = position - light.positionRadius.xyz;
-    ShadowFaceFrame f = shadowFaceFrame(light, v);
-    int record = facesBase + 3 * (int(first) + int(f.face));
-    vec4 fineOffset = shadowTableTexel(record);
-    vec4 region = shadowTableTexel(record + 1);
-    vec4 coarseDepth = shadowTableTexel(record + 2);
-    float depth = dot(f.axis, v);
-    vec2 fineTexel = shadowFaceUv(f, v, depth) * fineOffset.z;
-    bool fine = fineOffset.w != 0.0 && all(greaterThanEqual(fineTexel, region.xy)) &&
-                all(lessThanEqual(fineTexel, region.zw));
-    if (!fine && coarseDepth.x < 0.0)
-        return 0.0;
-    float resolution = fine ? fineOffset.z : float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
-    return resolution * viewDepth(position) * frame.projection.y / (max(depth, 1e-20) * f.tanHalf * frame.viewport.y);
+    return r.resolution * viewDepth(position) * frame.projection.y /
+           (max(r.depth, 1e-20) * r.f.tanHalf * frame.viewport.y);
 }
