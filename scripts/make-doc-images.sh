@@ -65,6 +65,9 @@ $ml render "$variants/shadows.json" -o $out/shadows-all.png --size 640x360 --sha
 $ml render "$variants/both.json" -o $out/shadows-and-ssao.png --size 640x360 --shadow-lights 3
 $ml render "$variants/shadows.json" -o $out/view-shadow.png --size 640x360 --view shadow
 $ml render "$variants/both.json" -o $out/view-ssao.png --size 640x360 --view ssao
+# Every light shadowed through the shadow-page pool (docs/shadows.md), beside courtyard.png.
+$ml render bench/courtyard.json -o $out/courtyard-every-light-shadowed.png --size 640x360 --lights 1024 \
+  --shadow-lights all
 # The shadow-resolution view (docs/shadows.md) of the default scene with every light shadowed:
 # in the default pool, and in the smallest, which lowers the faces' levels.
 $ml render -o $out/view-shadow-resolution.png --size 640x360 --view shadow-resolution --shadow-lights all
