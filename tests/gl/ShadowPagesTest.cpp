@@ -487,7 +487,7 @@ TEST_F(ShadowPagesTest, UmbraOfASphereUnderAHighPointLight)
     // Light 4 above the floor, sphere r = 0.5 at 2: the umbra is a disc of radius
     // 4 tan(asin(0.25)) = 1.03; the light reaches 3 on the floor (range 5), all on its −Y face.
     const CellSetup setup;
-    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 64);
+    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 96);
     EXPECT_EQ(r.failures, 0);
     EXPECT_EQ(r.clamped, 0);  // every lit receiver's bias is unclamped: all are checked fully lit
     EXPECT_GT(r.shadowed, 40);
@@ -516,7 +516,7 @@ TEST_F(ShadowPagesTest, UmbraOfASphereUnderASpotLight)
     // A spot of 30° (one face) 4 above the floor: its cone meets the floor within 2.31, inside
     // its reach of 3, so the cone's edge is seen too.
     const CellSetup setup{.type = LightType::Spot};
-    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 64);
+    const UmbraResult r = renderAndCheckUmbrae(setup, {}, cameraAbove({0.0f, 0.0f, 0.0f}, 9.0f, 45.0f), 96);
     EXPECT_EQ(r.failures, 0);
     EXPECT_EQ(r.clamped, 0);  // every lit receiver's bias is unclamped: all are checked fully lit
     EXPECT_GT(r.shadowed, 40);
@@ -918,7 +918,7 @@ TEST_F(ShadowPagesTest, ShadowResolutionViewShowsTheTexelsPerPixelOfTheLevelRead
             const double texelsAcross = above.height * kSize / (kCameraHeight * std::tan(glm::radians(kFovY / 2.0)));
             const double pages =
                 (texelsAcross + 2.0 * shadowpages::SHADOW_GUARD_TEXELS) / shadowpages::SHADOW_PAGE_TEXELS;
-            ASSERT_EQ(static_cast<int>(std::ceil(std::log2(pages))), above.level) << what;
+            ASSERT_EQ(static_cast<int>(std::round(std::log2(pages))), above.level) << what;
             log2Figures.push_back(std::log2(shadowFaceResolution(above.level) / texelsAcross));
         }
         int checked = 0;
