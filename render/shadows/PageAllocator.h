@@ -4,7 +4,7 @@
 // pages a power of two on a side, cut from a larger free block by quartering and merged back
 // with its three siblings when all four are free. A block keeps its place while it is
 // allocated, so a cached face stays where its depth was drawn. No GL: unit-tested
-// (tests/unit/PageAllocatorTest.cpp).
+// (tests/gl/ShadowFacesTest.cpp).
 #pragma once
 
 #include <array>

@@ -1,7 +1,7 @@
 // The geometry of a local light's shadow faces (docs/shadows.md), the same on both sides of
 // the shadow-page pool: shaders/lib/shadow_pages.glsl computes a receiver's face, texel and
 // marks from it, and render/shadows/ShadowPool.cpp draws each resident part with the matrices
-// built here. No GL: unit-tested (tests/unit/ShadowFacesTest.cpp).
+// built here. No GL: unit-tested (tests/gl/ShadowFacesTest.cpp).
 #pragma once
 
 #include <cstdint>

@@ -22,16 +22,6 @@ struct ShadowFaceFrame {
     float tanHalf; // tangent of its half field of view
 };
 
-// A cube face's axis, image x and image y, in the faces' order: lookAt's frames for the up
-// vectors of render/shadows/ShadowFaces.cpp (kCubeFaceUp; tests/unit/ShadowFacesTest.cpp
-// checks that they agree), as constants: no cross product or normalisation per lookup.
-const vec3 SHADOW_CUBE_AXIS[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
-                                         vec3(0, 0, 1), vec3(0, 0, -1));
-const vec3 SHADOW_CUBE_ACROSS[6] = vec3[6](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0), vec3(1, 0, 0),
-                                           vec3(1, 0, 0), vec3(-1, 0, 0));
-const vec3 SHADOW_CUBE_UP[6] = vec3[6](vec3(0, -1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1),
-                                       vec3(0, -1, 0), vec3(0, -1, 0));
-
 ShadowFaceFrame shadowFaceFrame(GpuLight light, vec3 v)
 {
     ShadowFaceFrame f;
@@ -47,12 +37,19 @@ ShadowFaceFrame shadowFaceFrame(GpuLight light, vec3 v)
         return f;
     }
 #endif
+    // A cube face: the major axis of v and its sign. Its frame is lookAt's for the up vectors of
+    // render/shadows/ShadowFaces.cpp (kCubeFaceUp; tests/gl/ShadowFacesTest.cpp checks that
+    // they agree), written as selects: no cross product, normalisation or array indexed per
+    // lookup (llvmpipe keeps an indexed array or vector component in memory).
     vec3 a = abs(v);
-    uint axisIndex = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
-    f.face = axisIndex * 2u + (v[axisIndex] < 0.0 ? 1u : 0u);
-    f.axis = SHADOW_CUBE_AXIS[f.face];
-    f.across = SHADOW_CUBE_ACROSS[f.face];
-    f.up = SHADOW_CUBE_UP[f.face];
+    bool onX = a.x >= a.y && a.x >= a.z;
+    bool onY = !onX && a.y >= a.z;
+    float component = onX ? v.x : (onY ? v.y : v.z);
+    float sign = component < 0.0 ? -1.0 : 1.0;
+    f.face = (onX ? 0u : (onY ? 2u : 4u)) + (component < 0.0 ? 1u : 0u);
+    f.axis = onX ? vec3(sign, 0.0, 0.0) : (onY ? vec3(0.0, sign, 0.0) : vec3(0.0, 0.0, sign));
+    f.across = onX ? vec3(0.0, 0.0, -sign) : (onY ? vec3(1.0, 0.0, 0.0) : vec3(sign, 0.0, 0.0));
+    f.up = onY ? vec3(0.0, 0.0, sign) : vec3(0.0, -1.0, 0.0);
     f.tanHalf = 1.0;
     return f;
 }
@@ -140,7 +137,8 @@ ShadowPageRead shadowPageRead(uint lightIndex, GpuLight light, vec3 position, in
 {
     ShadowPageRead r;
     r.found = false;
-    float first = shadowTableTexel(int(lightIndex / 4u))[lightIndex % 4u];
+    // Component lightIndex % 4 as a dot product: an indexed vector component is kept in memory.
+    float first = dot(shadowTableTexel(int(lightIndex / 4u)), vec4(equal(uvec4(lightIndex % 4u), uvec4(0u, 1u, 2u, 3u))));
     // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
     if (first < 0.0)
         return r;
