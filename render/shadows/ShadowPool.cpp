@@ -125,6 +125,7 @@ void ShadowPool::ensureMarking(const TechniqueOptions& options)
     lists_ = std::make_unique<ClusterLists>(kClusteredGridShape, wanted.culling);
     marking_ =
         std::make_unique<ListLighting>("shadow page marking", wanted, kClusteredGridShape, LightingStage::Compute);
+    transparentMarking_ = std::make_unique<TransparencyPass>(wanted.shaders);
     markingOptions_ = wanted;
     markedFor_.reset();
 }
@@ -193,6 +194,13 @@ std::vector<std::uint32_t> ShadowPool::mark(const GpuScene& scene, FrameTargets&
             break;
         if (attempt + 1 == kMarkingAttempts)
             throw Error("the shadow pool's light lists cannot hold this frame's pairs");
+    }
+    // The transparent surfaces' receivers, over the transparency pass's own grid (its colour
+    // goes to the lit image, which the frame clears after the shadows: nothing of it is seen).
+    // The readback's barrier, after the opaque marking's writes, covers its writes too.
+    if (scene.hasTransparentObjects()) {
+        marksBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_PAGE_MARKS_BUFFER_BINDING);
+        transparentMarking_->run(scene, targets, passes, false);
     }
     std::vector<std::uint32_t> marks(words);
     passes.run({.name = "shadow marks", .transfers = Resource::ShadowPages},

@@ -10,7 +10,8 @@
 //    the level whose texel is about the pixel's size (shaders/lib/shadow_pages.glsl). It is the
 //    clustered lists' walk (render/techniques/ListLighting.h, built with SHADOW_PAGE_MARKING)
 //    over the G-buffer, so it tests each pair exactly as the lighting does, and every
-//    technique then reads the same pages. The marks are read back.
+//    technique then reads the same pages; the transparent surfaces' receivers are marked the
+//    same way by the transparency pass built to mark. The marks are read back.
 // 2. Placing: each marked face gets the smallest square of pages around its marked cells at
 //    its level (and the whole face at level 0, one page, beside a part), in priority order
 //    (marked cells × brightest channel) lowered a level at a time while the pool is short. The
@@ -39,6 +40,7 @@
 #include "gl/Texture.h"
 #include "render/culling/ClusterGrid.h"
 #include "render/culling/ClusterLists.h"
+#include "render/effects/TransparencyPass.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
 #include "render/frame/TechniqueOptions.h"
@@ -182,6 +184,10 @@ private:
     std::unique_ptr<ClusterGrid> grid_;
     std::unique_ptr<ClusterLists> lists_;
     std::unique_ptr<ListLighting> marking_;
+    // The transparent surfaces' receivers: the transparency pass over its own grid of the
+    // transparent objects' depths, built to mark (every technique's transparency pass then
+    // reads the same pages).
+    std::unique_ptr<TransparencyPass> transparentMarking_;
     gl::Buffer marksBuffer_;
     std::size_t marksWords_ = 0;
     std::optional<MarkInputs> markedFor_;

@@ -139,7 +139,7 @@ ShadowPageRead shadowPageRead(uint lightIndex, GpuLight light, vec3 position, in
     r.found = false;
     // Component lightIndex % 4 as a dot product: an indexed vector component is kept in memory.
     float first = dot(shadowTableTexel(int(lightIndex / 4u)), vec4(equal(uvec4(lightIndex % 4u), uvec4(0u, 1u, 2u, 3u))));
-    // No face: no opaque receiver asked for one (a transparent surface alone, docs/shadows.md).
+    // No face: no receiver asked for one, so no visible surface reads it.
     if (first < 0.0)
         return r;
     r.v = position - light.positionRadius.xyz;

@@ -102,5 +102,57 @@ TEST(ShadowPoolCli, APoolTooSmallForAPageAFaceSaysTheSizeNeededOnce)
     EXPECT_GT(counter(standard, "shadow_lights_with_faces"), 1000.0);
 }
 
+// The transparent surfaces' receivers are marked too ("the visible depth and the transparent
+// surfaces' receivers"): a glass pane lit by one point light at (0, 0, 1) through a box halfway
+// between them, with no opaque surface in view and the box beyond the camera's narrow view, so
+// that only the pane's own pixels can ask for the light's pages. The rays from the light to the
+// pane's centre (3, 0, 0) pass through the box (1.35..1.65, ±0.15, 0.35..0.65) at (1.5, 0, 0.5):
+// there the pane gets nothing of the light, exactly as under the same light of intensity 0; at
+// |y| = 0.55 no ray meets the box (it would need |y| ≤ 0.15 at a fraction 1/s of the way, s at
+// most 2.86), so the pane is lit exactly as without shadows. Exact equalities: the shadow factor
+// is 0 in the umbra and 1 where lit, and adding a zero term changes no float.
+TEST(ShadowPoolCli, TransparentReceiversAreMarkedAndShadowed)
+{
+    const auto scene = [](double intensity) {
+        return R"({"camera": {"eye": [3, 0, 6], "look_at": [3, 0, 0], "fov_y": 15},
+            "ambient": [0.05, 0.05, 0.05],
+            "lights": [{"type": "point", "pos": [0, 0, 1], "intensity": [)" +
+               std::to_string(intensity) + ", " + std::to_string(intensity) + ", " + std::to_string(intensity) +
+               R"(], "range": 6}],
+            "materials": {"glass": {"diffuse": [0.8, 0.8, 0.8], "opacity": 0.5},
+                          "grey": {"diffuse": [0.5, 0.5, 0.5]}},
+            "objects": [
+              {"mesh": {"primitive": "plane", "size": [1.2, 1.2]}, "material": "glass",
+               "transform": {"translate": [3, 0, 0], "rotate": [90, 0, 0]}},
+              {"mesh": {"primitive": "box", "size": [0.3, 0.3, 0.3]}, "material": "grey",
+               "transform": {"translate": [1.5, 0, 0.5]}}]})";
+    };
+    const auto dir = scratchDirectory();
+    writeFile(dir / "lit.json", scene(2.0));
+    writeFile(dir / "dark.json", scene(0.0));
+    const std::vector<std::string> size{"--size", "64x64"};
+    std::vector<std::string> shadowed = size;
+    shadowed.insert(shadowed.end(), {"--shadow-lights", "all", "--stats", (dir / "stats.json").string()});
+    const Image withShadows = test::renderPfm((dir / "lit.json").string(), dir / "shadowed.pfm", shadowed);
+    const Image without = test::renderPfm((dir / "lit.json").string(), dir / "unshadowed.pfm", size);
+    const Image dark = test::renderPfm((dir / "dark.json").string(), dir / "dark.pfm", size);
+    std::ifstream in(dir / "stats.json");
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    EXPECT_EQ(stats["shadow_lights_with_faces"].get<double>(), 1.0);  // asked for by the pane alone
+
+    // The pane's centre: pixel (32, 32) looks at (3, 0, 0) (the camera looks straight at it).
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(withShadows.pixel(32, 32)[c], dark.pixel(32, 32)[c]) << c;
+        EXPECT_LT(withShadows.pixel(32, 32)[c], without.pixel(32, 32)[c]) << c;
+    }
+    // |y| = 0.55: rows 32 ∓ 0.55 / (6 tan 7.5°) · 32 = 32 ∓ 22.3, columns across the pane.
+    for (const int row : {10, 54})
+        for (const int column : {16, 32, 48})
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_EQ(withShadows.pixel(column, row)[c], without.pixel(column, row)[c]) << column << ", " << row;
+                EXPECT_GT(without.pixel(column, row)[c], dark.pixel(column, row)[c]) << column << ", " << row;
+            }
+}
+
 }  // namespace
 }  // namespace manylights
