@@ -411,48 +411,53 @@ void ShadowPool::noteMovedCasters(const std::vector<DrawList::Caster>& casters)
     }
 }
 
+namespace {
+
+// Two signed texel coordinates as one word of 16-bit halves biased by 32768
+// (shaders/lib/shadow_pages.glsl: shadowTableHalves).
+std::uint32_t halves(int x, int y)
+{
+    ML_ASSERT(x >= -32768 && x < 32768 && y >= -32768 && y < 32768);
+    return static_cast<std::uint32_t>(x + 32768) | (static_cast<std::uint32_t>(y + 32768) << 16);
+}
+
+}  // namespace
+
 void ShadowPool::writeTables(std::size_t lightCount)
 {
-    // Each light's first face record: four lights a texel.
+    // Each light's first face record plus 1 (0: none): four lights a texel.
     facesBase_ = (lightCount + 3) / 4;
-    std::vector<glm::vec4> table(facesBase_, glm::vec4(-1.0f));
-    const auto setFirst = [&](std::uint32_t light, std::size_t record) {
-        table[light / 4][static_cast<int>(light % 4)] = static_cast<float>(record);
-    };
-    std::size_t records = 0;
+    std::vector<glm::uvec4> table(facesBase_, glm::uvec4(0u));
     std::uint32_t currentLight = kNoFaces;
     std::size_t firstOfLight = 0;
     std::vector<GpuShadowFace> faces;
     for (const auto& [key, face] : faces_) {
         if (face.light != currentLight) {
             currentLight = face.light;
-            firstOfLight = records;
-            setFirst(face.light, records);
-            records += static_cast<std::size_t>(shadowFaceCount(face.drawnFor));
-            faces.resize(records);
+            firstOfLight = faces.size();
+            table[face.light / 4][static_cast<int>(face.light % 4)] = static_cast<std::uint32_t>(firstOfLight + 1);
+            faces.resize(faces.size() + static_cast<std::size_t>(shadowFaceCount(face.drawnFor)), GpuShadowFace(0u));
         }
-        GpuShadowFace& record = faces[firstOfLight + static_cast<std::size_t>(face.face)];
-        const float resolution = static_cast<float>(shadowFaceResolution(face.region.level));
-        const glm::vec2 origin(static_cast<float>(face.region.x0), static_cast<float>(face.region.y0));
-        const glm::vec2 atlasOrigin(static_cast<float>(face.fine->x * SHADOW_PAGE_TEXELS),
-                                    static_cast<float>(face.fine->y * SHADOW_PAGE_TEXELS));
-        const auto guard = static_cast<float>(SHADOW_GUARD_TEXELS);
-        const float coarsePage =
-            face.coarse ? static_cast<float>(face.coarse->y * allocator_->pagesAcross() + face.coarse->x) : -1.0f;
-        record.part = glm::vec4(atlasOrigin - origin, resolution, coarsePage);
-        record.region = glm::vec4(origin + guard,
-                                  static_cast<float>(face.region.pages * SHADOW_PAGE_TEXELS) - 2.0f * guard, face.far);
+        const int pageTexels = SHADOW_PAGE_TEXELS;
+        const int guard = SHADOW_GUARD_TEXELS;
+        std::uint32_t layout =
+            static_cast<std::uint32_t>(face.region.level) | (static_cast<std::uint32_t>(face.region.pages) << 3);
+        if (face.coarse) {
+            ML_ASSERT(face.coarse->x < 1024 && face.coarse->y < 1024);
+            layout |= 1u << 10 | static_cast<std::uint32_t>(face.coarse->x) << 11 |
+                      static_cast<std::uint32_t>(face.coarse->y) << 21;
+        }
+        faces[firstOfLight + static_cast<std::size_t>(face.face)] = GpuShadowFace(
+            halves(face.fine->x * pageTexels - face.region.x0, face.fine->y * pageTexels - face.region.y0),
+            halves(face.region.x0 + guard, face.region.y0 + guard), layout, std::bit_cast<std::uint32_t>(face.far));
     }
-    for (const GpuShadowFace& record : faces) {
-        table.push_back(record.part);
-        table.push_back(record.region);
-    }
+    table.insert(table.end(), faces.begin(), faces.end());
     // Whole rows; the texture grows, and is rewritten whole, when the tables change.
     const std::size_t rows = std::max<std::size_t>((table.size() + SHADOW_TABLE_WIDTH - 1) / SHADOW_TABLE_WIDTH, 1);
-    table.resize(rows * SHADOW_TABLE_WIDTH, glm::vec4(0.0f));
+    table.resize(rows * SHADOW_TABLE_WIDTH, glm::uvec4(0u));
     if (!tables_ || static_cast<std::size_t>(tables_.height()) != rows)
-        tables_ = gl::Texture2D("shadow page tables", GL_RGBA32F, SHADOW_TABLE_WIDTH, static_cast<int>(rows));
-    tables_.write(GL_RGBA, GL_FLOAT, table.data());
+        tables_ = gl::Texture2D("shadow page tables", GL_RGBA32UI, SHADOW_TABLE_WIDTH, static_cast<int>(rows));
+    tables_.write(GL_RGBA_INTEGER, GL_UNSIGNED_INT, table.data());
     tablesCurrent_ = true;
 }
 

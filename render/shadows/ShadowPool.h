@@ -51,13 +51,10 @@
 
 namespace manylights {
 
-// A face's record in the page tables (shaders/lib/shadow_pages.glsl: shadowTables), two
-// RGBA32F texels.
-struct GpuShadowFace {
-    glm::vec4 part{0.0f, 0.0f, 0.0f, -1.0f};
-    glm::vec4 region{0.0f};
-};
-static_assert(sizeof(GpuShadowFace) == 32);
+// A face's record in the page tables (shaders/lib/shadow_pages.glsl: shadowTables), one
+// RGBA32UI texel.
+using GpuShadowFace = glm::uvec4;
+static_assert(sizeof(GpuShadowFace) == 16);
 
 // What the pool did in its last update (--stats: ShadowPool::counters).
 struct ShadowPoolFrame {

@@ -96,22 +96,29 @@ void markShadowPages(uint lightIndex, GpuLight light, vec3 position)
 }
 #endif
 
-// The page tables (render/shadows/ShadowPool.cpp: writeTables), one RGBA32F texture
+// The page tables (render/shadows/ShadowPool.cpp: writeTables), one RGBA32UI texture
 // SHADOW_TABLE_WIDTH texels wide, read with texelFetch: llvmpipe fetches a texel for all its
 // lanes at once where it loads a storage buffer lane by lane, and a 2D texture holds the
 // tables of any light count within GL 4.5's least texture size. Texel i / 4, component i % 4:
-// light i's first face record, or −1 where it has none (record numbers are whole floats, exact
-// below 2^24). From texel `facesBase` on, each face's record in two texels:
-// - xy: atlas texel minus face texel of its resident part; z: the face's resolution R (0: the
-//   face has no part, no receiver asked for it); w: the atlas page of its coarse page
-//   (row · pages across + column), −1 where it has none;
-// - xy: the first face texel the tap may read in the part; z: how many texels on from there
-//   it may; w: the face's far plane (its near plane is SHADOW_NEAR_FRACTION of it).
-layout(binding = SHADOW_TABLES_UNIT) uniform sampler2D shadowTables;
+// light i's first face record plus 1, or 0 where it has none. From texel `facesBase` on, each
+// face's record in one texel:
+// - x, y: the atlas texel minus the face texel of its resident part, and the first face texel
+//   the tap may read in the part, each as two 16-bit halves (x low, y high) biased by 32768;
+// - z: bits 0-2 the face's level, 3-9 its part's pages on a side (0: no part, no receiver asked
+//   for the face), bit 10 whether its coarse page is there, 11-20 and 21-30 that page's column
+//   and row in the atlas;
+// - w: the bits of the face's far plane (its near plane is SHADOW_NEAR_FRACTION of it).
+layout(binding = SHADOW_TABLES_UNIT) uniform usampler2D shadowTables;
 
-vec4 shadowTableTexel(int texel)
+uvec4 shadowTableTexel(int texel)
 {
     return texelFetch(shadowTables, ivec2(texel % SHADOW_TABLE_WIDTH, texel / SHADOW_TABLE_WIDTH), 0);
+}
+
+// A record's two biased 16-bit halves.
+vec2 shadowTableHalves(uint word)
+{
+    return vec2(ivec2(uvec2(word & 0xffffu, word >> 16u)) - 32768);
 }
 
 // 32-bit depth with hardware comparison (GL_LEQUAL) and bilinear filtering: one tap is a 2x2
@@ -123,12 +130,16 @@ layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
 struct ShadowPageRead {
     bool found;  // false: no page holds the receiver (the light has no face there)
     ShadowFaceFrame f;
-    vec3 v;       // the receiver's offset from the light
-    float depth;  // along the face's axis
-    vec4 part;    // the face's two records (the tables above)
-    vec4 region;
-    bool fine;    // read from the resident part, not the coarse page
-    float resolution;
+    vec3 v;             // the receiver's offset from the light
+    float depth;        // along the face's axis
+    vec2 partOffset;    // atlas texel minus face texel in the resident part
+    vec2 regionLow;     // the part's first readable face texel, and its last
+    vec2 regionHigh;
+    float partResolution;  // the face's resolution R at its level
+    vec2 coarseOrigin;  // the atlas texel of face texel 0 of the coarse page
+    float far;
+    bool fine;          // read from the resident part, not the coarse page
+    float resolution;   // of the level read
 };
 
 const float SHADOW_COARSE_RESOLUTION = float(SHADOW_PAGE_TEXELS - 2 * SHADOW_GUARD_TEXELS);
@@ -138,21 +149,29 @@ ShadowPageRead shadowPageRead(uint lightIndex, GpuLight light, vec3 position, in
     ShadowPageRead r;
     r.found = false;
     // Component lightIndex % 4 as a dot product: an indexed vector component is kept in memory.
-    float first = dot(shadowTableTexel(int(lightIndex / 4u)), vec4(equal(uvec4(lightIndex % 4u), uvec4(0u, 1u, 2u, 3u))));
+    uint first = uint(dot(vec4(shadowTableTexel(int(lightIndex / 4u))),
+                          vec4(equal(uvec4(lightIndex % 4u), uvec4(0u, 1u, 2u, 3u)))));
     // No face: no receiver asked for one, so no visible surface reads it.
-    if (first < 0.0)
+    if (first == 0u)
         return r;
     r.v = position - light.positionRadius.xyz;
     r.f = shadowFaceFrame(light, r.v);
-    int record = facesBase + 2 * (int(first) + int(r.f.face));
-    r.part = shadowTableTexel(record);
-    r.region = shadowTableTexel(record + 1);
+    uvec4 record = shadowTableTexel(facesBase + int(first - 1u + r.f.face));
+    r.partOffset = shadowTableHalves(record.x);
+    r.regionLow = shadowTableHalves(record.y);
+    uint level = record.z & 7u;
+    uint pages = (record.z >> 3u) & 127u;
+    r.partResolution = float((uint(SHADOW_PAGE_TEXELS) << level) - uint(2 * SHADOW_GUARD_TEXELS));
+    r.regionHigh = r.regionLow + float(pages * uint(SHADOW_PAGE_TEXELS) - uint(2 * SHADOW_GUARD_TEXELS));
+    bool coarse = (record.z & 1024u) != 0u;
+    r.coarseOrigin = vec2(uvec2((record.z >> 11u) & 1023u, (record.z >> 21u) & 1023u)) * float(SHADOW_PAGE_TEXELS) +
+                     float(SHADOW_GUARD_TEXELS);
+    r.far = uintBitsToFloat(record.w);
     r.depth = dot(r.f.axis, r.v);
-    vec2 fineTexel = shadowFaceUv(r.f, r.v, r.depth) * r.part.z;
-    r.fine = r.part.z != 0.0 && all(greaterThanEqual(fineTexel, r.region.xy)) &&
-             all(lessThanEqual(fineTexel, r.region.xy + r.region.z));
-    r.found = r.fine || r.part.w >= 0.0;
-    r.resolution = r.fine ? r.part.z : SHADOW_COARSE_RESOLUTION;
+    vec2 fineTexel = shadowFaceUv(r.f, r.v, r.depth) * r.partResolution;
+    r.fine = pages != 0u && all(greaterThanEqual(fineTexel, r.regionLow)) && all(lessThanEqual(fineTexel, r.regionHigh));
+    r.found = r.fine || coarse;
+    r.resolution = r.fine ? r.partResolution : SHADOW_COARSE_RESOLUTION;
     return r;
 }
 
@@ -181,16 +200,13 @@ float shadowPageLookup(uint lightIndex, GpuLight light, vec3 position, vec3 norm
     // The same face and level as the receiver itself; the texel kept inside what was drawn.
     float offsetDepth = max(dot(r.f.axis, w), 1e-20);
     vec2 offsetUv = shadowFaceUv(r.f, w, offsetDepth);
-    float pagesAcross = round(1.0 / (atlasTexelSize.x * float(SHADOW_PAGE_TEXELS)));
-    vec2 coarseOrigin = vec2(mod(r.part.w, pagesAcross), floor(r.part.w / pagesAcross)) * float(SHADOW_PAGE_TEXELS) +
-                        float(SHADOW_GUARD_TEXELS);
-    vec2 atlasTexel = r.fine ? clamp(offsetUv * r.part.z, r.region.xy, r.region.xy + r.region.z) + r.part.xy
+    vec2 atlasTexel = r.fine ? clamp(offsetUv * r.partResolution, r.regionLow, r.regionHigh) + r.partOffset
                              : clamp(offsetUv * SHADOW_COARSE_RESOLUTION, vec2(0.0), vec2(SHADOW_COARSE_RESOLUTION)) +
-                                   coarseOrigin;
+                                   r.coarseOrigin;
     // And its depth pulled towards the light by SHADOW_BIAS_TEXELS texels, at most
     // SHADOW_MAX_BIAS_WORLD world units (a light 0.1 outside a 0.4-thick wall still shadowed).
     float bias = min(texelWorld * SHADOW_BIAS_TEXELS, SHADOW_MAX_BIAS_WORLD);
-    float far = r.region.w;
+    float far = r.far;
     float near = SHADOW_NEAR_FRACTION * far;
     float biased = clamp(offsetDepth - bias, near, far);
     // Window depth of the face's perspective at that depth (ShadowFaces.cpp's projection).
