@@ -20,7 +20,7 @@ using namespace shadowpages;
 
 namespace {
 
-constexpr std::uint32_t kNoFaces = 0xffffffffu;  // lib/shadow_pages.glsl SHADOW_NO_FACES
+constexpr std::uint32_t kNoLight = 0xffffffffu;  // writeTables: before the first light with faces
 constexpr std::size_t kPageBytes = std::size_t{SHADOW_PAGE_TEXELS} * SHADOW_PAGE_TEXELS * sizeof(float);
 constexpr int kRootTexels = PageAllocator::kRootPages * SHADOW_PAGE_TEXELS;
 constexpr std::size_t kRootBytes = std::size_t{kRootTexels} * kRootTexels * sizeof(float);
@@ -428,7 +428,7 @@ void ShadowPool::writeTables(std::size_t lightCount)
     // Each light's first face record plus 1 (0: none): four lights a texel.
     facesBase_ = (lightCount + 3) / 4;
     std::vector<glm::uvec4> table(facesBase_, glm::uvec4(0u));
-    std::uint32_t currentLight = kNoFaces;
+    std::uint32_t currentLight = kNoLight;
     std::size_t firstOfLight = 0;
     std::vector<GpuShadowFace> faces;
     for (const auto& [key, face] : faces_) {
