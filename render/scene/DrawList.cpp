@@ -537,6 +537,30 @@ Bounds DrawList::objectsWorldBounds() const
     return all;
 }
 
+const gl::Program& DrawList::useDepthOnlyProgram(const MeshProgramFor& programFor, const DrawItem& first,
+                                                 const gl::Program*& current) const
+{
+    const MaterialVariant variant = depthOnlyVariant(first.variant);
+    const gl::Program& program = programFor(variant);
+    if (&program != current) {
+        program.use();
+        current = &program;
+    }
+    setObjectUniforms(program, first);
+    if ((variant & kDiffuseMapBit) != 0) {
+        MaterialMaps diffuseOnly;
+        diffuseOnly.diffuse = first.maps->diffuse;
+        bindMaterial(program, *first.material, diffuseOnly);
+    }
+    return program;
+}
+
+bool DrawList::castsShadows(const DrawItem& item)
+{
+    // Transparent surfaces cast no shadows (docs/transparency.md); light markers have no bounds.
+    return !item.worldBounds.empty() && !isTransparent(*item.material);
+}
+
 std::size_t DrawList::drawObjectsDepthOnly(const MeshProgramFor& programFor,
                                            const std::function<bool(const Bounds&)>& keep) const
 {
@@ -544,26 +568,12 @@ std::size_t DrawList::drawObjectsDepthOnly(const MeshProgramFor& programFor,
     std::size_t drawn = 0;
     const gl::Program* current = nullptr;
     for (const DrawBatch& batch : batches_) {
-        const DrawItem& first = draws_[batch.firstItem];
-        const MaterialVariant variant = depthOnlyVariant(first.variant);
-        const gl::Program& program = programFor(variant);
-        if (&program != current) {
-            program.use();
-            current = &program;
-        }
-        setObjectUniforms(program, first);
-        if ((variant & kDiffuseMapBit) != 0) {
-            MaterialMaps diffuseOnly;
-            diffuseOnly.diffuse = first.maps->diffuse;
-            bindMaterial(program, *first.material, diffuseOnly);
-        }
+        const gl::Program& program = useDepthOnlyProgram(programFor, draws_[batch.firstItem], current);
         // Culling splits a batch into runs of kept items, each one instanced draw.
         const std::size_t end = batch.firstItem + batch.itemCount;
         std::optional<std::size_t> runStart;
         for (std::size_t i = batch.firstItem; i <= end; ++i) {
-            // Transparent surfaces cast no shadows (docs/transparency.md).
-            const bool kept = i < end && !draws_[i].worldBounds.empty() && !isTransparent(*draws_[i].material) &&
-                              keep(draws_[i].worldBounds);
+            const bool kept = i < end && castsShadows(draws_[i]) && keep(draws_[i].worldBounds);
             if (kept && !runStart)
                 runStart = i;
             if (!kept && runStart) {
@@ -581,12 +591,9 @@ std::vector<DrawList::Caster> DrawList::casters() const
     std::vector<Caster> result;
     for (std::size_t batch = 0; batch < batches_.size(); ++batch) {
         const DrawBatch& run = batches_[batch];
-        for (std::size_t i = run.firstItem; i < run.firstItem + run.itemCount; ++i) {
-            const DrawItem& item = draws_[i];
-            // Transparent surfaces cast no shadows (docs/transparency.md); light markers have no bounds.
-            if (!item.worldBounds.empty() && !isTransparent(*item.material))
-                result.push_back({i, batch, item.groupedIndex, item.worldBounds});
-        }
+        for (std::size_t i = run.firstItem; i < run.firstItem + run.itemCount; ++i)
+            if (castsShadows(draws_[i]))
+                result.push_back({i, batch, draws_[i].groupedIndex, draws_[i].worldBounds});
     }
     return result;
 }
@@ -598,18 +605,7 @@ void DrawList::drawCasterRuns(const MeshProgramFor& programFor, const std::vecto
     const gl::Program* current = nullptr;
     for (const CasterRun& run : runs) {
         const DrawItem& first = draws_[batches_[run.batch].firstItem];
-        const MaterialVariant variant = depthOnlyVariant(first.variant);
-        const gl::Program& program = programFor(variant);
-        if (&program != current) {
-            program.use();
-            current = &program;
-        }
-        setObjectUniforms(program, first);
-        if ((variant & kDiffuseMapBit) != 0) {
-            MaterialMaps diffuseOnly;
-            diffuseOnly.diffuse = first.maps->diffuse;
-            bindMaterial(program, *first.material, diffuseOnly);
-        }
+        const gl::Program& program = useDepthOnlyProgram(programFor, first, current);
         program.set(baseLocation, static_cast<int>(run.first));
         const MeshRange& range = first.range;
         gl::counted(glDrawElementsInstancedBaseVertex, GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,

@@ -181,6 +181,13 @@ private:
     void loadMaterialMaps(const Scene& scene);
     void bindMaterial(const gl::Program& program, const Material& material, const MaterialMaps& maps) const;
     void setObjectUniforms(const gl::Program& program, const DrawItem& draw) const;
+    // A depth-only pass's program for a batch whose first item is `first` (the shadow maps' and
+    // pages' casters): made current where `current` is another, with the batch's object
+    // uniforms and, for an alpha-masked caster, its diffuse map.
+    const gl::Program& useDepthOnlyProgram(const MeshProgramFor& programFor, const DrawItem& first,
+                                           const gl::Program*& current) const;
+    // Whether an item casts shadows: opaque, with bounds (light markers have none).
+    static bool castsShadows(const DrawItem& item);
     void addLightMarkers(const std::vector<Light>& lights, float radius);
     void groupDrawsIntoBatches();
     void drawInstances(const gl::Program& program, std::size_t firstItem, std::size_t itemCount) const;

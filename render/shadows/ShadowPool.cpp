@@ -25,9 +25,6 @@ constexpr std::size_t kPageBytes = std::size_t{SHADOW_PAGE_TEXELS} * SHADOW_PAGE
 constexpr int kRootTexels = PageAllocator::kRootPages * SHADOW_PAGE_TEXELS;
 constexpr std::size_t kRootBytes = std::size_t{kRootTexels} * kRootTexels * sizeof(float);
 static_assert(kRootBytes == std::size_t{kShadowPoolGrainMiB} << 20, "a root is the pool's grain");
-// The marking's attempts where the lists did not hold the frame's pairs (ClusterLists resizes
-// them for the next; the second holds them unless the lights moved in between).
-constexpr int kMarkingAttempts = 3;
 
 // std430 layout of shaders/shadow_page.vert: FaceDraw.
 struct GpuFaceDraw {
@@ -114,19 +111,14 @@ void ShadowPool::ensureMarking(const TechniqueOptions& options)
     wanted.shaders.countWork = false;
     wanted.shaders.localShadows = false;
     wanted.shaders.markShadowPages = true;
-    wanted.lightingStage = LightingStage::Compute;
     // Its lists always sort their pairs (never bit masks, which the technique's lists use below
     // kMaskedListLights): one sequence of GL calls at every light count, so that the shadow
     // work's calls do not change with it (shadow_gl_calls).
     wanted.culling.maskedListLights = 0;
-    if (markingOptions_ && *markingOptions_ == wanted)
+    if (marking_ && marking_->madeFor(wanted))
         return;
-    grid_ = std::make_unique<ClusterGrid>(wanted.shaders.gbufferLayout, kClusteredGridShape);
-    lists_ = std::make_unique<ClusterLists>(kClusteredGridShape, wanted.culling);
-    marking_ =
-        std::make_unique<ListLighting>("shadow page marking", wanted, kClusteredGridShape, LightingStage::Compute);
+    marking_ = std::make_unique<SurfaceListWalk>("shadow pool's marking", wanted);
     transparentMarking_ = std::make_unique<TransparencyPass>(wanted.shaders);
-    markingOptions_ = wanted;
     markedFor_.reset();
 }
 
@@ -179,22 +171,15 @@ std::vector<std::uint32_t> ShadowPool::mark(const GpuScene& scene, FrameTargets&
                             ~0u);
     }
     const Pass startPass{.name = "shadow marks", .storage = Resource::ShadowPages, .writes = Resource::ShadowPages};
-    for (int attempt = 0; attempt < kMarkingAttempts; ++attempt) {
+    marking_->run(scene, targets, passes, Resource::ShadowPages, [&] {
         passes.run(startPass, [&] {
             if (all)
                 marksBuffer_.clearToZero(words * sizeof(std::uint32_t));
             else
                 marksBuffer_.update(0, words * sizeof(std::uint32_t), initial.data());
         });
-        buildListsOverSurfaces(scene, targets, passes, *grid_, *lists_);
         marksBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_PAGE_MARKS_BUFFER_BINDING);
-        marking_->run(scene, *grid_, *lists_, passes, Resource::ShadowPages);
-        lists_->frameIssued();
-        if (lists_->oldestFrameFitted())
-            break;
-        if (attempt + 1 == kMarkingAttempts)
-            throw Error("the shadow pool's light lists cannot hold this frame's pairs");
-    }
+    });
     // The transparent surfaces' receivers, over the transparency pass's own grid (its colour
     // goes to the lit image, which the frame clears after the shadows: nothing of it is seen).
     // The readback's barrier, after the opaque marking's writes, covers its writes too.

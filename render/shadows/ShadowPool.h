@@ -38,8 +38,6 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "render/culling/ClusterGrid.h"
-#include "render/culling/ClusterLists.h"
 #include "render/effects/TransparencyPass.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
@@ -47,7 +45,7 @@
 #include "render/scene/GpuScene.h"
 #include "render/shadows/PageAllocator.h"
 #include "render/shadows/ShadowFaces.h"
-#include "render/techniques/ListLighting.h"
+#include "render/shadows/SurfaceListWalk.h"
 
 namespace manylights {
 
@@ -177,10 +175,7 @@ private:
     int atlasMiB_ = 0;  // the pool size the atlas was made for
 
     // The marking: its own grid and lists over the G-buffer, and the walk built to mark.
-    std::optional<TechniqueOptions> markingOptions_;
-    std::unique_ptr<ClusterGrid> grid_;
-    std::unique_ptr<ClusterLists> lists_;
-    std::unique_ptr<ListLighting> marking_;
+    std::unique_ptr<SurfaceListWalk> marking_;
     // The transparent surfaces' receivers: the transparency pass over its own grid of the
     // transparent objects' depths, built to mark (every technique's transparency pass then
     // reads the same pages).

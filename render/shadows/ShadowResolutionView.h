@@ -10,15 +10,12 @@
 
 #include <cmath>
 #include <memory>
-#include <optional>
 
-#include "render/culling/ClusterGrid.h"
-#include "render/culling/ClusterLists.h"
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
 #include "render/frame/TechniqueOptions.h"
 #include "render/scene/GpuScene.h"
-#include "render/techniques/ListLighting.h"
+#include "render/shadows/SurfaceListWalk.h"
 
 namespace manylights {
 
@@ -41,10 +38,7 @@ public:
     static float texelsPerPixel(float logSum, float pairs) { return pairs > 0.0f ? std::exp2(logSum / pairs) : 0.0f; }
 
 private:
-    std::optional<TechniqueOptions> madeFor_;
-    std::unique_ptr<ClusterGrid> grid_;
-    std::unique_ptr<ClusterLists> lists_;
-    std::unique_ptr<ListLighting> walk_;
+    std::unique_ptr<SurfaceListWalk> walk_;  // made for the last options drawn with
 };
 
 }  // namespace manylights
