@@ -60,6 +60,7 @@
 #include "scene/SceneLoader.h"
 #include "scene/ShadowSelection.h"
 #include "tests/support/ImageComparison.h"
+#include "tests/support/RayBox.h"
 #include "tests/support/ShadowRoomScene.h"
 
 namespace manylights {
@@ -551,37 +552,8 @@ INSTANTIATE_TEST_SUITE_P(Cells, UmbraCells, ::testing::Values(1, 32, 256),
 // ---------------------------------------------------------------------------------------------
 // Box occluders: a receiver's cone of directions sampled.
 
-struct Box {
-    glm::dvec3 min;
-    glm::dvec3 max;
-    bool holds(const glm::dvec3& p, double slack) const
-    {
-        return glm::all(glm::greaterThanEqual(p, min - slack)) && glm::all(glm::lessThanEqual(p, max + slack));
-    }
-};
-
-// Where the ray origin + t · direction enters `box` (slab test), or none.
-std::optional<double> rayEntersBox(const glm::dvec3& origin, const glm::dvec3& direction, const Box& box)
-{
-    double near = 0.0;
-    double far = 1e30;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::abs(direction[axis]) < 1e-12) {
-            if (origin[axis] < box.min[axis] || origin[axis] > box.max[axis])
-                return std::nullopt;
-            continue;
-        }
-        double t0 = (box.min[axis] - origin[axis]) / direction[axis];
-        double t1 = (box.max[axis] - origin[axis]) / direction[axis];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        near = std::max(near, t0);
-        far = std::min(far, t1);
-    }
-    if (near > far)
-        return std::nullopt;
-    return near;
-}
+using test::Box;
+using test::rayEntersBox;
 
 enum class Cover { Shadowed, Lit, Edge };
 

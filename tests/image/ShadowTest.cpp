@@ -23,6 +23,7 @@
 #include "render/Techniques.h"
 #include "render/techniques/Technique.h"
 #include "tests/support/ImageComparison.h"
+#include "tests/support/RayBox.h"
 
 namespace manylights {
 // Every render here uses the exact seed G-buffer layout: the expected values are docs/lighting.md
@@ -38,30 +39,12 @@ constexpr double kAbsoluteTolerance = test::kAnalyticTolerance.absolute;  // 2e-
 constexpr double kRelativeTolerance = test::kAnalyticTolerance.relative;  // 1e-4
 constexpr double kPenumbraMargin = 0.05;
 
-struct Box {
-    glm::dvec3 min;
-    glm::dvec3 max;
-};
+using test::Box;
 
-// Whether the ray origin + t·direction (t > 0) hits the box (slab test).
+// Whether the ray origin + t·direction (t > 0) hits the box.
 bool rayHitsBox(const glm::dvec3& origin, const glm::dvec3& direction, const Box& box)
 {
-    double near = 0.0;
-    double far = 1e30;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::abs(direction[axis]) < 1e-12) {
-            if (origin[axis] < box.min[axis] || origin[axis] > box.max[axis])
-                return false;
-            continue;
-        }
-        double t0 = (box.min[axis] - origin[axis]) / direction[axis];
-        double t1 = (box.max[axis] - origin[axis]) / direction[axis];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        near = std::max(near, t0);
-        far = std::min(far, t1);
-    }
-    return near <= far;
+    return test::rayEntersBox(origin, direction, box).has_value();
 }
 
 // In shadow (true), lit (false), or too close to the shadow's edge to say (nullopt): the
