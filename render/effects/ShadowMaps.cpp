@@ -84,6 +84,8 @@ glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Bounds& sceneBo
 ShadowMaps::ShadowMaps(const ShadowMapSizes& sizes)
     : sizes_(sizes),
       directionalMapSize_(sizes.directional),
+      depthPrograms_("shadow depth",
+                     {{GL_VERTEX_SHADER, "shadow_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}),
       uniformBuffer_("shadowing uniforms", sizeof(ShadowingUniforms), nullptr)
 {
     // A 1x1 map until the directional light needs a real one: the shaders' sampler must
@@ -142,26 +144,13 @@ void ShadowMaps::drawDepthPass(FramePasses& passes, std::string_view name, const
         framebuffer.clearDepth(1.0f);
         passes.scene().drawObjectsDepthOnly(
             [&](MaterialVariant variant) -> const gl::Program& {
-                const gl::Program& program = depthProgram(variant);
+                const gl::Program& program = depthPrograms_.variant({variant});
                 program.set(kLightViewProjectionLocation, viewProjection);
                 return program;
             },
             [](const Bounds&) { return true; });
     });
     ++passesRendered_;
-}
-
-const gl::Program& ShadowMaps::depthProgram(MaterialVariant variant)
-{
-    auto found = depthPrograms_.find(variant);
-    if (found == depthPrograms_.end())
-        found = depthPrograms_
-                    .emplace(variant, gl::Program("shadow depth",
-                                                  {{GL_VERTEX_SHADER, "shadow_depth.vert"},
-                                                   {GL_FRAGMENT_SHADER, "shadow_depth.frag"}},
-                                                  materialVariantDefines(variant, {})))
-                    .first;
-    return found->second;
 }
 
 void ShadowMaps::bind(bool ambientOcclusion, const glm::vec4& localShadowParams)

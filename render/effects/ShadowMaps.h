@@ -19,6 +19,8 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "render/programs/Bindings.h"
+#include "render/programs/LightingPrograms.h"
+#include "render/programs/ProgramVariants.h"
 #include "render/scene/GpuScene.h"
 #include "scene/Scene.h"
 
@@ -95,8 +97,7 @@ private:
     gl::Framebuffer directionalFramebuffer_;
     // The depth pass's programs per depth-only material variant (render/programs/LightingPrograms.h:
     // depthOnlyVariant; 0 for every caster without an alpha mask), compiled on first use.
-    const gl::Program& depthProgram(MaterialVariant variant);
-    std::map<MaterialVariant, gl::Program> depthPrograms_;
+    ProgramVariants<DepthOnlyVariant> depthPrograms_;
     gl::Buffer uniformBuffer_;
     ShadowingUniforms uniforms_;
 

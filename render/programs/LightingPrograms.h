@@ -160,6 +160,14 @@ inline constexpr MaterialVariant depthOnlyVariant(MaterialVariant variant)
 // depth-only program that takes no other dimension of the key.
 gl::Defines materialVariantDefines(MaterialVariant variant, gl::Defines defines);
 
+// The key of a depth-only program (shaders/shadow_depth.frag behind the shadow map's or the
+// shadow pages' vertex shader): its depth-only material variant alone, for ProgramVariants.
+struct DepthOnlyVariant {
+    MaterialVariant material = 0;
+    gl::Defines toDefines(gl::Defines defines) const { return materialVariantDefines(material, std::move(defines)); }
+    auto operator<=>(const DepthOnlyVariant&) const = default;
+};
+
 // What every program of a technique is made for (TechniqueOptions::shaders): the same for all
 // of its draws and frames.
 struct TechniqueVariant {

@@ -446,19 +446,6 @@ void ShadowPool::writeTables(std::size_t lightCount)
     tablesCurrent_ = true;
 }
 
-const gl::Program& ShadowPool::casterProgram(MaterialVariant variant)
-{
-    auto found = casterPrograms_.find(variant);
-    if (found == casterPrograms_.end())
-        found = casterPrograms_
-                    .emplace(variant, gl::Program("shadow page casters",
-                                                  {{GL_VERTEX_SHADER, "shadow_page.vert"},
-                                                   {GL_FRAGMENT_SHADER, "shadow_depth.frag"}},
-                                                  materialVariantDefines(variant, {})))
-                    .first;
-    return found->second;
-}
-
 void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std::vector<DrawList::Caster>& casters)
 {
     const auto width = static_cast<float>(atlas_.width());
@@ -545,22 +532,23 @@ void ShadowPool::drawFaces(const GpuScene& scene, FramePasses& passes, const std
                });
     if (runs.empty())
         return;
-    passes.run({.name = "shadow pages",
-                .framebuffer = &atlasFramebuffer_,
-                .state = {.clampDepth = true, .maskColour = true, .viewport = whole}},
-               [&] {
-                   gl::uploadGrowing(casterFacesBuffer_, "shadow caster faces", std::span<const glm::uvec2>(pairs));
-                   gl::uploadGrowing(faceDrawsBuffer_, "shadow face draws", std::span<const GpuFaceDraw>(draws));
-                   casterFacesBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_CASTER_FACES_BUFFER_BINDING);
-                   faceDrawsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_FACE_DRAWS_BUFFER_BINDING);
-                   for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
-                       gl::counted(glEnable, plane);
-                   scene.drawCasterRuns(
-                       [&](MaterialVariant variant) -> const gl::Program& { return casterProgram(variant); }, runs,
-                       locations::SHADOW_CASTER_FACE_BASE_LOCATION);
-                   for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
-                       gl::counted(glDisable, plane);
-               });
+    passes.run(
+        {.name = "shadow pages",
+         .framebuffer = &atlasFramebuffer_,
+         .state = {.clampDepth = true, .maskColour = true, .viewport = whole}},
+        [&] {
+            gl::uploadGrowing(casterFacesBuffer_, "shadow caster faces", std::span<const glm::uvec2>(pairs));
+            gl::uploadGrowing(faceDrawsBuffer_, "shadow face draws", std::span<const GpuFaceDraw>(draws));
+            casterFacesBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_CASTER_FACES_BUFFER_BINDING);
+            faceDrawsBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::SHADOW_FACE_DRAWS_BUFFER_BINDING);
+            for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
+                gl::counted(glEnable, plane);
+            scene.drawCasterRuns(
+                [&](MaterialVariant variant) -> const gl::Program& { return casterPrograms_.variant({variant}); }, runs,
+                locations::SHADOW_CASTER_FACE_BASE_LOCATION);
+            for (GLenum plane = GL_CLIP_DISTANCE0; plane <= GL_CLIP_DISTANCE3; ++plane)
+                gl::counted(glDisable, plane);
+        });
 }
 
 void ShadowPool::update(const GpuScene& scene, FrameTargets& targets, FramePasses& passes,

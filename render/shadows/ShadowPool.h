@@ -42,6 +42,7 @@
 #include "render/frame/FramePasses.h"
 #include "render/frame/FrameTargets.h"
 #include "render/frame/TechniqueOptions.h"
+#include "render/programs/ProgramVariants.h"
 #include "render/scene/GpuScene.h"
 #include "render/shadows/PageAllocator.h"
 #include "render/shadows/ShadowFaces.h"
@@ -162,7 +163,6 @@ private:
     void writeTables(std::size_t lightCount);
     void drawFaces(const GpuScene& scene, FramePasses& passes, const std::vector<DrawList::Caster>& casters);
     void releaseFace(Face& face);
-    const gl::Program& casterProgram(MaterialVariant variant);
 
     int lightCap_ = 0;
     int poolMiB_ = 0;
@@ -199,7 +199,8 @@ private:
     gl::Buffer faceDrawsBuffer_;
     gl::Buffer clearRectsBuffer_;
     gl::Program clearProgram_;
-    std::map<MaterialVariant, gl::Program> casterPrograms_;
+    ProgramVariants<DepthOnlyVariant> casterPrograms_{
+        "shadow page casters", {{GL_VERTEX_SHADER, "shadow_page.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}}};
     std::string lastShortage_;  // the pool-short line printed last, so it is printed once
 
     ShadowPoolFrame frame_;
