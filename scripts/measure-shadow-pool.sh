@@ -4,8 +4,9 @@
 #  1. bench/courtyard.json at 4,096 lights (LIGHTS=), clustered (TECHNIQUE=), 1280x720 (SIZE=):
 #     unshadowed; every light shadowed with its pages cached (a still scene: the frame pays the
 #     lookups only); and every page marked and drawn every frame (--rebuild-shadows, as when
-#     everything moves). The shadow passes ("shadow marks" and "shadow pages") and the lighting
-#     are columns; the ratios are read against the unshadowed row of the same round.
+#     everything moves). The shadow passes ("shadow marks", "shadow clears" and "shadow pages")
+#     and the lighting are columns, the lighting also per (pixel, light) pair; the ratios are
+#     read against the unshadowed row of the same round.
 #  2. render --stats of a frame that marks and draws every page (--rebuild-shadows) at 1,024 to 65,536 lights (COUNTS=), every light
 #     shadowed: the faces, the pages they hold, the levels a short pool took, and the GL calls
 #     of the shadow work (shadow_gl_calls: they must not grow with the light count).
@@ -17,9 +18,14 @@ cd "$(dirname "$0")/.."
 size=${SIZE:-1280x720}
 lights=${LIGHTS:-4096}
 technique=${TECHNIQUE:-clustered}
-common="bench/courtyard.json --techniques $technique --lights $lights --size $size"
+# --count-work: a separate counting frame gives the (pixel, light) pairs the lighting evaluated
+# (the same with or without shadows), so that the lighting's cost reads per pair: the shadowed
+# rows' figure less the unshadowed one's is the lookup's cost per pair.
+common="bench/courtyard.json --techniques $technique --lights $lights --size $size --count-work"
 scripts/lib/bench.py --frames "${FRAMES:-3}" \
   --column "shadow passes=shadow*" --column lighting \
+  --column "lighting ns a pair=lighting * 1000000 / work.light_evaluations" \
+  --column "pairs=work.light_evaluations" \
   --column "faces=stat.shadow_faces" --column "pages=stat.shadow_pages_used" \
   --case "unshadowed: $common" \
   --case "all shadowed, cached: $common --shadow-lights all" \

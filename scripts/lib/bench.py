@@ -25,7 +25,7 @@ points) by the change of its light evaluations.
 
 A column is NAME=EXPRESSION or an EXPRESSION that names itself: terms joined by ' + ' or ' - '
 (spaces around), optionally over a second such sum after ' / '; a term may be a product of
-figures joined by ' * '. A figure is a pass's median time
+figures joined by ' * ' (a pass's time among them). A figure is a pass's median time
 on the clock its frames were timed with (a pass name; shell-style wildcards sum several:
 'shadow*'), `invocations.PASS` (its fragment invocations), `frame` (the median frame), `gpu frame`
 (between GL_TIMESTAMPs), `counter.NAME` (a technique counter), `work.NAME` (--count-work's
@@ -326,6 +326,8 @@ def term_value(row, term):
         product = 1.0
         for factor in term.split(" * "):
             value = term_value(row, factor.strip())
+            if isinstance(value, tuple):  # a pass's time may be a factor too: 'lighting * 1000000'
+                value = value[0]
             if not isinstance(value, float):
                 return None
             product *= value

@@ -121,10 +121,12 @@ class BenchHarnessTest(unittest.TestCase):
     def test_columns_read_each_pass_on_its_clock(self):
         measurement, out = self.measure(["gpu: --lights 10 --pass-timing gpu"],
                                         ["lighting", "both=geometry + lighting", "shading=frame - geometry",
-                                         "pairs=counter.cluster_pairs", "share=lighting / frame", "gone=absent*"])
+                                         "pairs=counter.cluster_pairs", "share=lighting / frame", "gone=absent*",
+                                         "ns a pair=lighting * 1000000 / work.light_evaluations"])
         row = measurement.results[("gpu", ("deferred", 10, "64x36"))][0]
         values = [c.value(row) for c in measurement.columns]
-        self.assertEqual(values, [20.0, 30.0, 0.0, 30.0, 2.0, None])
+        # lighting 20 ms over 10,000 pairs: 2,000 ns each (a pass's time as a factor of a product).
+        self.assertEqual(values, [20.0, 30.0, 0.0, 30.0, 2.0, None, 2000.0])
         self.assertEqual(measurement.column_title(measurement.columns[0]), "lighting (gpu ms)")
         self.assertIn("GL: stand-in GL, 4.5; driver profile software; pass timing gpu", out)
 
