@@ -41,18 +41,20 @@ constexpr TechniqueEntry kTechniques[] = {
     {"clustered", make<ClusteredTechnique>, "cluster's lights in reach"},
 };
 
-}  // namespace
-
-const std::vector<std::string>& techniqueNames()
+// The table holds the names render/TechniqueNames.h gives, in its order.
+constexpr bool namesAreTheTechniqueNames()
 {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> result;
-        for (const TechniqueEntry& entry : kTechniques)
-            result.emplace_back(entry.name);
-        return result;
-    }();
-    return names;
+    if (std::size(kTechniques) != kTechniqueNames.size())
+        return false;
+    for (std::size_t i = 0; i < kTechniqueNames.size(); ++i)
+        if (kTechniques[i].name != kTechniqueNames[i])
+            return false;
+    return true;
 }
+static_assert(namesAreTheTechniqueNames(),
+              "kTechniques and kTechniqueNames name the same techniques in the same order");
+
+}  // namespace
 
 std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options)
 {

@@ -8,12 +8,11 @@
 #include <string_view>
 #include <vector>
 
+#include "render/TechniqueNames.h"  // techniqueNames()
 #include "render/techniques/Technique.h"
 
 namespace manylights {
 
-// The techniques docs/cli.md names, in the order of the docs.
-const std::vector<std::string>& techniqueNames();
 // nullptr when the name is unknown.
 std::unique_ptr<Technique> makeTechnique(std::string_view name, const TechniqueOptions& options = {});
 // Which lights the technique's light-count view counts at a pixel, in a few words ("every

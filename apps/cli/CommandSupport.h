@@ -18,6 +18,7 @@
 
 #include "core/Error.h"
 
+#include "apps/cli/OptionText.h"
 #include "platform/EglChoice.h"
 #include "render/Renderer.h"  // kDefaultImageWidth, kDefaultImageHeight
 #include "render/driver/DriverProfile.h"
@@ -61,18 +62,9 @@ int reportingErrors(Command command, const std::string& activity)
     return 0;
 }
 
-// Far beyond any display, and small enough that width · height · bytes per pixel stays
-// within 64-bit sizes; the GL implementation's own limit is checked when rendering.
-inline constexpr int kMaxImageDimension = 32768;
-
-struct ImageSize {
-    int width = 0;
-    int height = 0;
-};
-
-// The defaults and bounds of the options `render`, `bench` and `view` share, each written once.
-inline constexpr ImageSize kDefaultImageSize{kDefaultImageWidth, kDefaultImageHeight};  // --size
-inline constexpr std::string_view kDefaultTechnique = "clustered";                      // --technique
+// The defaults and bounds of the options `render`, `bench` and `view` share, each written once
+// (--size's and the shadow options' text in apps/cli/OptionText.h).
+inline constexpr std::string_view kDefaultTechnique = "clustered";  // --technique
 // --lights: at most 2^24 lights, the bound docs/cli.md states for render, bench and view.
 inline constexpr int kMaxLightCount = 16'777'216;
 
@@ -99,13 +91,6 @@ struct OutputImage {
 std::optional<ImageFormat> imageFormatOf(const std::string& path);
 // Whether `path` ends in `extension` (".png", lower case), ignoring case: out.PNG is a PNG.
 bool hasExtension(const std::filesystem::path& path, std::string_view extension);
-
-// "WxH" with both in 1..kMaxImageDimension. Returns the problem as one line (naming --size),
-// or an empty string when `text` is a size; then `size` holds it.
-std::string parseSize(const std::string& text, ImageSize& size);
-
-// "1280x720".
-std::string formatSize(const ImageSize& size);
 
 // --anisotropy of render and bench: "auto", 1, 2, 4, 8 or 16, stored in `level` as
 // TextureCache::setAnisotropy takes it (kAutoAnisotropy for "auto").
@@ -194,12 +179,6 @@ struct ShadowOptions {
 void addShadowOptions(CLI::App& command, ShadowOptions& options);
 // --rebuild-shadows of render and bench (RendererDesc::rebuildShadowsEveryFrame).
 void addRebuildShadowsOption(CLI::App& command, bool& rebuild);
-// "all" (kAllShadowLights) or a whole number of lights from 0 to INT_MAX. Returns the problem as
-// one line, without the option's name (CLI11 puts it in front), or an empty string when `text`
-// is one; then `lights` holds it.
-std::string parseShadowLights(const std::string& text, int& lights);
-// A multiple of kShadowPoolGrainMiB from kMinShadowPoolMiB to kMaxShadowPoolMiB, the same way.
-std::string parseShadowPoolMiB(const std::string& text, int& mib);
 // RendererDesc::shadowLights: --shadow-lights, else the scene's "shadow_lights", else 0.
 int chooseShadowLights(const Scene& scene, const ShadowOptions& options);
 // A shadowLights value as render's --stats and bench's --json write it: "all", or the count.

@@ -7,9 +7,8 @@
 #include "apps/view/Keymaps.h"
 #include "core/Error.h"
 #include "core/Numbers.h"
-#include "render/Techniques.h"
+#include "render/TechniqueNames.h"
 #include "render/Views.h"
-#include "render/techniques/Technique.h"
 
 namespace manylights {
 

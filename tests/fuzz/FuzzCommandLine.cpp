@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "apps/cli/CommandSupport.h"
+#include "apps/cli/OptionText.h"
 #include "apps/cli/Recording.h"
 #include "apps/view/ViewScript.h"
 #include "core/Error.h"
