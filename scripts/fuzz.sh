@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) in build-fuzz/ and
-# runs each for SECONDS (default 20) on a seed corpus made from the repository's scenes and
-# models (and Debian's assimp-testmodels glTFs when installed). Exits non-zero on the first
-# crash; libFuzzer leaves the input under build-fuzz/artifacts/. Turn it into a regression
-# test (tests/unit) before fixing it.
+# runs each for SECONDS (default 20), JOBS (default 2) at a time, on a seed corpus made from the
+# repository's scenes and models (and Debian's assimp-testmodels glTFs when installed). Exits
+# non-zero when any target crashed; libFuzzer leaves the input under build-fuzz/artifacts/.
+# Turn it into a regression test (tests/unit) before fixing it.
 #
 #   scripts/fuzz.sh [SECONDS]     e.g. scripts/fuzz.sh 120 for a longer run by hand
 set -euo pipefail
@@ -51,20 +51,36 @@ printf '\5%s' 256 > "$seeds/FuzzCommandLine/shadow-pool"
 printf '\6%s' "$(printf 'frames 2\nresize 640 360\ntime 1.5\nspeed 2\nscreenshot a.png\nquit')" \
   > "$seeds/FuzzCommandLine/script"
 
-for target in FuzzSceneJson FuzzObj FuzzGltf FuzzCommandLine; do
-  corpus="$build/corpus/$target"
+# One target's run; its report goes to its log, then to the output in one piece.
+fuzz_target() {
+  local target=$1 corpus="$build/corpus/$1" log="$build/artifacts/$1.log" status=0
   mkdir -p "$corpus"
-  echo "fuzz: $target for ${seconds}s"
   # -rss_limit_mb: an input may ask for a large (but bounded) allocation; more is a bug.
-  log="$build/artifacts/$target.log"
-  status=0
   "$build/tests/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb="${FUZZ_RSS_MB:-2048}" -max_len=65536 \
     -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 "$corpus" "$seeds/$target" \
     >"$log" 2>&1 || status=$?
+  echo "fuzz: $target for ${seconds}s"
   grep -E '^(stat::number_of_executed_units|==[0-9]+==|SUMMARY)|ERROR|Test unit written' "$log" || true
   if [ "$status" -ne 0 ]; then
     echo "fuzz: $target failed (exit $status); see $log and $build/artifacts/" >&2
-    exit 1
+    return 1
   fi
+}
+
+# A libFuzzer run uses one core: the targets run JOBS at a time (on 2 cores the four take twice
+# SECONDS, not four times). Every target runs its time; any that failed fails the script.
+pids=()
+failed=0
+for target in FuzzSceneJson FuzzObj FuzzGltf FuzzCommandLine; do
+  if [ ${#pids[@]} -ge "$jobs" ]; then
+    wait "${pids[0]}" || failed=1
+    pids=("${pids[@]:1}")
+  fi
+  fuzz_target "$target" &
+  pids+=($!)
 done
+for pid in "${pids[@]}"; do
+  wait "$pid" || failed=1
+done
+[ "$failed" -eq 0 ] || exit 1
 echo "fuzz: no crash in ${seconds}s per target"

@@ -18,7 +18,10 @@
 
 namespace manylights::test {
 
-// The map's texels as the sum takes them: direction, radiance, solid angle.
+// The map's texels as the sum takes them: direction, radiance, solid angle. In plain doubles,
+// not glm's vectors: the same arithmetic in the same order, but an unoptimised build (`make
+// sanitize`'s Debug) calls a function for each of glm's operators, which made the sum over a
+// 128x64 map for every texel of the levels take a minute there.
 class EnvironmentTexelSum {
 public:
     explicit EnvironmentTexelSum(const EnvironmentImage& map)
@@ -26,9 +29,9 @@ public:
         for (int j = 0; j < map.height; ++j) {
             const double solidAngle = environmentTexelSolidAngle(j, map.height);
             for (int i = 0; i < map.width; ++i) {
-                directions_.push_back(environmentDirection({(i + 0.5) / map.width, (j + 0.5) / map.height}));
-                radiance_.push_back(glm::dvec3(map.at(i, j)));
-                solidAngles_.push_back(solidAngle);
+                const glm::dvec3 d = environmentDirection({(i + 0.5) / map.width, (j + 0.5) / map.height});
+                const glm::vec3 radiance = map.at(i, j);
+                texels_.push_back({d.x, d.y, d.z, solidAngle, radiance.r, radiance.g, radiance.b});
             }
         }
     }
@@ -38,24 +41,28 @@ public:
     {
         const double alpha = roughness * roughness;
         const double a2 = alpha * alpha;
-        glm::dvec3 sum(0.0);
-        double weight = 0.0;
-        for (std::size_t t = 0; t < directions_.size(); ++t) {
-            const double nl = glm::dot(n, directions_[t]);
+        double r = 0.0, g = 0.0, b = 0.0, weight = 0.0;
+        for (const Texel& t : texels_) {
+            const double nl = n.x * t.x + n.y * t.y + n.z * t.z;
             if (nl <= 0.0)
                 continue;
             const double d = (0.5 + 0.5 * nl) * (a2 - 1.0) + 1.0;
-            const double w = nl * solidAngles_[t] / (d * d);
-            sum += radiance_[t] * w;
+            const double w = nl * t.solidAngle / (d * d);
+            r += t.r * w;
+            g += t.g * w;
+            b += t.b * w;
             weight += w;
         }
-        return sum / weight;
+        return glm::dvec3(r, g, b) / weight;
     }
 
 private:
-    std::vector<glm::dvec3> directions_;
-    std::vector<glm::dvec3> radiance_;
-    std::vector<double> solidAngles_;
+    struct Texel {
+        double x, y, z;  // the direction of its centre
+        double solidAngle;
+        double r, g, b;  // its radiance
+    };
+    std::vector<Texel> texels_;
 };
 
 // Issue 48's map: a sky of about 1 (bluer and brighter towards the zenith) over a ground of about
