@@ -81,9 +81,13 @@ private:
         std::string line;
         while (std::getline(lines, line)) {
             ++lineNumber;
+            // Only a line whose first non-blank character is '#' can be an include: std::regex on
+            // every line of every program's sources took 5.6 % of a run of the analytic image
+            // tests (perf record), 3.1 % with this test first.
+            const std::size_t first = line.find_first_not_of(" \t\r\f\v");
             std::smatch match;
-            if (!std::regex_match(line, match, includePattern)) {
-                result_.text += line + "\n";
+            if (first == std::string::npos || line[first] != '#' || !std::regex_match(line, match, includePattern)) {
+                result_.text.append(line).push_back('\n');
                 continue;
             }
             const std::string includeName = match[1];

@@ -260,7 +260,11 @@ HeadlessContext::~HeadlessContext()
 {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    // The display stays initialised for the process (EGL ends it at exit): eglTerminate
+    // unloads the driver, and the next context's eglInitialize (a no-op on an initialised
+    // display, EGL 1.5 §3.2) would load it again. Mesa's llvmpipe is a 117 MB library whose
+    // relocation alone took 30 % of a small render; a process that renders one image after
+    // another (the image tests) paid it for each (docs/testing.md, "The suite's time").
 }
 
 }  // namespace manylights

@@ -5,10 +5,11 @@
                                                  count, the sum of their times and the N slowest
     test_times.py compare BEFORE AFTER [--top N] two logs: both sums, and the tests whose times
                                                  changed most, before and after
-    test_times.py interleave REGEX DIR... [--rounds R]
+    test_times.py interleave REGEX DIR... [--rounds R] [--jobs J]
                                                  runs the tests matching REGEX in each build folder
-                                                 in turn (ctest -j 1), the order rotated every
-                                                 round, and prints each test's times per folder
+                                                 in turn (ctest -j J, 1 unless given), the order
+                                                 rotated every round, and prints each run's wall
+                                                 time and each test's times per folder
     test_times.py interleave-gtest FILTER PROGRAM... [--rounds R]
                                                  the same with GoogleTest programs (--gtest_filter),
                                                  e.g. a copy of the image_tests built before a change
@@ -22,6 +23,7 @@ import re
 import statistics
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bench  # noqa: E402
@@ -81,16 +83,23 @@ def compare(before_path, after_path, top):
         print(f"  {before[name][0]:8.2f} -> {after[name][0]:7.2f}  {name}")
 
 
-def interleave(regex, folders, rounds):
+def interleave(regex, folders, rounds, jobs=1):
     runs = {folder: {} for folder in folders}
+    walls = {folder: [] for folder in folders}
     for round_number in range(rounds):
         shift = round_number % len(folders)
         for folder in folders[shift:] + folders[:shift]:
-            output = subprocess.run(["ctest", "--test-dir", folder, "-R", regex, "-j", "1"], capture_output=True,
-                                    text=True).stdout
-            for match in re.finditer(r"Test\s+#\d+: (\S+) \.+\s*(\*\*\*)?(\w[\w ]*?)\s+([\d.]+) sec", output):
+            start = time.monotonic()
+            output = subprocess.run(["ctest", "--test-dir", folder, "-R", regex, "-j", str(jobs)],
+                                    capture_output=True, text=True).stdout
+            walls[folder].append(time.monotonic() - start)
+            # A name may hold spaces (a group's "(part 1 of 3)", tests/cmake/write_test_groups.py).
+            for match in re.finditer(r"Test\s+#\d+: (\S.*?) \.+\s*(\*\*\*)?(\w[\w ]*?)\s+([\d.]+) sec", output):
                 runs[folder].setdefault(match.group(1), []).append((float(match.group(4)), match.group(3)))
-            print(f"round {round_number + 1}: {folder} done, load average {bench.load_average()}", flush=True)
+            print(f"round {round_number + 1}: {folder}: {walls[folder][-1]:.1f} s (ctest -j {jobs}, "
+                  f"{len(re.findall(r'Test +#', output))} tests), load average {bench.load_average()}", flush=True)
+    print("ctest's wall time per round: " + " | ".join(
+        folder + " " + ", ".join(f"{w:.1f}" for w in walls[folder]) for folder in folders))
     names = sorted({n for per_test in runs.values() for n in per_test})
     print("test: seconds per round in " + " | ".join(folders) + " (medians)")
     for name in names:
@@ -150,6 +159,7 @@ def main():
     p.add_argument("regex")
     p.add_argument("folders", nargs="+")
     p.add_argument("--rounds", type=int, default=2)
+    p.add_argument("--jobs", type=int, default=1)
     p = commands.add_parser("interleave-gtest")
     p.add_argument("pattern")
     p.add_argument("programs", nargs="+")
@@ -161,7 +171,7 @@ def main():
     elif args.command == "compare":
         compare(args.before, args.after, args.top)
     elif args.command == "interleave":
-        interleave(args.regex, args.folders, args.rounds)
+        interleave(args.regex, args.folders, args.rounds, args.jobs)
     else:
         interleave_gtest(args.pattern, args.programs, args.rounds)
     print(f"load average at the end: {bench.load_average()}")
