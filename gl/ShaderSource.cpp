@@ -82,8 +82,8 @@ private:
         while (std::getline(lines, line)) {
             ++lineNumber;
             // Only a line whose first non-blank character is '#' can be an include: std::regex on
-            // every line of every program's sources took 5.6 % of a run of the analytic image
-            // tests (perf record), 3.1 % with this test first.
+            // every line of every program's sources was a measurable share of a small render
+            // (docs/testing.md, "The suite's time").
             const std::size_t first = line.find_first_not_of(" \t\r\f\v");
             std::smatch match;
             if (first == std::string::npos || line[first] != '#' || !std::regex_match(line, match, includePattern)) {

@@ -262,9 +262,9 @@ HeadlessContext::~HeadlessContext()
     eglDestroyContext(display_, context_);
     // The display stays initialised for the process (EGL ends it at exit): eglTerminate
     // unloads the driver, and the next context's eglInitialize (a no-op on an initialised
-    // display, EGL 1.5 §3.2) would load it again. Mesa's llvmpipe is a 117 MB library whose
-    // relocation alone took 30 % of a small render; a process that renders one image after
-    // another (the image tests) paid it for each (docs/testing.md, "The suite's time").
+    // display, EGL 1.5 §3.2) would load it again. Loading llvmpipe, a 117 MB library, was a
+    // large share of a small render, paid for each render by a process that renders one image
+    // after another, as the image tests do (docs/testing.md, "The suite's time").
 }
 
 }  // namespace manylights

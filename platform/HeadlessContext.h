@@ -56,6 +56,8 @@ public:
     // why and through which platform it renders, once per process (platformFallbackNote): a GPU
     // server that falls back to llvmpipe is otherwise only seen in the timings.
     explicit HeadlessContext(const ContextOptions& options = {});
+    // Ends the context but leaves its EGL display initialised for the next one (EGL ends it at
+    // exit): terminating it would unload the driver, for the next context to load again.
     ~HeadlessContext();
     HeadlessContext(const HeadlessContext&) = delete;
     HeadlessContext& operator=(const HeadlessContext&) = delete;

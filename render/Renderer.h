@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl/Program.h"
+#include "render/DefaultImageSize.h"
 #include "render/Views.h"
 #include "render/driver/DriverProfile.h"
 #include "render/effects/DisplayPass.h"
@@ -92,10 +93,6 @@ struct RendererDesc {
     // commands. Empty: none.
     std::function<void()> waitHook{};
 };
-
-// The size of an image when none is asked for (docs/cli.md).
-inline constexpr int kDefaultImageWidth = 1280;
-inline constexpr int kDefaultImageHeight = 720;
 
 class Renderer {
 public:

@@ -20,7 +20,7 @@
 
 #include "apps/cli/OptionText.h"
 #include "platform/EglChoice.h"
-#include "render/Renderer.h"  // kDefaultImageWidth, kDefaultImageHeight
+#include "render/Renderer.h"
 #include "render/driver/DriverProfile.h"
 #include "render/frame/GBuffer.h"
 #include "render/frame/PassProfiler.h"

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "render/Renderer.h"  // kDefaultImageWidth, kDefaultImageHeight
+#include "render/DefaultImageSize.h"
 
 namespace manylights {
 

@@ -10,6 +10,11 @@
                                                  in turn (ctest -j J, 1 unless given), the order
                                                  rotated every round, and prints each run's wall
                                                  time and each test's times per folder
+    test_times.py processes FILTER PROGRAM... [--rounds R] [--jobs J]
+                                                 the GoogleTest programs' tests matching FILTER, one
+                                                 process each (J at a time, 1 unless given), then
+                                                 all in one process, each program in turn, every
+                                                 round: each way's wall time
     test_times.py interleave-gtest FILTER PROGRAM... [--rounds R]
                                                  the same with GoogleTest programs (--gtest_filter),
                                                  e.g. a copy of the image_tests built before a change
@@ -27,6 +32,9 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bench  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "cmake"))
+import write_test_groups  # noqa: E402  (the listing of a GoogleTest program's tests)
 
 
 def read_log(path):
@@ -145,6 +153,37 @@ def interleave_gtest(pattern, programs, rounds):
     print("sum of the medians: " + " | ".join(f"{totals[p]:.1f} s" for p in programs))
 
 
+def timed(commands, jobs):
+    """Seconds to run `commands` (argument lists), `jobs` at a time; raises if one fails."""
+    start = time.monotonic()
+    pending, running = list(commands), []
+    while pending or running:
+        while pending and len(running) < jobs:
+            running.append(subprocess.Popen(pending.pop(0), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        process = running.pop(0)
+        if process.wait() != 0:
+            raise SystemExit(f"test_times.py: {' '.join(process.args)} failed (exit {process.returncode})")
+    return time.monotonic() - start
+
+
+def processes(pattern, programs, rounds, jobs):
+    """The tests matching `pattern` run one process each (`jobs` at a time) and all in one
+    process, with each program in turn; the wall times per round."""
+    walls = {(program, how): [] for program in programs for how in ("each", "one")}
+    for round_number in range(rounds):
+        shift = round_number % len(programs)
+        for program in programs[shift:] + programs[:shift]:
+            names = write_test_groups.list_tests(program, pattern, 60)
+            walls[(program, "each")].append(timed([[program, f"--gtest_filter={name}"] for name in names], jobs))
+            walls[(program, "one")].append(timed([[program, f"--gtest_filter={pattern}"]], 1))
+            print(f"round {round_number + 1}: {program}: {len(names)} tests, one process each ({jobs} at a time) "
+                  f"{walls[(program, 'each')][-1]:.1f} s, all in one {walls[(program, 'one')][-1]:.1f} s, "
+                  f"load average {bench.load_average()}", flush=True)
+    for program in programs:
+        print(f"{program}: one process each " + ", ".join(f"{w:.1f}" for w in walls[(program, "each")]) +
+              " s; all in one " + ", ".join(f"{w:.1f}" for w in walls[(program, "one")]) + " s")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -160,6 +199,11 @@ def main():
     p.add_argument("folders", nargs="+")
     p.add_argument("--rounds", type=int, default=2)
     p.add_argument("--jobs", type=int, default=1)
+    p = commands.add_parser("processes")
+    p.add_argument("pattern")
+    p.add_argument("programs", nargs="+")
+    p.add_argument("--rounds", type=int, default=2)
+    p.add_argument("--jobs", type=int, default=1)
     p = commands.add_parser("interleave-gtest")
     p.add_argument("pattern")
     p.add_argument("programs", nargs="+")
@@ -172,6 +216,8 @@ def main():
         compare(args.before, args.after, args.top)
     elif args.command == "interleave":
         interleave(args.regex, args.folders, args.rounds, args.jobs)
+    elif args.command == "processes":
+        processes(args.pattern, args.programs, args.rounds, args.jobs)
     else:
         interleave_gtest(args.pattern, args.programs, args.rounds)
     print(f"load average at the end: {bench.load_average()}")

@@ -7,6 +7,7 @@ test the program lists exactly once: no test is lost by running them a few to a 
 
     test_write_test_groups.py [GROUPS_FILE PROGRAM[=FILTER]]...
 """
+import collections
 import os
 import re
 import sys
@@ -67,9 +68,9 @@ def filters_in(groups_file):
 
 def check_coverage(groups_file, program, gtest_filter):
     listed = groups.list_tests(program, gtest_filter, 60)
-    run = [name for each in filters_in(groups_file) for name in each.split(":")]
+    run = collections.Counter(name for each in filters_in(groups_file) for name in each.split(":"))
     missing = sorted(set(listed) - set(run))
-    twice = sorted({name for name in run if run.count(name) > 1})
+    twice = sorted(name for name, times in run.items() if times > 1)
     extra = sorted(set(run) - set(listed))
     problems = [f"{len(missing)} not run: {missing[:5]}"] if missing else []
     problems += [f"{len(twice)} run twice: {twice[:5]}"] if twice else []
