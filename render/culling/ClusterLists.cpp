@@ -20,7 +20,7 @@ namespace manylights {
 
 namespace {
 
-constexpr GLuint kGroupSize = 64;  // local_size_x of the list passes
+constexpr GLuint kListGroupSize = 64;  // local_size_x of the list passes
 // A wide light's walk of a band (lib/light_tiles.glsl): its lane's share of the band's tiles,
 // each tile's slices.
 static_assert(kTilesPerBand / kLightTileLanes * (kClusterSlices + 1) < kMaxLoopIterations);
@@ -39,7 +39,7 @@ constexpr std::uint32_t kMinimumCapacity = 1u << 16;
 // lights), so that a single image is rarely rendered twice.
 constexpr std::uint32_t kFirstPlanPairsPerCell = 16;
 
-GLuint groupsFor(std::uint32_t items) { return (items + kGroupSize - 1) / kGroupSize; }
+GLuint groupsFor(std::uint32_t items) { return (items + kListGroupSize - 1) / kListGroupSize; }
 
 Pass listPass(std::string_view name)
 {

@@ -9,7 +9,7 @@ namespace manylights {
 
 namespace {
 
-constexpr GLuint kGroupSize = 64;  // local_size_x of scan.comp
+constexpr GLuint kScanGroupSize = 64;  // local_size_x of scan.comp
 
 gl::Program scanProgram(std::string_view label, ScanStep step)
 {
@@ -61,7 +61,7 @@ void GpuScan::runLevel(FramePasses& passes, std::string_view name, const gl::Buf
     gl::Buffer& partials = partials_[level];
     if (!partials || partials.size() < std::size_t{blocks} * sizeof(std::uint32_t))
         partials = gl::Buffer("scan partials", std::size_t{blocks} * sizeof(std::uint32_t), nullptr, 0);
-    const GLuint groups = (blocks + kGroupSize - 1) / kGroupSize;
+    const GLuint groups = (blocks + kScanGroupSize - 1) / kScanGroupSize;
     const auto step = [&](const gl::Program& program) {
         passes.run(pass, [&] {
             bindData();

@@ -18,7 +18,7 @@ namespace {
 // Shared with shaders/ssao.comp and shaders/ssao_blur.comp.
 constexpr GLuint kSamplesBinding = bindings::SSAO_SAMPLES_BUFFER_BINDING;
 constexpr GLuint kOcclusionImageUnit = bindings::OCCLUSION_IMAGE_UNIT;
-constexpr int kGroupSize = 8;
+constexpr int kSsaoGroupSize = 8;
 // Depth bias of the occlusion test, as a fraction of the radius: curved surfaces bend
 // away from their own tangent plane, and the occluder's plane is a pixel's, not the sample's.
 constexpr float kBiasFraction = 0.02f;
@@ -84,8 +84,8 @@ void Ssao::run(const AmbientOcclusion& settings, FramePasses& passes)
     if (raw_.width() != targets.width || raw_.height() != targets.height)
         resize(targets.width, targets.height);
     targets.gbuffer.fill(passes);
-    const auto groupsX = static_cast<GLuint>((targets.width + kGroupSize - 1) / kGroupSize);
-    const auto groupsY = static_cast<GLuint>((targets.height + kGroupSize - 1) / kGroupSize);
+    const auto groupsX = static_cast<GLuint>((targets.width + kSsaoGroupSize - 1) / kSsaoGroupSize);
+    const auto groupsY = static_cast<GLuint>((targets.height + kSsaoGroupSize - 1) / kSsaoGroupSize);
     // The occlusion counts as part of the G-buffer (Resource::GBuffer): the passes that sample
     // it after these write it wait for them.
     constexpr Pass kSsaoPass{

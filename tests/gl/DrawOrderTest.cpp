@@ -17,8 +17,8 @@ namespace {
 
 class DrawOrderTest : public GlContextTest {};
 
-constexpr int kWidth = 96;
-constexpr int kHeight = 64;
+constexpr int kTargetWidth = 96;
+constexpr int kTargetHeight = 64;
 
 // Three equal boxes on the view axis, at z = zs[0], zs[1], zs[2] in the file's order, seen
 // from `eyeZ` on the z axis: the nearest one hides the other two entirely.
@@ -40,10 +40,10 @@ GLuint shadedSamples(const std::string& json)
     const Scene scene = parseScene(json, "<draw order test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     GpuScene gpuScene(scene, lights, resolveDriverChoices({.profile = DriverProfile::Auto}));
-    gpuScene.setViewport(kWidth, kHeight);
-    const gl::Texture2D depthStencil("depth", GL_DEPTH24_STENCIL8, kWidth, kHeight);
-    const GBuffer gbuffer(kWidth, kHeight, depthStencil, kDefaultGBufferLayout);
-    glViewport(0, 0, kWidth, kHeight);
+    gpuScene.setViewport(kTargetWidth, kTargetHeight);
+    const gl::Texture2D depthStencil("depth", GL_DEPTH24_STENCIL8, kTargetWidth, kTargetHeight);
+    const GBuffer gbuffer(kTargetWidth, kTargetHeight, depthStencil, kDefaultGBufferLayout);
+    glViewport(0, 0, kTargetWidth, kTargetHeight);
     GLuint query = 0;
     glCreateQueries(GL_SAMPLES_PASSED, 1, &query);
     glBeginQuery(GL_SAMPLES_PASSED, query);

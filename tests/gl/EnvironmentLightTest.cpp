@@ -41,7 +41,6 @@
 namespace manylights {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kRelativeTolerance = 0.02;
 constexpr double kAbsoluteTolerance = 1e-3;
 
@@ -215,7 +214,7 @@ TEST_F(EnvironmentLightTest, LobeIntegralIsTheSumOverTheSphere)
         for (int s = 0; s < kSteps; ++s) {
             const double c = (s + 0.5) / kSteps;
             const double t = (0.5 + 0.5 * c) * (a2 - 1.0) + 1.0;
-            sum += a2 / (kPi * t * t) * c * 2.0 * kPi / kSteps;
+            sum += a2 / (std::numbers::pi * t * t) * c * 2.0 * std::numbers::pi / kSteps;
         }
         EXPECT_NEAR(ggxLobeIntegral(roughness), sum, 1e-6 * sum) << roughness;
     }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ClusterListStatus.h"
 #include "GlContextTest.h"
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -24,8 +25,7 @@ namespace {
 
 class GlobalLightOrderTest : public GlContextTest {};
 
-// lib/cluster_list_status.glsl: ClusterListStatus, whose 15th uint counts the candidates.
-constexpr std::size_t kStatusUints = 16;
+// ClusterListStatus (tests/gl/ClusterListStatus.h): its 15th uint counts the candidates.
 constexpr std::size_t kCandidatesIndex = 14;
 constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
 
@@ -47,7 +47,7 @@ TEST_F(GlobalLightOrderTest, SortsTheCandidatesIntoTheLightsOrderWithTheirRecord
         std::iota(all.begin(), all.end(), 0u);
         std::shuffle(all.begin(), all.end(), random);
         std::vector<std::uint32_t> candidates(all.begin(), all.begin() + count);
-        std::vector<std::uint32_t> status(kStatusUints, 0u);
+        std::vector<std::uint32_t> status(test::kClusterListStatusUints, 0u);
         status[kCandidatesIndex] = count;
         // The counting run writes at most the capacity's worth.
         candidates.resize(std::min(count, kGlobalLightCapacity));

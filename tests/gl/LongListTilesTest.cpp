@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ClusterListStatus.h"
 #include "GlContextTest.h"
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -25,8 +26,7 @@ namespace {
 
 class LongListTilesTest : public GlContextTest {};
 
-// lib/cluster_list_status.glsl: ClusterListStatus, 16 uints.
-constexpr std::size_t kStatusUints = 16;
+// Where the long tiles' counts sit in ClusterListStatus (tests/gl/ClusterListStatus.h).
 constexpr std::size_t kLongTileGroupsIndex = 0;  // x, y, z
 constexpr std::size_t kLongestListIndex = 4;
 constexpr std::size_t kLongTilesIndex = 15;
@@ -60,7 +60,7 @@ TEST_F(LongListTilesTest, ListsEveryLongTilePastOneRowOfWorkgroups)
     frame.viewport = glm::vec4(kWidth, kHeight, 1.0f / kWidth, 1.0f / kHeight);
     gl::Buffer frameBuffer("test frame", sizeof frame, &frame, 0);
     gl::Buffer countBuffer("test list counts", counts.size() * sizeof(std::uint32_t), counts.data(), 0);
-    std::vector<std::uint32_t> status(kStatusUints, 0u);
+    std::vector<std::uint32_t> status(test::kClusterListStatusUints, 0u);
     status[kLongTileGroupsIndex + 1] = 1;  // as ClusterLists::Status starts: x and z grow from 0
     gl::Buffer statusBuffer("test status", status.size() * sizeof(std::uint32_t), status.data(), 0);
     gl::Buffer listed("test long tiles", std::size_t{tiles} * sizeof(std::uint32_t), nullptr, 0);

@@ -1,5 +1,6 @@
 // Lights as packed for the GPU (render/scene/GpuScene.h: GpuLight), made by hand for the tests of
-// the CPU's culling and grouping (TileCullingTest.cpp, StencilBatchesTest.cpp).
+// the CPU's culling, grouping and shadow faces (TileCullingTest.cpp, StencilBatchesTest.cpp,
+// ShadowFacesTest.cpp).
 #pragma once
 
 #include <cmath>

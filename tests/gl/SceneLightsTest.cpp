@@ -15,7 +15,7 @@ namespace {
 
 class SceneLightsTest : public GlContextTest {};
 
-Light pointLight(glm::vec3 position, float range)
+Light scenePointLight(glm::vec3 position, float range)
 {
     Light light;
     light.position = position;
@@ -78,8 +78,8 @@ int expectPosedAsOnTheCpu(const std::vector<GpuLight>& gpu, const SceneLights& l
 TEST_F(SceneLightsTest, LightsAreKeptInMortonOrderOfTheirRestPositions)
 {
     // Drawn in an order that jumps across the box; the ranges tell them apart.
-    const std::vector<Light> drawn{pointLight({10, 0, 10}, 1.0f), pointLight({0, 0, 0}, 2.0f),
-                                   pointLight({10, 0, 0}, 3.0f), pointLight({0, 0, 10}, 4.0f)};
+    const std::vector<Light> drawn{scenePointLight({10, 0, 10}, 1.0f), scenePointLight({0, 0, 0}, 2.0f),
+                                   scenePointLight({10, 0, 0}, 3.0f), scenePointLight({0, 0, 10}, 4.0f)};
     const SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     ASSERT_EQ(lights.count(), 4u);
     // Morton order over the box: (0,0) then x = 10 (bit 0), then z = 10 (bit 2), then both.
@@ -92,7 +92,7 @@ TEST_F(SceneLightsTest, LightsAreKeptInMortonOrderOfTheirRestPositions)
 
 TEST_F(SceneLightsTest, LightsAtRestAreNotPosedAgain)
 {
-    const std::vector<Light> drawn{pointLight({0, 0, 0}, 1.0f), pointLight({5, 0, 5}, 2.0f)};
+    const std::vector<Light> drawn{scenePointLight({0, 0, 0}, 1.0f), scenePointLight({5, 0, 5}, 2.0f)};
     SceneLights lights(drawn, 0.01f, resolveDriverChoices({.profile = DriverProfile::Software}));
     const auto version = lights.version();
     lights.pose(3.5);
@@ -106,7 +106,7 @@ TEST_F(SceneLightsTest, OnlyTheAnimatedLightsMoveAndTheGpuHasTheirPose)
     // Many still lights with a few orbiting ones among them, far apart in the order.
     std::vector<Light> drawn;
     for (int i = 0; i < 600; ++i) {
-        Light light = pointLight({float(i % 30), 0.0f, float(i / 30)}, 0.5f + 0.001f * float(i));
+        Light light = scenePointLight({float(i % 30), 0.0f, float(i / 30)}, 0.5f + 0.001f * float(i));
         if (i % 97 == 0)
             light.animation = OrbitAnimation{.radius = 2.0f, .degreesPerSecond = 90.0f};
         drawn.push_back(light);
@@ -148,7 +148,7 @@ TEST_F(SceneLightsTest, MemoryIsTheBufferAndTheMovingLightsMotions)
 {
     std::vector<Light> drawn;
     for (int i = 0; i < 1500; ++i) {
-        Light light = pointLight({float(i % 40), 0.0f, float(i / 40)}, 1.0f);
+        Light light = scenePointLight({float(i % 40), 0.0f, float(i / 40)}, 1.0f);
         if (i % 3 == 0)
             light.animation = DriftAnimation{};
         drawn.push_back(light);
@@ -168,7 +168,7 @@ TEST_F(SceneLightsTest, TheGpuPosesEveryMotionAsTheCpuDoes)
 {
     std::vector<Light> drawn;
     for (int i = 0; i < 1000; ++i) {
-        Light light = pointLight({float(i % 40) - 20.0f, 0.5f + float(i % 3), float(i / 40) - 12.0f}, 1.0f);
+        Light light = scenePointLight({float(i % 40) - 20.0f, 0.5f + float(i % 3), float(i / 40) - 12.0f}, 1.0f);
         const float phase = 137.5f * float(i);
         if (i % 2 == 0)
             light.animation = OrbitAnimation{.radius = 0.5f + float(i % 5) * 0.5f,
@@ -193,7 +193,7 @@ TEST_F(SceneLightsTest, TheGpuPosesEveryMotionAsTheCpuDoes)
 TEST_F(SceneLightsTest, TheGpuPosesLightsPastOneRowOfWorkgroups)
 {
     constexpr std::size_t kLights = 32768 * 64 + 100;
-    std::vector<Light> drawn(kLights, pointLight({0, 0, 0}, 1.0f));
+    std::vector<Light> drawn(kLights, scenePointLight({0, 0, 0}, 1.0f));
     for (std::size_t i = 0; i < kLights; ++i) {
         drawn[i].position = {float(i % 2048) * 0.01f, 0.0f, float(i / 2048) * 0.01f};
         drawn[i].animation = OrbitAnimation{.radius = 0.001f * float(1 + i % 7)};

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "PackedLights.h"
 #include "render/shadows/PageAllocator.h"
 #include "render/shadows/ShadowFaces.h"
 #include "render/shadows/ShadowPageLayout.h"
@@ -73,20 +74,8 @@ TEST(PageAllocator, TheSameRequestsPlaceTheSameBlocks)
     EXPECT_EQ(c.allocate(1), (PageBlock{0, 1, 1}));
 }
 
-GpuLight pointLight(const glm::vec3& position, float radius)
-{
-    GpuLight light{};
-    light.positionRadius = glm::vec4(position, radius);
-    light.spotAxisCosCutoff = glm::vec4(0.0f, -1.0f, 0.0f, -2.0f);  // a point light's "cone"
-    return light;
-}
-
-GpuLight spotLight(const glm::vec3& position, float radius, const glm::vec3& axis, float cutoffDegrees)
-{
-    GpuLight light = pointLight(position, radius);
-    light.spotAxisCosCutoff = glm::vec4(glm::normalize(axis), std::cos(glm::radians(cutoffDegrees)));
-    return light;
-}
+using test::pointLight;
+using test::spotLight;
 
 TEST(ShadowFaces, LevelsFillWholePagesWithTheirGuardTexels)
 {

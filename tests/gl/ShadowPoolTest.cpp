@@ -20,7 +20,7 @@ class ShadowPoolTest : public GlContextTest {};
 // A directional light with shadows, a narrow spot (one face), a point light and a 120° spot
 // (six faces each), over a floor with a box in the air and a bouncing box far from the lights
 // at the side of the view.
-const char* kScene = R"({
+const char* kShadowedScene = R"({
     "camera": {"eye": [3, 6, 7], "look_at": [0, 0, 0], "fov_y": 50},
     "ambient": [0.05, 0.05, 0.05],
     "directional": {"direction": [1, -2, 0], "intensity": [0.3, 0.3, 0.3], "shadows": true},
@@ -39,7 +39,7 @@ constexpr std::uint64_t kDirectionalPasses = 1;
 
 TEST_F(ShadowPoolTest, AStillFrameMarksAndDrawsNothing)
 {
-    const Scene scene = parseScene(kScene, "<shadow pool test>", ".");
+    const Scene scene = parseScene(kShadowedScene, "<shadow pool test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     RendererDesc desc{.width = 96, .height = 64, .shadowLights = kAllShadowLights};
     Renderer renderer(scene, lights, desc);
@@ -73,7 +73,7 @@ TEST_F(ShadowPoolTest, AStillFrameMarksAndDrawsNothing)
 
 TEST_F(ShadowPoolTest, AMovingObjectRedrawsOnlyTheFacesItMeets)
 {
-    const Scene scene = parseScene(kScene, "<shadow pool test>", ".");
+    const Scene scene = parseScene(kShadowedScene, "<shadow pool test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     RendererDesc desc{.width = 96, .height = 64, .shadowLights = kAllShadowLights};
     Renderer renderer(scene, lights, desc);
@@ -99,7 +99,7 @@ TEST_F(ShadowPoolTest, AMovingObjectRedrawsOnlyTheFacesItMeets)
 
 TEST_F(ShadowPoolTest, TheCapChoosesTheBrightestOnScreen)
 {
-    const Scene scene = parseScene(kScene, "<shadow pool test>", ".");
+    const Scene scene = parseScene(kShadowedScene, "<shadow pool test>", ".");
     const std::vector<Light> lights = expandLights(scene, std::nullopt);
     RendererDesc desc{.width = 96, .height = 64};
     Renderer renderer(scene, lights, desc);

@@ -19,8 +19,8 @@ namespace manylights {
 namespace {
 
 constexpr int kTile = kDefaultTileSize;
-constexpr int kWidth = 5 * kTile;  // 5x2 tiles
-constexpr int kHeight = 2 * kTile;
+constexpr int kTilesWidth = 5 * kTile;  // 5x2 tiles
+constexpr int kTilesHeight = 2 * kTile;
 constexpr float kEyeHeight = 10.0f;
 constexpr float kLightHeight = 0.3f;
 
@@ -52,7 +52,7 @@ Scene floorScene()
 void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, std::mt19937& random)
 {
     const float tanY = std::tan(glm::radians(30.0f) / 2.0f);
-    const float tanX = tanY * static_cast<float>(kWidth) / static_cast<float>(kHeight);
+    const float tanX = tanY * static_cast<float>(kTilesWidth) / static_cast<float>(kTilesHeight);
     const float depth = kEyeHeight - kLightHeight;
     static_assert(kTile == 16, "the margins below are for 16-pixel tiles");
     std::uniform_real_distribution<float> within(5.0f, 11.0f);
@@ -60,8 +60,8 @@ void addLightsOverTile(std::vector<Light>& lights, int tx, int ty, int count, st
     for (int i = 0; i < count; ++i) {
         const float px = static_cast<float>(tx * kTile) + within(random);
         const float py = static_cast<float>(ty * kTile) + within(random);
-        const float slopeX = (2.0f * px / kWidth - 1.0f) * tanX;
-        const float slopeY = (2.0f * py / kHeight - 1.0f) * tanY;
+        const float slopeX = (2.0f * px / kTilesWidth - 1.0f) * tanX;
+        const float slopeY = (2.0f * py / kTilesHeight - 1.0f) * tanY;
         Light light;
         light.position = glm::vec3(slopeX * depth, kLightHeight, -slopeY * depth);
         light.range = 0.5f;
@@ -84,7 +84,7 @@ TEST_P(TiledQuadsPrimitiveTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
         for (int tx = 0; tx < 5; ++tx)
             addLightsOverTile(lights, tx, ty, counts[ty][tx], random);
 
-    Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight, .countWork = true});
+    Renderer renderer(scene, lights, {.width = kTilesWidth, .height = kTilesHeight, .countWork = true});
     auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
     tiled.drawTilesAsQuads(GetParam());
     renderer.renderFrame(tiled, ViewMode::LightCount);
@@ -110,10 +110,10 @@ TEST_P(TiledQuadsPrimitiveTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
     // Each covered pixel evaluated exactly its tile's lights, once; the background none.
     int coveredPixels = 0;
     int wrong = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            const int glY = kHeight - 1 - y;  // Image rows run top to bottom
-            const bool surface = covered[static_cast<std::size_t>(y) * kWidth + x];
+    for (int y = 0; y < kTilesHeight; ++y)
+        for (int x = 0; x < kTilesWidth; ++x) {
+            const int glY = kTilesHeight - 1 - y;  // Image rows run top to bottom
+            const bool surface = covered[static_cast<std::size_t>(y) * kTilesWidth + x];
             coveredPixels += surface;
             const float expected =
                 surface ? static_cast<float>(lists.tiles[lists.tileIndex(x / kTile, glY / kTile)].count) : 0.0f;
@@ -122,8 +122,8 @@ TEST_P(TiledQuadsPrimitiveTest, EveryVariantDrawsItsTilesOverExactlyTheirPixels)
                               << " evaluations, expected " << expected;
         }
     EXPECT_EQ(wrong, 0);
-    EXPECT_GT(coveredPixels, kWidth * kHeight / 2);
-    EXPECT_LT(coveredPixels, kWidth * kHeight) << "the image should show some background";
+    EXPECT_GT(coveredPixels, kTilesWidth * kTilesHeight / 2);
+    EXPECT_LT(coveredPixels, kTilesWidth * kTilesHeight) << "the image should show some background";
     EXPECT_GE(renderer.lastWorkCounts().lightEvaluations, renderer.lastWorkCounts().inRangePairs);
     EXPECT_GT(renderer.lastWorkCounts().inRangePairs, 0u);
 
@@ -161,10 +161,11 @@ TEST_P(TiledQuadsPrimitiveTest, NoLightsAndResizing)
     wide.range = 40.0f;
     wide.intensity = glm::vec3(0.3f);
     lights.push_back(wide);
-    Renderer renderer(scene, lights, {.width = kWidth, .height = kHeight});
+    Renderer renderer(scene, lights, {.width = kTilesWidth, .height = kTilesHeight});
     auto& tiled = dynamic_cast<TiledQuadsTechnique&>(renderer.technique("tiled-quads"));
     tiled.drawTilesAsQuads(GetParam());
-    for (const auto& [width, height] : {std::pair{kWidth, kHeight}, std::pair{97, 45}, std::pair{kWidth, kHeight}}) {
+    for (const auto& [width, height] :
+         {std::pair{kTilesWidth, kTilesHeight}, std::pair{97, 45}, std::pair{kTilesWidth, kTilesHeight}}) {
         renderer.apply({.width = width, .height = height});
         renderer.renderFrame(tiled, ViewMode::Final);
         EXPECT_EQ(tiled.lastLists().tilesX, (width + kTile - 1) / kTile);

@@ -29,8 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kWidth = 32;
-constexpr int kHeight = 16;
+constexpr int kImageWidth = 32;
+constexpr int kImageHeight = 16;
 
 void appendTo(void* context, void* data, int size)
 {
@@ -41,8 +41,8 @@ void appendTo(void* context, void* data, int size)
 std::vector<unsigned char> textureTexels()
 {
     std::vector<unsigned char> rgb;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x)
+    for (int y = 0; y < kImageHeight; ++y)
+        for (int x = 0; x < kImageWidth; ++x)
             for (int c = 0; c < 3; ++c)
                 rgb.push_back(static_cast<unsigned char>((x * 37 + y * 91 + c * 53 + x * y * 7) % 256));
     return rgb;
@@ -95,13 +95,21 @@ TEST(TruncatedImages, TexturesCutAnywhereAreRefusedAsTruncated)
     const std::vector<unsigned char> rgb = textureTexels();
     const std::vector<TextureFormat> formats = {
         {"texture.png",
-         [&](std::string* out) { return stbi_write_png_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 0); }},
+         [&](std::string* out) {
+             return stbi_write_png_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data(), 0);
+         }},
         {"texture.jpg",
-         [&](std::string* out) { return stbi_write_jpg_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 90); }},
+         [&](std::string* out) {
+             return stbi_write_jpg_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data(), 90);
+         }},
         {"texture.bmp",
-         [&](std::string* out) { return stbi_write_bmp_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data()); }},
+         [&](std::string* out) {
+             return stbi_write_bmp_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data());
+         }},
         {"texture.tga",
-         [&](std::string* out) { return stbi_write_tga_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data()); }},
+         [&](std::string* out) {
+             return stbi_write_tga_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data());
+         }},
     };
     for (const TextureFormat& format : formats) {
         const std::string whole = encodedWithStb(format.write);
@@ -111,8 +119,8 @@ TEST(TruncatedImages, TexturesCutAnywhereAreRefusedAsTruncated)
         };
         // Whole, it decodes: the cuts below are refused for being cut, not for their format.
         const DecodedImage decoded = decodeImageMemory(format.name, bytesOf(whole), kMaxTextureSide);
-        EXPECT_EQ(decoded.width, kWidth) << format.name;
-        EXPECT_EQ(decoded.height, kHeight) << format.name;
+        EXPECT_EQ(decoded.width, kImageWidth) << format.name;
+        EXPECT_EQ(decoded.height, kImageHeight) << format.name;
         for (const std::size_t cut : cutPoints(whole.size())) {
             const std::string part = whole.substr(0, cut);
             expectTruncatedError([&] { decodeImageMemory(format.name, bytesOf(part), kMaxTextureSide); }, format.name,
@@ -128,17 +136,21 @@ TEST(TruncatedImages, BytesAfterTheEndMarkerAreAccepted)
     const std::vector<unsigned char> rgb = textureTexels();
     const std::vector<TextureFormat> formats = {
         {"padded.png",
-         [&](std::string* out) { return stbi_write_png_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 0); }},
+         [&](std::string* out) {
+             return stbi_write_png_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data(), 0);
+         }},
         {"padded.jpg",
-         [&](std::string* out) { return stbi_write_jpg_to_func(appendTo, out, kWidth, kHeight, 3, rgb.data(), 90); }},
+         [&](std::string* out) {
+             return stbi_write_jpg_to_func(appendTo, out, kImageWidth, kImageHeight, 3, rgb.data(), 90);
+         }},
     };
     for (const TextureFormat& format : formats) {
         const std::string padded = encodedWithStb(format.write) + "trailing bytes";
         const DecodedImage decoded = decodeImageMemory(
             format.name, std::span(reinterpret_cast<const unsigned char*>(padded.data()), padded.size()),
             kMaxTextureSide);
-        EXPECT_EQ(decoded.width, kWidth) << format.name;
-        EXPECT_EQ(decoded.height, kHeight) << format.name;
+        EXPECT_EQ(decoded.width, kImageWidth) << format.name;
+        EXPECT_EQ(decoded.height, kImageHeight) << format.name;
     }
 }
 

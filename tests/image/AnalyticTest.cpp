@@ -46,7 +46,6 @@ using test::renderPfm;
 using test::scratchDirectory;
 using test::writeFile;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kAbsoluteTolerance = test::kAnalyticTolerance.absolute;  // 2e-5, tests/support/ImageComparison.h
 constexpr double kRelativeTolerance = test::kAnalyticTolerance.relative;  // 1e-4
 
@@ -249,7 +248,8 @@ TEST_P(Analytic, ConstantNormalMapTiltsTheShadingNormal)
     for (int i = 0; i < width * height * 3; ++i)
         ASSERT_EQ(texels[i], texels[i % 3]) << "the map must be constant";
     stbi_image_free(texels);
-    const double ideal = (std::sin(kPi / 6) * std::sqrt(2.0) + std::cos(kPi / 6)) / std::sqrt(3.0);
+    const double ideal =
+        (std::sin(std::numbers::pi / 6) * std::sqrt(2.0) + std::cos(std::numbers::pi / 6)) / std::sqrt(3.0);
     const double NdotL = (t.x + t.y + t.z) / (std::sqrt(3.0) * glm::length(t));
     EXPECT_NEAR(NdotL, ideal, 2.0 / 255.0);  // the stored map is the one described above
 
@@ -412,7 +412,7 @@ TEST_P(Analytic, TransparentSurfacesNearerAndFartherThanEveryOpaqueOneGetTheirLi
     const Image image = renderPfm((dir / "scene.json").string(), dir / "final.pfm",
                                   {"--size", "129x65", "--technique", GetParam(), "--gbuffer", "seed"});
     // The quads' centres on screen: x = ±2 at depth 4 and 30 from the eye; fov 60, aspect 129/65.
-    const double tanHalf = std::tan(kPi / 6);
+    const double tanHalf = std::tan(std::numbers::pi / 6);
     const double aspect = static_cast<double>(width) / height;
     const auto column = [&](double x, double depth) {
         return static_cast<int>(std::floor((0.5 + 0.5 * x / (depth * tanHalf * aspect)) * width));

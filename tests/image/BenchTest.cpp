@@ -19,14 +19,6 @@ namespace {
 using test::runExecutable;
 using test::scratchDirectory;
 
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::vector<std::string> split(const std::string& text, char separator)
 {
     std::vector<std::string> parts;
@@ -78,7 +70,7 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
     // Not a terminal: one progress line per combination.
     EXPECT_NE(result.stderrText.find("[4/4] deferred 64 lights 64x36: "), std::string::npos) << result.stderrText;
 
-    const std::string csvText = readText(csv);
+    const std::string csvText = test::readFile(csv);
     ASSERT_FALSE(csvText.empty());
     EXPECT_EQ(csvText.back(), '\n');
     const std::vector<std::string> rows = lines(csvText);
@@ -147,7 +139,7 @@ TEST(Bench, TinySweepWritesCsvAndPlot)
     // display pass of the default look (PBR Neutral and sRGB) follows them.
     EXPECT_EQ(split(split(rows[2], ',')[column("passes")], ';').size(), 3u) << rows[2];
 
-    const std::string plot = readText(svg);
+    const std::string plot = test::readFile(svg);
     EXPECT_EQ(plot.rfind("<svg", 0), 0u) << plot.substr(0, 80);
     EXPECT_NE(plot.find("</svg>"), std::string::npos);
     EXPECT_EQ(occurrences(plot, "<polyline"), 2u);  // one line per technique
@@ -172,7 +164,7 @@ TEST(Bench, FpsPosesTheMovingLightsInEveryFrame)
             args.insert(args.end(), {"--fps", "10"});
         const test::ProcessResult result = runExecutable(args);
         ASSERT_EQ(result.exitCode, 0) << result.stderrText;
-        const std::vector<std::string> rows = lines(readText(csv));
+        const std::vector<std::string> rows = lines(test::readFile(csv));
         ASSERT_EQ(rows.size(), 2u);
         const std::vector<std::string> header = split(rows[0], ',');
         const std::vector<std::string> row = split(rows[1], ',');
@@ -197,7 +189,7 @@ TEST(Bench, GpuPassTimingIssuesFramesBackToBackAndSaysSo)
     EXPECT_NE(result.stdoutText.find("Pass timing gpu: frames issued back to back"), std::string::npos)
         << result.stdoutText;
     EXPECT_NE(result.stdoutText.find("passes (median gpu ms)"), std::string::npos) << result.stdoutText;
-    const std::vector<std::string> rows = lines(readText(csv));
+    const std::vector<std::string> rows = lines(test::readFile(csv));
     ASSERT_EQ(rows.size(), 2u);
     const std::vector<std::string> header = split(rows[0], ',');
     const std::vector<std::string> row = split(rows[1], ',');
@@ -249,7 +241,7 @@ TEST(Bench, JsonNamesEachPassClock)
         ASSERT_EQ(result.exitCode, 0) << result.stderrText;
         const std::string& tableStream = toStdout ? result.stderrText : result.stdoutText;
         EXPECT_NE(tableStream.find("technique  lights"), std::string::npos) << tableStream;
-        const std::string text = toStdout ? result.stdoutText : readText(file);
+        const std::string text = toStdout ? result.stdoutText : test::readFile(file);
         ASSERT_FALSE(text.empty());
         const nlohmann::json json = nlohmann::json::parse(text);  // throws, and fails the test, unless it is JSON
 
@@ -373,7 +365,7 @@ TEST(Bench, ShardsSplitTheCasesAndTheirCsvsConcatenate)
             {"bench", "--techniques", "forward,deferred", "--lights", "16,64", "--size", "32x18", "--frames", "1",
              "--warmup", "0", "--shard", std::to_string(shard) + "/3", "--csv", csv.string()});
         ASSERT_EQ(result.exitCode, 0) << result.stderrText;
-        const std::string text = readText(csv);
+        const std::string text = test::readFile(csv);
         rowsPerShard.push_back(lines(text).size());
         concatenated += text;
     }

@@ -22,8 +22,6 @@ using test::runExecutable;
 using test::scratchDirectory;
 using test::writeFile;
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
-
 struct FailureCase {
     std::string name;
     std::string sceneText;          // written to scene.json; empty: no scene argument
@@ -50,7 +48,7 @@ TEST_P(CliFailure, OneLineAndNothingWritten)
     const test::ProcessResult result = runExecutable(args);
     EXPECT_EQ(result.exitCode, c.exitCode) << result.stderrText;
     if (c.exitCode == 1) {
-        EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+        EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     }
     for (const std::string& part : c.messageParts)
         EXPECT_NE(result.stderrText.find(part), std::string::npos)
@@ -92,7 +90,7 @@ TEST(CliFailure, SizeBeyondTheDriversLimitIsOneLineAndNothingWritten)
     const std::string beyond = std::to_string(maxWidth + 1) + "x16";
     const test::ProcessResult result = render(beyond);
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find(beyond), std::string::npos) << result.stderrText;
     EXPECT_NE(result.stderrText.find("supports"), std::string::npos) << result.stderrText;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
@@ -253,7 +251,7 @@ TEST(Cli, EveryOutputOptionIsTakenOnlyWithTheOutputsItAppliesTo)
                 EXPECT_TRUE(std::filesystem::exists(output)) << what;
             } else {
                 EXPECT_EQ(result.exitCode, 2) << what;
-                EXPECT_EQ(lineCount(result.stderrText), 1) << what << ": " << result.stderrText;
+                EXPECT_EQ(test::lineCount(result.stderrText), 1) << what << ": " << result.stderrText;
                 EXPECT_EQ(result.stderrText.rfind("manylights: " + std::string(option.name) + " applies to ", 0), 0u)
                     << what << ": " << result.stderrText;
                 EXPECT_FALSE(std::filesystem::exists(output)) << what;
@@ -269,7 +267,7 @@ TEST(Cli, MissingSceneFileIsOneLineExitOne)
     const test::ProcessResult result =
         runExecutable({"render", (dir / "absent.json").string(), "-o", (dir / "out.png").string()});
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("absent.json"), std::string::npos) << result.stderrText;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
@@ -288,7 +286,7 @@ TEST(Cli, UnwritableOutputIsExitOneWithNothingLeft)
     const test::ProcessResult result =
         runExecutable({"render", "-o", (dir / "no-such-dir" / "out.png").string(), "--size", "32x18"});
     EXPECT_EQ(result.exitCode, 1);
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("out.png"), std::string::npos) << result.stderrText;
 }
 
@@ -376,16 +374,16 @@ TEST(Cli, ShadowSettingsReachTheRendererAndTheStats)
         std::filesystem::remove(dir / "stats.json");
         return std::pair(json.at("shadow_lights"), json.at("shadow_pool_mib"));
     };
-    using Expected = std::pair<nlohmann::json, nlohmann::json>;
-    EXPECT_EQ(stats("plain.json", {}), Expected(0, 256));
-    EXPECT_EQ(stats("all.json", {}), Expected("all", 256));
-    EXPECT_EQ(stats("three.json", {}), Expected(3, 256));
+    using ShadowStats = std::pair<nlohmann::json, nlohmann::json>;
+    EXPECT_EQ(stats("plain.json", {}), ShadowStats(0, 256));
+    EXPECT_EQ(stats("all.json", {}), ShadowStats("all", 256));
+    EXPECT_EQ(stats("three.json", {}), ShadowStats(3, 256));
     // The command line overrides the scene, either way.
-    EXPECT_EQ(stats("all.json", {"--shadow-lights", "257", "--shadow-pool-mib", "8"}), Expected(257, 8));
-    EXPECT_EQ(stats("three.json", {"--shadow-lights", "0"}), Expected(0, 256));
-    EXPECT_EQ(stats("plain.json", {"--shadow-lights", "all", "--shadow-pool-mib", "1024"}), Expected("all", 1024));
+    EXPECT_EQ(stats("all.json", {"--shadow-lights", "257", "--shadow-pool-mib", "8"}), ShadowStats(257, 8));
+    EXPECT_EQ(stats("three.json", {"--shadow-lights", "0"}), ShadowStats(0, 256));
+    EXPECT_EQ(stats("plain.json", {"--shadow-lights", "all", "--shadow-pool-mib", "1024"}), ShadowStats("all", 1024));
     EXPECT_EQ(stats("plain.json", {"--shadow-lights", "100000", "--shadow-pool-mib", "4", "--rebuild-shadows"}),
-              Expected(100000, 4));
+              ShadowStats(100000, 4));
 }
 
 TEST(Cli, AnisotropyLevelReachesTheTexturesAndTheStats)

@@ -25,16 +25,6 @@ namespace {
 using test::runExecutable;
 using test::scratchDirectory;
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
-
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 struct DevicesOutput {
     int exitCode = -1;
     std::vector<std::vector<std::string>> rows;  // the header first, each split on runs of spaces
@@ -49,8 +39,8 @@ DevicesOutput runDevices(const std::filesystem::path& dir)
     const int status = std::system(command.c_str());
     DevicesOutput output;
     output.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    output.stderrText = readText(dir / "err.txt");
-    std::istringstream lines(readText(dir / "out.txt"));
+    output.stderrText = test::readFile(dir / "err.txt");
+    std::istringstream lines(test::readFile(dir / "out.txt"));
     for (std::string line; std::getline(lines, line);) {
         std::istringstream words(line);
         std::vector<std::string> row;
@@ -79,7 +69,7 @@ TEST(DevicesCli, ListsEachDeviceWithItsUuidOrADash)
     const EglPlatformChoice choice = eglPlatformChoice();
     if (!choice.canEnumerateDevices) {
         EXPECT_EQ(output.exitCode, 1);
-        EXPECT_EQ(lineCount(output.stderrText), 1) << output.stderrText;
+        EXPECT_EQ(test::lineCount(output.stderrText), 1) << output.stderrText;
         EXPECT_NE(output.stderrText.find(choice.reason), std::string::npos) << output.stderrText;
         return;
     }
@@ -131,7 +121,7 @@ TEST(DevicesCli, AUuidThatNoDeviceHasIsOneLineAndExitOne)
     const test::ProcessResult result = runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "32x18",
                                                       "--device", "GPU-EEEEEEEE-EEEE-EEEE-EEEE-EEEEEEEEEEEE"});
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     const std::string expected = eglPlatformChoice().canEnumerateDevices
                                      ? "manylights: --device eeeeeeee-eeee-eeee-eeee-eeeeeeeeeeee: no EGL device has "
                                        "this UUID"
@@ -147,7 +137,7 @@ TEST(DevicesCli, AnIndexThatNoDeviceHasIsOneLineAndExitOne)
     const test::ProcessResult result =
         runExecutable({"render", "-o", (dir / "out.png").string(), "--size", "32x18", "--device", "999"});
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_EQ(result.stderrText.rfind("manylights: --device 999: ", 0), 0u) << result.stderrText;
 }
 

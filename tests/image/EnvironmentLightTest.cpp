@@ -66,7 +66,6 @@ using test::PixelCheck;
 using test::scratchDirectory;
 using Json = nlohmann::json;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kHalfFloat = 1.0 / 2048.0;
 const glm::dvec3 kEye(0.0, 0.6, 4.0);
 
@@ -82,12 +81,6 @@ void writeMap(const std::filesystem::path& path, int height,
             rgb.insert(rgb.end(), {value.r, value.g, value.b});
         }
     ASSERT_TRUE(stbi_write_hdr(path.string().c_str(), width, height, 3, rgb.data()));
-}
-
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // The scene: one unit sphere at the origin seen from kEye, made of `material`, lit by the map
@@ -178,7 +171,7 @@ TEST_P(EnvironmentLight, AsymmetricMapWithinTheOrderTwoBound)
     constexpr int kHeight = 64;
     const glm::dvec3 centre = glm::normalize(glm::dvec3(0.5, 0.6, 0.62));
     const auto radiance = [&](const glm::dvec3& d) {
-        return glm::vec3(glm::dot(d, centre) > std::cos(10.0 * kPi / 180.0) ? 16.0f : 0.0625f);
+        return glm::vec3(glm::dot(d, centre) > std::cos(10.0 * std::numbers::pi / 180.0) ? 16.0f : 0.0625f);
     };
     const auto dir = scratchDirectory();
     writeMap(dir / "map.hdr", kHeight, radiance);
@@ -189,7 +182,7 @@ TEST_P(EnvironmentLight, AsymmetricMapWithinTheOrderTwoBound)
         for (int i = 0; i < 2 * kHeight; ++i) {
             directions.push_back(environmentDirection({(i + 0.5) / (2 * kHeight), (j + 0.5) / kHeight}));
             const double l = radiance(directions.back()).r;
-            weights.push_back(l * environmentTexelSolidAngle(j, kHeight) / kPi);
+            weights.push_back(l * environmentTexelSolidAngle(j, kHeight) / std::numbers::pi);
             power += weights.back();
         }
     const double bound = 3.0 / 32.0 * power;
@@ -281,8 +274,9 @@ void checkPatch(double rotation, const glm::dvec3& bright, const glm::dvec3& dar
     const double patch = 10.0;
     const auto dir = scratchDirectory();
     writeMap(dir / "map.hdr", 128, [&](const glm::dvec3& d) {
-        return glm::vec3(glm::dot(d, glm::dvec3(1, 0, 0)) > std::cos(20.0 * kPi / 180.0) ? static_cast<float>(patch)
-                                                                                         : 0.0f);
+        return glm::vec3(glm::dot(d, glm::dvec3(1, 0, 0)) > std::cos(20.0 * std::numbers::pi / 180.0)
+                             ? static_cast<float>(patch)
+                             : 0.0f);
     });
     Json scene = Json::parse(
         sphereScene({{"base_color", {1, 1, 1}}, {"metallic", 1}, {"roughness", 0}}, {{"rotation", rotation}}));
@@ -298,11 +292,11 @@ void checkPatch(double rotation, const glm::dvec3& bright, const glm::dvec3& dar
             const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
             const double ab =
                 splitSum(std::max(glm::dot(n, v), 1e-4), 0.0).x + splitSum(std::max(glm::dot(n, v), 1e-4), 0.0).y;
-            if (glm::dot(r, bright) > std::cos(10.0 * kPi / 180.0)) {
+            if (glm::dot(r, bright) > std::cos(10.0 * std::numbers::pi / 180.0)) {
                 ++brightPixels;
                 return glm::dvec3(patch * ab);
             }
-            if (glm::dot(r, dark) > std::cos(10.0 * kPi / 180.0)) {
+            if (glm::dot(r, dark) > std::cos(10.0 * std::numbers::pi / 180.0)) {
                 ++darkPixels;
                 return glm::dvec3(0.0);
             }
@@ -493,7 +487,7 @@ TEST(EnvironmentErrors, BadMapsAreOneLineNamingTheFileAndWriteNothing)
              writeMap(dir / "whole.hdr", 64, [](const glm::dvec3& d) {
                  return glm::vec3(0.3 + 0.2 * std::sin(40.0 * d.x), 0.5 + 0.2 * std::cos(40.0 * d.z), 1.0 + d.y);
              });
-             const std::string whole = readText(dir / "whole.hdr");
+             const std::string whole = test::readFile(dir / "whole.hdr");
              test::writeFile(dir / "sky.hdr", whole.substr(0, whole.size() / 4));
          },
          {{"map", "sky.hdr"}},
@@ -537,12 +531,12 @@ TEST(EnvironmentStats, PrefilteringTimeIsInTheStatistics)
     test::writeFile(dir / "scene.json", R"json({"environment": {"map": "builtin:studio"}})json");
     test::runCliOrFail({"render", (dir / "scene.json").string(), "-o", (dir / "out.pfm").string(), "--size", "16x16",
                         "--stats", (dir / "stats.json").string()});
-    const Json stats = Json::parse(readText(dir / "stats.json"));
+    const Json stats = Json::parse(test::readFile(dir / "stats.json"));
     ASSERT_TRUE(stats["environment_ms"].is_number()) << stats.dump();
     EXPECT_GT(stats["environment_ms"].get<double>(), 0.0);
     test::runCliOrFail({"render", "-o", (dir / "default.pfm").string(), "--size", "16x16", "--stats",
                         (dir / "default.json").string()});
-    EXPECT_TRUE(Json::parse(readText(dir / "default.json"))["environment_ms"].is_null());
+    EXPECT_TRUE(Json::parse(test::readFile(dir / "default.json"))["environment_ms"].is_null());
 }
 
 }  // namespace

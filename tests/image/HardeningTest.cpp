@@ -21,16 +21,6 @@ using test::writeFile;
 // Every child runs under `timeout`, so that a hang fails the test instead of blocking it.
 constexpr const char* kBounded = "timeout 60";
 
-std::string readBytes(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
-}
-
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
-
 // The first line of stderr (CLI11 adds "Run with --help" after a usage error).
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
@@ -39,7 +29,7 @@ std::string renderOld(const std::filesystem::path& path)
 {
     const test::ProcessResult made = runExecutable({"render", "-o", path.string(), "--size", "16x9"}, kBounded);
     EXPECT_EQ(made.exitCode, 0) << made.stderrText;
-    return readBytes(path);
+    return test::readFile(path);
 }
 
 TEST(Hardening, AFailedPngWriteIsExitOneAndKeepsTheOldFile)
@@ -51,10 +41,10 @@ TEST(Hardening, AFailedPngWriteIsExitOneAndKeepsTheOldFile)
     const test::ProcessResult result =
         runExecutable({"render", "-o", (dir / "old.png").string(), "--size", "320x180"}, "ulimit -f 4 &&");
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("old.png: cannot write image: File too large"), std::string::npos)
         << result.stderrText;
-    EXPECT_EQ(readBytes(dir / "old.png"), old);
+    EXPECT_EQ(test::readFile(dir / "old.png"), old);
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         EXPECT_EQ(entry.path().filename(), "old.png") << "left behind: " << entry.path();
 }
@@ -69,9 +59,9 @@ TEST(Hardening, OutputsAreAllOrNothing)
         const test::ProcessResult result = runExecutable(
             {"render", "-o", (dir / "out.png").string(), "--stats", stats.string(), "--size", "32x18"}, kBounded);
         EXPECT_EQ(result.exitCode, 1) << stats << ": " << result.stderrText;
-        EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+        EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
         EXPECT_NE(result.stderrText.find("cannot write statistics"), std::string::npos) << result.stderrText;
-        EXPECT_EQ(readBytes(dir / "out.png"), old) << stats;
+        EXPECT_EQ(test::readFile(dir / "out.png"), old) << stats;
     }
 }
 
@@ -100,8 +90,8 @@ TEST(Hardening, LongNamesAndUpperCaseExtensionsAreOutputs)
         EXPECT_EQ(result.exitCode, 0) << name << ": " << result.stderrText;
         EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
     }
-    EXPECT_EQ(readBytes(dir / "OUT.PNG").substr(1, 3), "PNG");
-    EXPECT_EQ(readBytes(dir / "out.Pfm").substr(0, 2), "PF");
+    EXPECT_EQ(test::readFile(dir / "OUT.PNG").substr(1, 3), "PNG");
+    EXPECT_EQ(test::readFile(dir / "out.Pfm").substr(0, 2), "PF");
 }
 
 struct NumberCase {
@@ -148,7 +138,7 @@ TEST(Hardening, DeeplyNestedGltfIsAnErrorNotACrash)
     const test::ProcessResult result =
         runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string()}, kBounded);
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("deep.gltf:1:"), std::string::npos) << result.stderrText;
     EXPECT_NE(result.stderrText.find("nested deeper than"), std::string::npos) << result.stderrText;
 }
@@ -196,7 +186,7 @@ TEST(Hardening, AnUnknownNameAmongLongNamesFailsAtOnce)
     const test::ProcessResult result =
         runExecutable({"render", (dir / "scene.json").string(), "-o", (dir / "out.png").string()}, kBounded);
     EXPECT_EQ(result.exitCode, 1) << result.stderrText.substr(0, 200);
-    EXPECT_EQ(lineCount(result.stderrText), 1);
+    EXPECT_EQ(test::lineCount(result.stderrText), 1);
     EXPECT_NE(result.stderrText.find("/objects/0/material"), std::string::npos) << result.stderrText.substr(0, 200);
     EXPECT_EQ(result.stderrText.find("did you mean"), std::string::npos) << result.stderrText.substr(0, 200);
     // A short typo is still guessed.
@@ -213,7 +203,7 @@ TEST(Hardening, ControlCharactersInNamesAreEscapedInTheOneLine)
     const test::ProcessResult result =
         runExecutable({"render", (dir / "new\nline.json").string(), "-o", (dir / "out.png").string()}, kBounded);
     EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-    EXPECT_EQ(lineCount(result.stderrText), 1) << result.stderrText;
+    EXPECT_EQ(test::lineCount(result.stderrText), 1) << result.stderrText;
     EXPECT_NE(result.stderrText.find("new\\nline.json"), std::string::npos) << result.stderrText;
 }
 
@@ -249,7 +239,7 @@ TEST(Hardening, CommandLineConventions)
     const auto printed = [&](const std::string& option) {
         const std::filesystem::path text = dir / "printed.txt";
         EXPECT_EQ(std::system(("'" MANYLIGHTS_EXE "' " + option + " >'" + text.string() + "'").c_str()), 0) << option;
-        return readBytes(text);
+        return test::readFile(text);
     };
     EXPECT_EQ(printed("--version").rfind("manylights ", 0), 0u);
     const std::string helpText = printed("--help");

@@ -21,8 +21,6 @@ namespace {
 using test::renderPfm;
 using test::scratchDirectory;
 
-const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
-
 struct StageCase {
     std::string name;
     std::string scene;  // "" for the default scene
@@ -41,7 +39,7 @@ TEST_P(LightingStages, ComputeGivesTheFragmentPassesImageToTheByte)
         // 10,000 lights on a few pixels: clustered's list of them is three parts long
         // (kClusterListPart), and deferred walks them in ten light windows under the GPU
         // profile (kLightsPerWindow) and two batches under the software one.
-        nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + "lights_on_one_spot.json"));
+        nlohmann::json json = nlohmann::json::parse(std::ifstream(test::kTestScenes + "lights_on_one_spot.json"));
         json["light_sets"][0]["count"] = 10000;
         scene = (dir / "spot.json").string();
         test::writeFile(scene, json.dump());
@@ -76,12 +74,13 @@ TEST_P(LightingStages, ComputeGivesTheFragmentPassesImageToTheByte)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, LightingStages,
-    ::testing::Values(StageCase{"default_scene", "", {"--size", "192x108"}},
-                      StageCase{"global_lights", kScenes + "every_light_everywhere.json", {"--size", "160x90"}},
-                      StageCase{"long_lists_and_batches", "", {"--size", "1280x720"}}),
-    [](const ::testing::TestParamInfo<StageCase>& param) { return param.param.name; });
+INSTANTIATE_TEST_SUITE_P(Scenes, LightingStages,
+                         ::testing::Values(StageCase{"default_scene", "", {"--size", "192x108"}},
+                                           StageCase{"global_lights",
+                                                     test::kTestScenes + "every_light_everywhere.json",
+                                                     {"--size", "160x90"}},
+                                           StageCase{"long_lists_and_batches", "", {"--size", "1280x720"}}),
+                         [](const ::testing::TestParamInfo<StageCase>& param) { return param.param.name; });
 
 // Without --lighting-stage, the driver profile decides: the fragment pass on a software
 // rasteriser, the compute pass on a GPU (DriverChoices::lightingStage).

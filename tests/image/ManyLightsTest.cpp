@@ -27,8 +27,6 @@ namespace {
 using test::renderPfm;
 using test::scratchDirectory;
 
-const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
-
 class ManyLightsOnOneSpot : public ::testing::TestWithParam<std::string> {};
 
 // The spot scenes at a quarter of 1280x720 through a camera of 11.25° (tan 5.625° is a quarter of
@@ -43,7 +41,7 @@ constexpr double kSpotViewHalfFovDegrees = 11.25 / 2.0;
 // `scene` of tests/scenes/ written to `dir` with every light's range `range`.
 std::string withRange(const std::filesystem::path& dir, const std::string& scene, double range)
 {
-    nlohmann::json json = nlohmann::json::parse(std::ifstream(kScenes + scene));
+    nlohmann::json json = nlohmann::json::parse(std::ifstream(test::kTestScenes + scene));
     if (json.contains("light_sets"))
         for (auto& set : json["light_sets"])
             set["range"] = {range, range};
@@ -156,7 +154,8 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
     const auto dir = scratchDirectory();
     const std::string& technique = GetParam();
     for (const std::string scene : {"big_light.json", "spots_and_points.json"}) {
-        const nlohmann::json stats = countWork(dir, kScenes + scene, {"--size", "1280x720", "--technique", technique});
+        const nlohmann::json stats =
+            countWork(dir, test::kTestScenes + scene, {"--size", "1280x720", "--technique", technique});
         const auto inRange = stats["in_range_pairs"].get<std::uint64_t>();
         EXPECT_GT(inRange, 300000u) << scene;
         EXPECT_GE(stats["light_evaluations"].get<std::uint64_t>(), inRange) << technique << " on " << scene;
@@ -176,7 +175,7 @@ TEST_P(WorkAtUserSizes, EvaluationsCoverThePairsInRange)
 TEST(SmallLights262144, ClusteredAndTiledEqualDeferredAndEachOtherRunToRun)
 {
     const auto dir = scratchDirectory();
-    const std::string scene = kScenes + "small_lights_262144.json";
+    const std::string scene = test::kTestScenes + "small_lights_262144.json";
     const std::vector<std::string> common = {"--size", "96x72", "--gbuffer", "seed"};
     const auto render = [&](const std::string& technique, const std::string& name,
                             const std::vector<std::string>& more = {}) {

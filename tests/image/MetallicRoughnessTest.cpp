@@ -40,7 +40,6 @@ using test::PixelCheck;
 using test::scratchDirectory;
 using test::writeQuadGltf;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kRelativeTolerance = 0.03;
 
 struct MetallicRoughness {
@@ -76,7 +75,7 @@ glm::dvec3 pointLightColour(const MetallicRoughness& m, const glm::dvec3& p, con
     const double a = m.roughness * m.roughness;
     const double a2 = a * a;
     const double t = nh * nh * (a2 - 1.0) + 1.0;
-    const double D = a2 / (kPi * t * t);
+    const double D = a2 / (std::numbers::pi * t * t);
     double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
     if (mistake == Mistake::SeparableVisibility)
         vis = 1.0 / (4.0 * nl * nv);
@@ -84,8 +83,8 @@ glm::dvec3 pointLightColour(const MetallicRoughness& m, const glm::dvec3& p, con
     const double schlick = std::pow(1.0 - (mistake == Mistake::FresnelAtNormal ? nv : vh), 5.0);
     const glm::dvec3 F = f0 + (glm::dvec3(1.0) - f0) * schlick;
     const glm::dvec3 cDiff = m.base * (1.0 - m.metallic);
-    const double k = mistake == Mistake::NoPiFactor ? 1.0 : kPi;
-    return k * ((glm::dvec3(1.0) - F) * cDiff / kPi + F * D * vis) * intensity * attenuation * nl;
+    const double k = mistake == Mistake::NoPiFactor ? 1.0 : std::numbers::pi;
+    return k * ((glm::dvec3(1.0) - F) * cDiff / std::numbers::pi + F * D * vis) * intensity * attenuation * nl;
 }
 
 // The ambient term of a uniform environment `ambient`: (c_diff + F0 · A + B) · ambient, with

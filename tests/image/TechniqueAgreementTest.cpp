@@ -135,8 +135,6 @@ TEST_P(TechniqueAgreement, EveryTechniqueMatchesForward)
     }
 }
 
-const std::string kScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
-
 INSTANTIATE_TEST_SUITE_P(
     Scenes, TechniqueAgreement,
     ::testing::Values(
@@ -145,38 +143,50 @@ INSTANTIATE_TEST_SUITE_P(
         // Mid-animation: lights, markers and objects moved, the dynamic surface of
         // revolution computed in the vertex shader at this time.
         AgreementCase{"default_scene_at_time_2_7", "", {"--size", "192x108", "--time", "2.7"}},
-        AgreementCase{"spots_points_wide_cone_unbounded", kScenes + "spots_and_points.json", {"--size", "240x160"}},
         AgreementCase{
-            "spots_points_300_set_lights", kScenes + "spots_and_points.json", {"--size", "160x120", "--lights", "300"}},
+            "spots_points_wide_cone_unbounded", test::kTestScenes + "spots_and_points.json", {"--size", "240x160"}},
+        AgreementCase{"spots_points_300_set_lights",
+                      test::kTestScenes + "spots_and_points.json",
+                      {"--size", "160x120", "--lights", "300"}},
         // The camera cases of the light-volume techniques (tests/scenes/*.json say
         // how each is set up).
-        AgreementCase{"camera_inside_point_light", kScenes + "camera_inside_point_light.json", {"--size", "160x120"}},
-        AgreementCase{"camera_inside_spot_cone", kScenes + "camera_inside_spot_cone.json", {"--size", "160x120"}},
-        AgreementCase{"light_cut_by_near_plane", kScenes + "light_cut_by_near_plane.json", {"--size", "160x120"}},
-        AgreementCase{"light_beyond_far_plane", kScenes + "light_beyond_far_plane.json", {"--size", "160x120"}},
-        AgreementCase{"spot_cutoff_120", kScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
-        AgreementCase{"unbounded_light", kScenes + "unbounded_light.json", {"--size", "160x120"}},
-        AgreementCase{"small_lights_behind_walls", kScenes + "small_lights_behind_walls.json", {"--size", "160x90"}},
+        AgreementCase{
+            "camera_inside_point_light", test::kTestScenes + "camera_inside_point_light.json", {"--size", "160x120"}},
+        AgreementCase{
+            "camera_inside_spot_cone", test::kTestScenes + "camera_inside_spot_cone.json", {"--size", "160x120"}},
+        AgreementCase{
+            "light_cut_by_near_plane", test::kTestScenes + "light_cut_by_near_plane.json", {"--size", "160x120"}},
+        AgreementCase{
+            "light_beyond_far_plane", test::kTestScenes + "light_beyond_far_plane.json", {"--size", "160x120"}},
+        AgreementCase{"spot_cutoff_120", test::kTestScenes + "spot_cutoff_120.json", {"--size", "160x120"}},
+        AgreementCase{"unbounded_light", test::kTestScenes + "unbounded_light.json", {"--size", "160x120"}},
+        AgreementCase{
+            "small_lights_behind_walls", test::kTestScenes + "small_lights_behind_walls.json", {"--size", "160x90"}},
         // Surfaces drawn at exactly the same depths, lit in two light batches: the G-buffer
         // keeps the first drawn; forward's lighting draws after its depth pre-pass must too,
         // and shade it once per batch, not once per surface that ties.
-        AgreementCase{"coplanar_surfaces", kScenes + "coplanar_surfaces.json", {"--size", "160x90"}},
+        AgreementCase{"coplanar_surfaces", test::kTestScenes + "coplanar_surfaces.json", {"--size", "160x90"}},
         // Diffuse, specular and normal maps (issue 5): the G-buffer must carry the
         // textured, normal-mapped surface exactly as forward shades it.
-        AgreementCase{"textured_normal_mapped", kScenes + "textured_normal_mapped.json", {"--size", "200x120"}},
+        AgreementCase{
+            "textured_normal_mapped", test::kTestScenes + "textured_normal_mapped.json", {"--size", "200x120"}},
         // The compact layout (the default) against forward within its derived bound.
         AgreementCase{"compact_default_scene", "", {"--size", "256x144"}, true},
-        AgreementCase{"compact_spots_and_points", kScenes + "spots_and_points.json", {"--size", "160x120"}, true},
         AgreementCase{
-            "compact_textured_normal_mapped", kScenes + "textured_normal_mapped.json", {"--size", "200x120"}, true},
+            "compact_spots_and_points", test::kTestScenes + "spots_and_points.json", {"--size", "160x120"}, true},
+        AgreementCase{"compact_textured_normal_mapped",
+                      test::kTestScenes + "textured_normal_mapped.json",
+                      {"--size", "200x120"},
+                      true},
         // Full-resolution OBJ models (69k and 6k triangles) under many small lights.
         AgreementCase{"bunny_teapot_models",
                       MANYLIGHTS_SOURCE_DIR "/scenes/bunny-teapot.json",
                       {"--size", "160x90", "--lights", "512"}},
         // Shadows (directional, spot maps, cube maps for points and wide spots)
         // and SSAO: every technique samples the same maps at the same positions.
-        AgreementCase{
-            "shadows_and_ssao", kScenes + "shadows_and_ssao.json", {"--size", "160x120", "--shadow-lights", "24"}},
+        AgreementCase{"shadows_and_ssao",
+                      test::kTestScenes + "shadows_and_ssao.json",
+                      {"--size", "160x120", "--shadow-lights", "24"}},
         // Every light shadowed from the shadow-page pool (issue 47): the marking pass is the
         // same whatever the technique, so every technique reads the same pages with the same
         // lookup at the same shaded point. The default scene's 256 lights, and the courtyard
@@ -194,7 +204,7 @@ INSTANTIATE_TEST_SUITE_P(
         // ball in the transparency pass), and the textured glTF bottle of
         // scenes/pbr-models.json (base colour, occlusion-roughness-metallic, normal and
         // emissive maps) under its coloured lights.
-        AgreementCase{"mixed_models", kScenes + "mixed_models.json", {"--size", "200x120"}},
+        AgreementCase{"mixed_models", test::kTestScenes + "mixed_models.json", {"--size", "200x120"}},
         AgreementCase{"pbr_models_scene",
                       MANYLIGHTS_SOURCE_DIR "/scenes/pbr-models.json",
                       {"--size", "160x120", "--lights", "96"}},
@@ -212,7 +222,7 @@ AgreementCase atSize(const std::string& scene, const std::string& size)
     std::string sizeName = size;
     std::replace(sizeName.begin(), sizeName.end(), 'x', '_');
     return AgreementCase{
-        std::filesystem::path(scene).stem().string() + "_" + sizeName, kScenes + scene, {"--size", size}};
+        std::filesystem::path(scene).stem().string() + "_" + sizeName, test::kTestScenes + scene, {"--size", size}};
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -46,6 +47,14 @@ void writeFile(const std::filesystem::path& path, const std::string& text)
     out << text;
     ASSERT_TRUE(out.good()) << path;
 }
+
+std::string readFile(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 void runCliOrFail(const std::vector<std::string>& commandLine)
 {

@@ -23,11 +23,20 @@ std::string testDriverProfile();
 // unless they name a profile themselves (or none is set).
 std::vector<std::string> withTestDriverProfile(std::vector<std::string> args);
 
+// The test scenes' folder (tests/scenes), with its trailing slash.
+inline const std::string kTestScenes = MANYLIGHTS_SOURCE_DIR "/tests/scenes/";
+
 // A fresh directory under the build tree's test-output folder, named after the test (and the
 // driver profile, so that both profiles' runs of a test can run at once).
 std::filesystem::path scratchDirectory();
 
 void writeFile(const std::filesystem::path& path, const std::string& text);
+
+// The whole of a file's bytes ("" when it cannot be read).
+std::string readFile(const std::filesystem::path& path);
+
+// The number of newlines in `text`.
+int lineCount(const std::string& text);
 
 // Runs `manylights <args>` (withTestDriverProfile) through runCli in this process; fails the
 // test on a non-zero exit.

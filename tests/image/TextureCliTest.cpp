@@ -21,12 +21,6 @@ using test::runExecutable;
 using test::scratchDirectory;
 using test::writeFile;
 
-std::string readBytes(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // A 64x64 JPEG with detail in every block, in memory.
 std::string patternJpeg()
 {
@@ -43,7 +37,7 @@ std::string patternJpeg()
 
 TEST(TextureCli, BrokenTextureIsOneLineExitOneNamingTheFile)
 {
-    const std::string brick = readBytes(MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/brick.png");
+    const std::string brick = test::readFile(MANYLIGHTS_SOURCE_DIR "/tests/scenes/textures/brick.png");
     ASSERT_GT(brick.size(), 100u);
     const std::string jpeg = patternJpeg();
     ASSERT_GT(jpeg.size(), 1000u);

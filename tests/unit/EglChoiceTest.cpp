@@ -12,7 +12,7 @@
 namespace manylights {
 namespace {
 
-using test::errorOf;
+using test::errorThrownBy;
 
 // glvnd 1.6 with NVIDIA's driver on an H100 server (issue 40): device enumeration only under
 // its older name, EGL_EXT_device_base.
@@ -187,12 +187,12 @@ TEST(DeviceSelectors, ChooseAmongTheDevices)
     const std::vector<std::optional<DeviceUuid>> uuids = {std::nullopt, kUuid};
     EXPECT_EQ(selectDevice(parsed("1"), uuids, mesa), 1u);
     EXPECT_EQ(selectDevice(parsed("GPU-" + std::string(kUuidText)), uuids, mesa), 1u);
-    EXPECT_EQ(errorOf([&] { selectDevice(parsed("2"), uuids, mesa); }),
+    EXPECT_EQ(errorThrownBy([&] { selectDevice(parsed("2"), uuids, mesa); }),
               "--device 2: no such EGL device (there are 2; manylights devices lists them)");
-    EXPECT_EQ(errorOf([&] { selectDevice(parsed("00000000-0000-0000-0000-000000000001"), uuids, mesa); }),
+    EXPECT_EQ(errorThrownBy([&] { selectDevice(parsed("00000000-0000-0000-0000-000000000001"), uuids, mesa); }),
               "--device 00000000-0000-0000-0000-000000000001: no EGL device has this UUID (1 of 2 report one, "
               "through EGL_EXT_device_persistent_id; manylights devices lists them)");
-    EXPECT_EQ(errorOf([&] { selectDevice(parsed("0"), {}, chooseEglPlatforms("EGL_EXT_platform_base")); }),
+    EXPECT_EQ(errorThrownBy([&] { selectDevice(parsed("0"), {}, chooseEglPlatforms("EGL_EXT_platform_base")); }),
               "--device 0: EGL cannot enumerate devices (the client extensions lack EGL_EXT_device_enumeration (or "
               "EGL_EXT_device_base) and EGL_EXT_platform_device)");
 }

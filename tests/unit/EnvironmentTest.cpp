@@ -23,8 +23,6 @@
 namespace manylights {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 glm::dvec3 texelDirection(const EnvironmentImage& map, int i, int j)
 {
     return environmentDirection({(i + 0.5) / map.width, (j + 0.5) / map.height});
@@ -67,7 +65,7 @@ TEST(EnvironmentMapping, TexelSolidAnglesCoverTheSphere)
     double total = 0.0;
     for (int j = 0; j < 16; ++j)
         total += 32 * environmentTexelSolidAngle(j, 16);
-    EXPECT_NEAR(total, 4.0 * kPi, 1e-12);
+    EXPECT_NEAR(total, 4.0 * std::numbers::pi, 1e-12);
 }
 
 TEST(EnvironmentIrradiance, UniformMapGivesItsRadiance)
@@ -106,12 +104,12 @@ TEST(EnvironmentIrradiance, AsymmetricPatchWithinTheOrderTwoBound)
     double power = 0.0;  // ∫ L dω
     for (int j = 0; j < map.height; ++j)
         for (int i = 0; i < map.width; ++i) {
-            if (glm::dot(texelDirection(map, i, j), centre) > std::cos(8.0 * kPi / 180.0))
+            if (glm::dot(texelDirection(map, i, j), centre) > std::cos(8.0 * std::numbers::pi / 180.0))
                 map.at(i, j) = glm::vec3(20.0f);
             power += map.at(i, j).r * environmentTexelSolidAngle(j, map.height);
         }
     const IrradianceSh sh = irradianceSh(map);
-    const double bound = 3.0 / 32.0 * power / kPi;  // of E / π
+    const double bound = 3.0 / 32.0 * power / std::numbers::pi;  // of E / π
     double largest = 0.0;
     for (const glm::dvec3 d : {centre, glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(-0.5, 0.2, 0.7),
                                glm::dvec3(0.1, -1, 0.2), glm::dvec3(0.8, -0.1, 0.6)}) {
@@ -121,12 +119,13 @@ TEST(EnvironmentIrradiance, AsymmetricPatchWithinTheOrderTwoBound)
         for (int j = 0; j < map.height; ++j)
             for (int i = 0; i < map.width; ++i) {
                 const double c = glm::dot(n, texelDirection(map, i, j));
-                const double weight = map.at(i, j).r * environmentTexelSolidAngle(j, map.height) / kPi;
+                const double weight = map.at(i, j).r * environmentTexelSolidAngle(j, map.height) / std::numbers::pi;
                 exact += weight * std::max(c, 0.0);
                 order2 += weight * (3.0 / 32.0 + c / 2.0 + 15.0 / 32.0 * c * c);
             }
         const double got = irradianceOverPi(sh, n).r;
-        EXPECT_NEAR(got, order2, 1e-3 * power / kPi) << "n = (" << n.x << ", " << n.y << ", " << n.z << ")";
+        EXPECT_NEAR(got, order2, 1e-3 * power / std::numbers::pi)
+            << "n = (" << n.x << ", " << n.y << ", " << n.z << ")";
         EXPECT_LE(std::abs(got - exact), bound);
         largest = std::max(largest, std::abs(got - exact) / bound);
     }

@@ -11,7 +11,7 @@ namespace manylights::test {
 
 // The message of the Error `load` throws; fails the test when it throws none.
 template <typename Load>
-std::string errorOf(Load load)
+std::string errorThrownBy(Load load)
 {
     try {
         load();

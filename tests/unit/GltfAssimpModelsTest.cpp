@@ -27,7 +27,7 @@ const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
     if (!fs::is_directory(kAssimpGltf))                                                                                \
     GTEST_SKIP() << kAssimpGltf << " is missing: install assimp-testmodels (scripts/setup.sh)"
 
-using test::errorOf;
+using test::errorThrownBy;
 
 std::vector<unsigned char> readBytes(const fs::path& path)
 {
@@ -116,7 +116,7 @@ TEST(GltfAssimpModels, BrokenModelsAreOneErrorLineNamingTheFile)
     for (const BrokenAsset& asset : broken) {
         SCOPED_TRACE(asset.file);
         const fs::path path = kAssimpGltf / asset.file;
-        const std::string message = errorOf([&] { loadGltfFile(path); });
+        const std::string message = errorThrownBy([&] { loadGltfFile(path); });
         EXPECT_TRUE(message.starts_with(path.string() + ": ")) << message;
         EXPECT_NE(message.find(asset.phrase), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -147,14 +147,14 @@ TEST(GltfAssimpModels, WrongTypesAreWarningsNamingTheField)
         EXPECT_TRUE(warnings.messages()[0].starts_with(path.string() + ": /")) << warnings.messages()[0];
         EXPECT_NE(warnings.messages()[0].find(asset.phrase), std::string::npos) << warnings.messages()[0];
         Warnings strict(true);
-        EXPECT_EQ(errorOf([&] { loadGltfFile(path, {.warnings = &strict}); }), warnings.messages()[0]);
+        EXPECT_EQ(errorThrownBy([&] { loadGltfFile(path, {.warnings = &strict}); }), warnings.messages()[0]);
     }
     const fs::path badArray = kAssimpGltf / "wrongTypes/badArray.gltf";
     Warnings warnings;
-    EXPECT_NE(errorOf([&] { loadGltfFile(badArray, {.warnings = &warnings}); }).find("no triangle mesh"),
+    EXPECT_NE(errorThrownBy([&] { loadGltfFile(badArray, {.warnings = &warnings}); }).find("no triangle mesh"),
               std::string::npos);
     const fs::path badNumber = kAssimpGltf / "wrongTypes/badNumber.gltf";
-    EXPECT_EQ(errorOf([&] { loadGltfFile(badNumber); }),
+    EXPECT_EQ(errorThrownBy([&] { loadGltfFile(badNumber); }),
               badNumber.string() + ": 'index' property is missing in NormalTextureInfo.");
 }
 
@@ -165,9 +165,9 @@ TEST(GltfAssimpModels, MissingBufferNamesItsFullPath)
     for (const char* folder : {"MissingBin", "SchemaFailures"}) {
         const fs::path model =
             kAssimpGltf / folder / (folder == std::string("MissingBin") ? "BoxTextured.gltf" : "sceneWrongType.gltf");
-        EXPECT_EQ(errorOf([&] { loadGltfFile(model); }), (kAssimpGltf / folder / "BoxTextured0.bin").string() +
-                                                             ": cannot open a buffer of " + model.string() +
-                                                             ": No such file or directory");
+        EXPECT_EQ(errorThrownBy([&] { loadGltfFile(model); }), (kAssimpGltf / folder / "BoxTextured0.bin").string() +
+                                                                   ": cannot open a buffer of " + model.string() +
+                                                                   ": No such file or directory");
     }
 }
 

@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-using test::errorOf;
+using test::errorThrownBy;
 
 std::string base64(const std::vector<unsigned char>& bytes)
 {
@@ -154,10 +154,10 @@ TEST(GltfModel, ExtensionsAndMaterialFeaturesReadOrSaid)
     EXPECT_EQ(warnings.messages()[0], "test.gltf: the extension EXT_unknown is not read; the file is drawn without it");
     // Strict: the first is the error.
     Warnings strict(true);
-    EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), warnings.messages()[0]);
+    EXPECT_EQ(errorThrownBy([&] { b.load({.warnings = &strict}); }), warnings.messages()[0]);
 
     b.gltf["extensionsRequired"] = {"KHR_draco_mesh_compression"};
-    EXPECT_EQ(errorOf([&] { b.load(); }),
+    EXPECT_EQ(errorThrownBy([&] { b.load(); }),
               "test.gltf: requires the extension KHR_draco_mesh_compression, which manylights does not read");
 }
 
@@ -195,7 +195,7 @@ TEST(GltfModel, AlphaModesAndSidesAreRead)
 
     material["alphaMode"] = "MASK";
     material["alphaCutoff"] = -1.0;
-    EXPECT_EQ(errorOf([&] { b.load(); }), "test.gltf: materials[0]: alphaCutoff must be a finite number >= 0");
+    EXPECT_EQ(errorThrownBy([&] { b.load(); }), "test.gltf: materials[0]: alphaCutoff must be a finite number >= 0");
 }
 
 // KHR_texture_transform: uv' = T · R · S · uv in glTF's uvs, stored for our flipped v.
@@ -248,9 +248,10 @@ TEST(GltfModel, VertexColoursAreRead)
     EXPECT_EQ(mesh.vertices[mesh.indices[12]].colour, glm::vec4(1.0f));                         // primitive 2 has none
 
     b.gltf["accessors"][static_cast<std::size_t>(bytes)]["normalized"] = false;
-    EXPECT_EQ(
-        errorOf([&] { b.load(); }).rfind("test.gltf: meshes[0].primitives[1].COLOR_0: expected 4 float components", 0),
-        0u);
+    EXPECT_EQ(errorThrownBy([&] {
+                  b.load();
+              }).rfind("test.gltf: meshes[0].primitives[1].COLOR_0: expected 4 float components", 0),
+              0u);
 }
 
 TEST(GltfModel, HierarchyPrimitivesAndIndexWidths)
@@ -373,7 +374,7 @@ TEST(GltfModel, SchemaBreaksTinygltfPassesOverAreSaid)
     };
     EXPECT_EQ(warnings.messages(), expected);
     Warnings strict(true);
-    EXPECT_EQ(errorOf([&] { b.load({.warnings = &strict}); }), expected[0]);
+    EXPECT_EQ(errorThrownBy([&] { b.load({.warnings = &strict}); }), expected[0]);
 }
 
 // Many elements with the same break give one warning, as other forgiven problems do.
@@ -405,7 +406,7 @@ TEST_P(BrokenGltfTest, OneErrorLineNamingTheFileAndElement)
 {
     GltfBuilder builder = exampleGltf();
     GetParam().breakIt(builder);
-    const std::string message = errorOf([&] { builder.load(); });
+    const std::string message = errorThrownBy([&] { builder.load(); });
     EXPECT_TRUE(message.starts_with("test.gltf: ")) << message;
     EXPECT_NE(message.find(GetParam().phrase), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;

@@ -4,28 +4,18 @@
 // Blinn-Phong (scene/MaterialModels.h, `"model_materials"`).
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "scene/MaterialModels.h"
 #include "scene/SceneLoader.h"
 #include "scene/Shininess.h"
-#include "tests/unit/ErrorOf.h"
+#include "tests/unit/SceneFileTestSupport.h"
 
 namespace manylights {
 namespace {
 
-namespace fs = std::filesystem;
-
-const fs::path kSceneDir = fs::path(MANYLIGHTS_TEST_DATA_DIR) / "scene";
-
-Scene parse(const std::string& json) { return parseScene(json, "scene.json", kSceneDir); }
-
-// The message of the Error that parsing `json` throws (tests/unit/ErrorOf.h).
-std::string errorOf(const std::string& json)
-{
-    return test::errorOf([&] { parse(json); });
-}
+using test::errorOf;
+using test::parse;
 
 TEST(MetallicRoughnessMaterials, KeysMakeAMetallicRoughnessMaterial)
 {

@@ -16,8 +16,6 @@
 namespace manylights {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 Bounds boundsOf(const Mesh& mesh)
 {
     Bounds bounds;
@@ -129,7 +127,7 @@ TEST(Primitives, SphereNormalsAreRadialAndOutward)
     }
     expectBounds(mesh, glm::vec3{-radius}, glm::vec3{radius});
     // A 48 × 24 tessellation holds a little less than the true ball.
-    const double ball = 4.0 / 3.0 * kPi * radius * radius * radius;
+    const double ball = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
     EXPECT_GT(signedVolume(mesh), 0.97 * ball);
     EXPECT_LT(signedVolume(mesh), ball);
 }
@@ -169,7 +167,7 @@ TEST(Primitives, ConeHasSlantedSideNormalsAndACap)
         apexVertices += vertex.position == apex ? 1 : 0;
     EXPECT_EQ(apexVertices, 48);
     EXPECT_GT(sideVertices, 48);
-    const double cone = kPi * radius * radius * height / 3.0;
+    const double cone = std::numbers::pi * radius * radius * height / 3.0;
     EXPECT_GT(signedVolume(mesh), 0.98 * cone);
     EXPECT_LT(signedVolume(mesh), cone);
 }
@@ -194,7 +192,7 @@ TEST(Primitives, CylinderHasRadialSidesAndFlatCaps)
             EXPECT_NEAR(glm::dot(vertex.normal, radial), 1.0f, 1e-5f);
         }
     }
-    const double cylinder = kPi * radius * radius * height;
+    const double cylinder = std::numbers::pi * radius * radius * height;
     EXPECT_GT(signedVolume(mesh), 0.99 * cylinder);
     EXPECT_LT(signedVolume(mesh), cylinder);
 }
@@ -213,7 +211,7 @@ TEST(Primitives, TorusLiesInXzAndPointsAwayFromItsTube)
     }
     const float outer = radius + tube;
     expectBounds(mesh, {-outer, -tube, -outer}, {outer, tube, outer});
-    const double torus = 2.0 * kPi * kPi * radius * tube * tube;
+    const double torus = 2.0 * std::numbers::pi * std::numbers::pi * radius * tube * tube;
     EXPECT_GT(signedVolume(mesh), 0.98 * torus);
     EXPECT_LT(signedVolume(mesh), torus);
 }

@@ -79,7 +79,7 @@ TEST(MtlPbr, SeparateImagesAreNotedAndLeftOut)
 TEST(MtlPbr, FactorsOutsideZeroToOneAreAnError)
 {
     Warnings warnings;
-    EXPECT_EQ(test::errorOf([&] { loadWithLibrary("newmtl m\nKd 1 1 1\nPm 1.5\n", warnings); }),
+    EXPECT_EQ(test::errorThrownBy([&] { loadWithLibrary("newmtl m\nKd 1 1 1\nPm 1.5\n", warnings); }),
               (kTextures / "lib.mtl").string() + ": material 'm': Pr and Pm must be in [0, 1]");
 }
 

@@ -35,7 +35,7 @@ fs::path write(const fs::path& path, const std::string& text)
     return path;
 }
 
-using test::errorOf;
+using test::errorThrownBy;
 
 const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
@@ -198,7 +198,7 @@ TEST_P(BrokenObjTest, OneErrorLineNamingTheFile)
 {
     const BrokenObj& broken = GetParam();
     const fs::path obj = writeCase(broken);
-    const std::string message = errorOf([&] { loadObj(obj); });
+    const std::string message = errorThrownBy([&] { loadObj(obj); });
     EXPECT_NE(message.find(broken.phrase), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_TRUE(namesTheFile(message, obj)) << message;
@@ -246,7 +246,7 @@ TEST_P(ForgivenObjTest, LoadsWithOneWarningAndFailsWhenStrict)
     EXPECT_NE(message.find(forgiven.phrase), std::string::npos) << message;
     EXPECT_TRUE(namesTheFile(message, obj)) << message;
     Warnings strict(true);
-    EXPECT_EQ(errorOf([&] { loadObjModelFile(obj, strict); }), message);
+    EXPECT_EQ(errorThrownBy([&] { loadObjModelFile(obj, strict); }), message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -312,11 +312,11 @@ TEST(ObjModel, SceneMessagesNameSceneObjectAndFile)
     EXPECT_NE(loaded.warnings[0].find("model.obj: line 1: material library 'none.mtl' not found"), std::string::npos)
         << loaded.warnings[0];
     // Strict: the same line is the error.
-    EXPECT_EQ(errorOf([&] { parseScene(scene, "scene.json", dir, {.strict = true}); }), loaded.warnings[0]);
+    EXPECT_EQ(errorThrownBy([&] { parseScene(scene, "scene.json", dir, {.strict = true}); }), loaded.warnings[0]);
     // An error proper is placed the same way.
     write(dir / "broken.obj", std::string(kQuad) + "f 1 2 9\n");
     const std::string message =
-        errorOf([&] { parseScene(R"({ "objects": [ { "mesh": "broken.obj" } ] })", "scene.json", dir); });
+        errorThrownBy([&] { parseScene(R"({ "objects": [ { "mesh": "broken.obj" } ] })", "scene.json", dir); });
     EXPECT_TRUE(message.starts_with("scene.json: /objects/0/mesh: ")) << message;
     EXPECT_NE(message.find("broken.obj: vertex index 9 is out of range"), std::string::npos) << message;
 }

@@ -12,13 +12,13 @@ namespace manylights {
 namespace {
 
 // Tangents are computed in double and stored as float: equal to float rounding.
-constexpr float kTolerance = 1e-6f;
+constexpr float kTangentTolerance = 1e-6f;
 
 void expectTangent(const Vertex& vertex, const glm::vec3& tangent, float handedness)
 {
-    EXPECT_NEAR(vertex.tangent.x, tangent.x, kTolerance);
-    EXPECT_NEAR(vertex.tangent.y, tangent.y, kTolerance);
-    EXPECT_NEAR(vertex.tangent.z, tangent.z, kTolerance);
+    EXPECT_NEAR(vertex.tangent.x, tangent.x, kTangentTolerance);
+    EXPECT_NEAR(vertex.tangent.y, tangent.y, kTangentTolerance);
+    EXPECT_NEAR(vertex.tangent.z, tangent.z, kTangentTolerance);
     EXPECT_EQ(vertex.tangent.w, handedness);
 }
 
@@ -37,7 +37,7 @@ TEST(Tangents, PlaneTangentIsItsUAxis)
     for (const Vertex& vertex : plane.vertices) {
         expectTangent(vertex, {1.0f, 0.0f, 0.0f}, 1.0f);
         const glm::vec3 b = bitangent(vertex);
-        EXPECT_NEAR(b.z, -1.0f, kTolerance);
+        EXPECT_NEAR(b.z, -1.0f, kTangentTolerance);
     }
 }
 
@@ -56,7 +56,7 @@ TEST(Tangents, EveryBoxFaceGetsDpDuAndRightHandedFrame)
         ASSERT_NE(du, glm::vec3(0.0f)) << "face " << face;
         for (int i = 0; i < 4; ++i) {
             expectTangent(v[i], du, 1.0f);
-            EXPECT_NEAR(glm::dot(glm::vec3(v[i].tangent), v[i].normal), 0.0f, kTolerance);
+            EXPECT_NEAR(glm::dot(glm::vec3(v[i].tangent), v[i].normal), 0.0f, kTangentTolerance);
         }
     }
 }
@@ -72,7 +72,7 @@ TEST(Tangents, MirroredUvsGiveNegativeHandedness)
     for (const Vertex& vertex : plane.vertices) {
         expectTangent(vertex, {-1.0f, 0.0f, 0.0f}, -1.0f);
         // The rebuilt bitangent still points along increasing v (−Z).
-        EXPECT_NEAR(bitangent(vertex).z, -1.0f, kTolerance);
+        EXPECT_NEAR(bitangent(vertex).z, -1.0f, kTangentTolerance);
     }
 }
 

@@ -11,13 +11,13 @@ namespace manylights {
 namespace {
 
 // Single-precision trigonometry of 90-degree rotations leaves errors around 1e-7 per step.
-constexpr float kTolerance = 1e-5f;
+constexpr float kTransformTolerance = 1e-5f;
 
 void expectNear(const glm::vec3& actual, const glm::vec3& expected)
 {
-    EXPECT_NEAR(actual.x, expected.x, kTolerance);
-    EXPECT_NEAR(actual.y, expected.y, kTolerance);
-    EXPECT_NEAR(actual.z, expected.z, kTolerance);
+    EXPECT_NEAR(actual.x, expected.x, kTransformTolerance);
+    EXPECT_NEAR(actual.y, expected.y, kTransformTolerance);
+    EXPECT_NEAR(actual.z, expected.z, kTransformTolerance);
 }
 
 glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
@@ -77,7 +77,7 @@ TEST(Transform, NormalMatrixUnderNonUniformScale)
     const glm::vec3 n = glm::normalize(normalMatrix(model) * glm::vec3(1.0f, 1.0f, 0.0f));
     expectNear(n, glm::vec3(1.0f, 2.0f, 0.0f) / std::sqrt(5.0f));
     const glm::vec3 tangent = glm::vec3(model * glm::vec4(1.0f, -1.0f, 0.0f, 0.0f));
-    EXPECT_NEAR(glm::dot(n, tangent), 0.0f, kTolerance);
+    EXPECT_NEAR(glm::dot(n, tangent), 0.0f, kTransformTolerance);
     const glm::vec3 naive = glm::normalize(glm::mat3(model) * glm::vec3(1.0f, 1.0f, 0.0f));
     EXPECT_GT(std::abs(glm::dot(naive, tangent)), 0.5f);
 }
@@ -89,7 +89,7 @@ TEST(Transform, NormalMatrixOfRigidTransformIsItsRotation)
     const glm::mat3 r(model);
     for (int c = 0; c < 3; ++c)
         for (int row = 0; row < 3; ++row)
-            EXPECT_NEAR(n[c][row], r[c][row], kTolerance);
+            EXPECT_NEAR(n[c][row], r[c][row], kTransformTolerance);
 }
 
 TEST(Transform, NormalMatrixUnderMirroringScale)
