@@ -25,7 +25,7 @@ $(BUILD_DIR)/build.ninja: | setup
 build: setup $(BUILD_DIR)/build.ninja
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The executable and the libraries it links, without the tests (121 of the build's 197 steps,
+# The executable and the libraries it links, without the tests (31 of the build's 48 steps,
 # docs/testing.md "The first run and the suite's time"): what `make run` and the measure scripts need.
 app: setup $(BUILD_DIR)/build.ninja
 	@echo "building only the manylights executable (make build or make test builds the tests too)"

@@ -256,15 +256,40 @@ TEST_P(EnvironmentLight, SmoothDielectricReflectsMoreTowardsGrazing)
 
 TEST_P(EnvironmentLight, WhiteFurnaceGivesOneMinusFiftyFiveHundredthsOfRoughness)
 {
-    // A uniform map of radiance 1 and a white metal: exactly A + B = 1 − 0.55 r.
-    for (const double roughness : {0.03, 0.25, 0.5, 0.75, 1.0}) {
-        const auto dir = scratchDirectory() / std::to_string(static_cast<int>(roughness * 100));
-        std::filesystem::create_directories(dir);
-        writeMap(dir / "map.hdr", 32, [](const glm::dvec3&) { return glm::vec3(1.0f); });
-        checkEveryPixelWithNormal(
-            sphereScene({{"base_color", {1, 1, 1}}, {"metallic", 1}, {"roughness", roughness}}),
-            [&](const glm::dvec3&, const glm::dvec3&) { return glm::dvec3(1.0 - 0.55 * roughness); }, "33x33", dir);
+    // A uniform map of radiance 1 and white metal spheres of five roughnesses in a row: exactly
+    // A + B = 1 − 0.55 r at every pixel of each. One image checks them all, since the map lights
+    // each sphere alone (nothing shadows or reflects another) and the result is the same from
+    // every side; the wide image keeps the outer spheres whole.
+    const std::array<double, 5> roughnesses{0.03, 0.25, 0.5, 0.75, 1.0};
+    constexpr double kSpacing = 2.1;
+    const auto dir = scratchDirectory();
+    writeMap(dir / "map.hdr", 32, [](const glm::dvec3&) { return glm::vec3(1.0f); });
+    Json scene = Json::parse(sphereScene(Json::object()));
+    scene["materials"] = Json::object();
+    scene["objects"] = Json::array();
+    for (std::size_t k = 0; k < roughnesses.size(); ++k) {
+        const std::string name = "roughness" + std::to_string(k);
+        scene["materials"][name] = {{"base_color", {1, 1, 1}}, {"metallic", 1}, {"roughness", roughnesses[k]}};
+        scene["objects"].push_back({{"mesh", {{"primitive", "sphere"}, {"radius", 1}}},
+                                    {"material", name},
+                                    {"transform", {{"translate", {(static_cast<double>(k) - 2.0) * kSpacing, 0, 0}}}}});
     }
+    std::array<int, 5> checked{};
+    checkEveryPixelWithNormal(
+        scene.dump(),
+        [&](const glm::dvec3& position, const glm::dvec3&) -> std::optional<glm::dvec3> {
+            const long k = std::lround(position.x / kSpacing + 2.0);
+            if (k < 0 || k >= static_cast<long>(roughnesses.size())) {
+                ADD_FAILURE() << "a surface at x = " << position.x << ", on no sphere";
+                return std::nullopt;
+            }
+            ++checked[static_cast<std::size_t>(k)];
+            return glm::dvec3(1.0 - 0.55 * roughnesses[static_cast<std::size_t>(k)]);
+        },
+        "198x33", dir);
+    // Not vacuous: every sphere is on screen, with 522 to 712 pixels here.
+    for (std::size_t k = 0; k < roughnesses.size(); ++k)
+        EXPECT_GT(checked[k], 400) << "roughness " << roughnesses[k];
 }
 
 // A mirror (roughness 0, metallic 1, base 1: A + B = 1) under a black map with a bright patch
