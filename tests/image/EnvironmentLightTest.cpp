@@ -35,9 +35,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <numbers>
 #include <numeric>
 #include <optional>

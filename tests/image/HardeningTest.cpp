@@ -6,9 +6,6 @@
 
 #include <sys/stat.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "TestSupport.h"
 
 namespace manylights {
