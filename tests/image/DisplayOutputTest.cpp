@@ -313,8 +313,7 @@ TEST(DisplayOutput, ExrOpensInExrheader)
     const std::string command =
         "exrheader '" + (dir / "frame.exr").string() + "' > '" + (dir / "header.txt").string() + "'";
     ASSERT_EQ(std::system(command.c_str()), 0);
-    std::ifstream in(dir / "header.txt");
-    const std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string header = test::readFile(dir / "header.txt");
     for (const char* channel : {"R, 16-bit floating-point", "normal.X", "light-count.Y", "ssao.Y"})
         EXPECT_NE(header.find(channel), std::string::npos) << channel << " missing in:\n" << header;
 }

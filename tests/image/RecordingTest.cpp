@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "TestSupport.h"
 #include "apps/cli/Recording.h"
@@ -96,12 +94,6 @@ TEST(Recording, Shards)
         EXPECT_NE(parseShard(bad, shard), "") << bad;
 }
 
-std::string fileBytes(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // A recording split over a job array (docs/cli.md, "On a cluster"): three shards, each its
 // own process, write byte for byte the files of the whole recording; --skip-existing then
 // renders only the missing frames and leaves the others untouched.
@@ -123,7 +115,7 @@ TEST(Recording, ShardsAndSkipExistingGiveTheWholeRecording)
     const auto frame = [&](const char* folder, int k) { return dir / folder / ("f0" + std::to_string(k) + ".png"); };
     for (int k = 0; k < 5; ++k) {
         ASSERT_TRUE(std::filesystem::exists(frame("sharded", k))) << k;
-        EXPECT_EQ(fileBytes(frame("sharded", k)), fileBytes(frame("whole", k))) << "frame " << k;
+        EXPECT_EQ(test::readFile(frame("sharded", k)), test::readFile(frame("whole", k))) << "frame " << k;
     }
     EXPECT_FALSE(std::filesystem::exists(frame("sharded", 5)));
 
@@ -132,12 +124,12 @@ TEST(Recording, ShardsAndSkipExistingGiveTheWholeRecording)
     std::filesystem::remove(frame("sharded", 3));
     test::writeFile(frame("sharded", 0), "kept");
     run(dir / "sharded" / "f%02d.png", {"--skip-existing"});
-    EXPECT_EQ(fileBytes(frame("sharded", 0)), "kept");
+    EXPECT_EQ(test::readFile(frame("sharded", 0)), "kept");
     for (int k : {1, 3})
-        EXPECT_EQ(fileBytes(frame("sharded", k)), fileBytes(frame("whole", k))) << "frame " << k;
+        EXPECT_EQ(test::readFile(frame("sharded", k)), test::readFile(frame("whole", k))) << "frame " << k;
     // Nothing left to do: a success that writes nothing.
     run(dir / "sharded" / "f%02d.png", {"--skip-existing", "--shard", "1/1"});
-    EXPECT_EQ(fileBytes(frame("sharded", 0)), "kept");
+    EXPECT_EQ(test::readFile(frame("sharded", 0)), "kept");
 }
 
 TEST(Recording, BadCommandLinesWriteNothing)
